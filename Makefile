@@ -1,0 +1,83 @@
+# SPDX-License-Identifier: MIT
+# Brake-squeal monitor: one Makefile for host programs, tests, benchmarks and
+# the ECU images. Area-specific rules live in mk/*.mk and add themselves to
+# the lists below (TEST_PROGS, BENCH_PROGS, ALL_TARGETS).
+#
+#   make            host programs: build/host/squeal-sim (float),
+#                   build/host-fixed/squeal-sim (fixed point)
+#   make test       every test; ends with "N passed, N failed"
+#   make bench      benchmarks (figures, never pass/fail)
+#   make demo       the main job (see README)
+
+.DEFAULT_GOAL := all
+SHELL := /bin/bash
+PYTHON ?= /usr/bin/python3
+CC ?= cc
+ifeq ($(origin CC),default)
+CC := gcc
+endif
+NUMERIC ?= float
+
+FW_DIRS := firmware/common firmware/model firmware/protocol firmware/monitor
+FW_SRCS := $(sort $(wildcard $(addsuffix /*.c,$(FW_DIRS))))
+FW_INC := $(addprefix -I,$(FW_DIRS)) -Ihal
+
+# Warnings for all our C. firmware/ additionally builds freestanding.
+WARN := -std=c11 -Wall -Wextra -Wconversion -Wsign-conversion -Wshadow \
+	-Wstrict-prototypes -Wmissing-prototypes -Wundef -Wcast-align \
+	-Wdouble-promotion -Wformat=2 -Werror
+FW_FLAGS := -ffreestanding
+SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+DEF_fixed := -DSQUEAL_NUMERIC_FIXED
+DEF_float :=
+# x86 general-purpose registers only: the fixed build must not contain a
+# floating-point operation, and this makes the compiler refuse one.
+FIXED_ONLY_INT := -mgeneral-regs-only
+
+# Build variants: name, numeric, extra flags
+#   host        release float      host-fixed  release fixed
+#   test        ASan+UBSan float   test-fixed  ASan+UBSan fixed
+VARIANTS := host host-fixed test test-fixed
+NUM_host := float
+NUM_host-fixed := fixed
+NUM_test := float
+NUM_test-fixed := fixed
+OPT_host := -O2 -g
+OPT_host-fixed := -O2 -g
+OPT_test := -O1 -g $(SAN)
+OPT_test-fixed := -O1 -g $(SAN)
+
+define variant_rules
+build/$(1)/fw/%.o: %.c
+	@mkdir -p $$(@D)
+	$$(CC) $$(WARN) $$(FW_FLAGS) $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(if $$(filter fixed,$$(NUM_$(1))),$$(FIXED_ONLY_INT)) $$(FW_INC) -MMD -MP -c $$< -o $$@
+build/$(1)/app/%.o: %.c
+	@mkdir -p $$(@D)
+	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -MMD -MP -c $$< -o $$@
+build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS))
+	@rm -f $$@
+	ar rcs $$@ $$^
+endef
+$(foreach v,$(VARIANTS),$(eval $(call variant_rules,$(v))))
+
+LDLIBS_host := -lm
+
+TEST_PROGS :=
+BENCH_PROGS :=
+ALL_TARGETS :=
+
+include $(sort $(wildcard mk/*.mk))
+
+.PHONY: all test bench demo clean
+all: $(ALL_TARGETS)
+
+test: $(TEST_PROGS)
+	@tests/run-tests.sh $(TEST_PROGS)
+
+bench: $(BENCH_PROGS)
+	@for b in $(BENCH_PROGS); do echo "== $$b"; $$b || exit 1; done
+
+clean:
+	rm -rf build
+
+-include $(shell find build -name '*.d' 2>/dev/null)
