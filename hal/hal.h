@@ -83,6 +83,13 @@ int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count);
 uint64_t hal_time_us(void);
 
 /*
+ * Sleep (WFI on the ECU, clock_nanosleep/poll on Linux) until deadline_us or
+ * until a frame or another event may need attention, whichever is first.
+ * May return early; never returns later than deadline_us + one tick.
+ */
+void hal_idle_until(uint64_t deadline_us);
+
+/*
  * A free-running cycle counter for task timing (DWT CYCCNT on the ECU,
  * nanoseconds on Linux, instructions or ticks in tests) and its rate.
  */

@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * squeal_app: the firmware proper, identical on every platform.
+ * A platform's main() sets its HAL up and calls squeal_main(); the host-sim
+ * and tests may drive squeal_app_init()/squeal_app_poll() themselves.
+ */
+#ifndef SQUEAL_APP_H
+#define SQUEAL_APP_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+/* Load calibration through the HAL (defaults if none or corrupt), set CAN
+ * filters, start the watchdog. Returns SQ_OK or a negative SQ_E* code
+ * (the app still runs with defaults and reports the fault). */
+int squeal_app_init(void);
+
+/* Do all work that is due at hal_time_us(): drain CAN RX, run the 1 ms
+ * tasks, transmit. Bounded time per call. Returns the next deadline (us). */
+uint64_t squeal_app_poll(void);
+
+/* init, then poll + hal_idle_until() until *stop becomes true (never, on the
+ * ECU). Returns the init status. */
+int squeal_main(volatile const bool *stop);
+
+#endif /* SQUEAL_APP_H */
