@@ -1,0 +1,28 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Single-precision elementary functions for the float build of the model.
+ * firmware/ is freestanding (no libm), and the Cortex-M4F FPU is single
+ * precision only, so these work in float throughout. Accuracy: a few ulp over
+ * the documented argument ranges (proved against numpy in tests/unit).
+ */
+#ifndef SQ_MATHF_H
+#define SQ_MATHF_H
+
+#include <stdbool.h>
+
+#define SQ_LN2F 0.693147180559945309f
+
+/* true when x is neither NaN nor infinite */
+bool sq_isfinitef(float x);
+/* natural log, x > 0 finite (subnormals handled); returns -FLT_MAX otherwise */
+float sq_lnf(float x);
+/* ln(1 + y), y > -1; accurate for small |y| */
+float sq_log1pf(float y);
+/* e^x for x in [-87, 88]; clamps outside */
+float sq_expf(float x);
+/* e^x - 1, accurate for small |x|; x <= 88 */
+float sq_expm1f(float x);
+/* square root, x >= 0 finite; 0 otherwise */
+float sq_sqrtf(float x);
+
+#endif /* SQ_MATHF_H */

@@ -1,0 +1,48 @@
+/* SPDX-License-Identifier: MIT */
+/* Parts of the model API that are the same in both numeric builds. */
+#include "squeal_model.h"
+
+/*
+ * The paper's disc brake (model.md section 8). Fixed-build values are the
+ * nearest raw integers: D = 0.023 * 2^30 = 24696061.95, dmu = 0.15 * 2^30 =
+ * 161061273.6 (errors < 1e-9, far below the tests' tolerances).
+ */
+void squeal_model_default_params(squeal_params_t *params)
+{
+	if (params == 0) {
+		return;
+	}
+#if defined(SQUEAL_NUMERIC_FIXED)
+	params->mass_kg = 1 << SQUEAL_Q_MASS;
+	params->omega0_radps = 5000 << SQUEAL_Q_OMEGA0;
+	params->damping = 24696062;
+	params->mu_inf = 1 << (SQUEAL_Q_MU - 2);
+	params->delta_mu = 161061274;
+	params->slope_spm = 2 << SQUEAL_Q_SLOPE;
+#else
+	params->mass_kg = 1.0f;
+	params->omega0_radps = 5000.0f;
+	params->damping = 0.023f;
+	params->mu_inf = 0.25f;
+	params->delta_mu = 0.15f;
+	params->slope_spm = 2.0f;
+#endif
+}
+
+const char *squeal_model_state_name(squeal_state_t state)
+{
+	switch (state) {
+	case SQUEAL_STATE_STABLE:
+		return "stable";
+	case SQUEAL_STATE_BISTABLE:
+		return "bistable";
+	case SQUEAL_STATE_UNSTABLE:
+		return "unstable";
+	case SQUEAL_STATE_NOT_SLIDING:
+		return "not_sliding";
+	case SQUEAL_STATE_INVALID:
+		return "invalid";
+	default:
+		return "?";
+	}
+}

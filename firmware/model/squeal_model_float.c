@@ -1,0 +1,345 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Float build of the squeal model (shared/model.md sections 2-4, 7).
+ *
+ * Everything is expressed through lq2 = ln(2Q) = c2 + s, with
+ *   c2 = ln(2 D w0 m / (a N dmu))   (bounded: a sum of logs of bounded inputs)
+ *   s  = a v0                        (the stick line in the dimensionless form)
+ * so that e^(a v0) is never formed. With G(x) = ln(2 I1(x) / x) (G(0) = 0):
+ *   unstable        lq2 <= 0                     (Q <= 1/2)
+ *   stable (exact)  lq2 >= G(s)  <=>  c2 >= G(s) - s = H(s)
+ *   stable (cubic)  lq2 >= ln(1 + s^2 / 8)       (Q >= 1/2 + s^2/16)
+ *   exact cycle     G(x) = lq2                   (I1(x)/x = Q)
+ *   cubic cycle     x3 = sqrt(8 (e^lq2 - 1))     (4 sqrt(Q - 1/2))
+ *   v_H = -c2 / a, exists when c2 < 0;   N_H = 2 Q N = N e^lq2
+ */
+#if !defined(SQUEAL_NUMERIC_FIXED)
+
+#include <float.h>
+#include <stdbool.h>
+
+#include "sq_mathf.h"
+#include "squeal_model.h"
+
+/* Domain limits (see squeal_model.h). */
+#define MASS_MAX_KG 10000.0f
+#define OMEGA0_MAX_RADPS 500000.0f
+#define DAMPING_MAX 1.0f
+#define MU_MAX 1.5f
+#define SLOPE_MAX_SPM 20.0f
+#define V0_MAX_MPS 100.0f
+#define FORCE_MAX_N 500000.0f
+
+/* 0.5 ln(2 / pi): the constant of H(s) = G(s) - s for large s */
+#define HALF_LN_2_OVER_PI (-0.225791352644727f)
+/* Below this s, G is summed from its power series; above, the asymptotic
+ * expansion with 5 terms is used (first omitted term 0.68 / s^6 < 4e-8). */
+#define SERIES_MAX_S 16.0f
+#define SERIES_MAX_TERMS 64
+#define SOLVE_MAX_ITER 60
+#define UM_PER_M 1.0e6f
+
+static bool in_range(float x, float lo, float hi)
+{
+	return sq_isfinitef(x) && (x >= lo) && (x <= hi);
+}
+
+int squeal_model_params_check(const squeal_params_t *params)
+{
+	if (params == 0) {
+		return SQ_EINVAL;
+	}
+	if (!in_range(params->mass_kg, FLT_TRUE_MIN, MASS_MAX_KG) ||
+	    !in_range(params->omega0_radps, FLT_TRUE_MIN, OMEGA0_MAX_RADPS) ||
+	    !in_range(params->damping, FLT_TRUE_MIN, DAMPING_MAX) ||
+	    !in_range(params->mu_inf, 0.0f, MU_MAX) ||
+	    !in_range(params->delta_mu, -MU_MAX, MU_MAX) ||
+	    !in_range(params->slope_spm, 0.0f, SLOPE_MAX_SPM) ||
+	    !(params->mu_inf + params->delta_mu >= 0.0f)) {
+		return SQ_EINVAL;
+	}
+	return SQ_OK;
+}
+
+static int point_check(const squeal_point_t *point)
+{
+	if (!in_range(point->v0_mps, 0.0f, V0_MAX_MPS) ||
+	    !in_range(point->force_n, 0.0f, FORCE_MAX_N)) {
+		return SQ_EINVAL;
+	}
+	return SQ_OK;
+}
+
+/*
+ * G(x) = ln(2 I1(x)/x) and its derivative.
+ * Series: 2 I1(x)/x = S(t) = sum_k t^k / (k! (k+1)!), t = x^2/4, so
+ *   G = ln S = log1p(S - 1)   (no cancellation near x = 0)
+ *   G' = (x/2) S'(t) / S.
+ * Asymptotic: G = x + 0.5 ln(2/pi) - 1.5 ln x + ln P(x),
+ *   P = 1 - 3/(8x) - 15/(128x^2) - 315/(3072x^3) - 14175/(98304x^4)
+ *         - 1091475/(3932160x^5).
+ * h_out receives H = G - x computed without cancellation (may be NULL).
+ */
+static void bessel_g(float x, float *g_out, float *dg_out, float *h_out)
+{
+	if (x <= SERIES_MAX_S) {
+		const float t = 0.25f * x * x;
+		float term = 1.0f;  /* t^k / (k! (k+1)!) */
+		float dterm = 0.5f; /* k t^(k-1) / (k! (k+1)!) for k >= 1 */
+		float sm1 = 0.0f;   /* S - 1 */
+		float ds = 0.0f;    /* S' */
+		int32_t k;
+
+		for (k = 0; k < SERIES_MAX_TERMS; k++) {
+			const float kf = (float)k;
+
+			term *= t / ((kf + 1.0f) * (kf + 2.0f));
+			sm1 += term;
+			ds += dterm;
+			dterm *= t / ((kf + 1.0f) * (kf + 3.0f));
+			if (term <= sm1 * 1.0e-9f) {
+				break;
+			}
+		}
+		*g_out = sq_log1pf(sm1);
+		*dg_out = 0.5f * x * ds / (1.0f + sm1);
+		if (h_out != 0) {
+			*h_out = *g_out - x;
+		}
+	} else {
+		const float r = 1.0f / x;
+		const float p = 1.0f - r * (3.0f / 8.0f + r * (15.0f / 128.0f +
+				r * (315.0f / 3072.0f + r * (14175.0f / 98304.0f +
+				r * (1091475.0f / 3932160.0f)))));
+		const float dp = r * r * (3.0f / 8.0f + r * (30.0f / 128.0f +
+				 r * (945.0f / 3072.0f + r * (56700.0f / 98304.0f +
+				 r * (5457375.0f / 3932160.0f)))));
+		const float h = HALF_LN_2_OVER_PI - 1.5f * sq_lnf(x) + sq_lnf(p);
+
+		*g_out = x + h;
+		*dg_out = 1.0f - 1.5f * r + dp / p;
+		if (h_out != 0) {
+			*h_out = h;
+		}
+	}
+}
+
+/*
+ * Solve G(x) = lq2 for x > 0 (lq2 > 0): Newton's method kept inside a
+ * bracket [lo, hi] that always holds the root, bisecting whenever a Newton
+ * step would leave it. G(0) = 0 < lq2 and G(2 lq2 + 16) > lq2 for all lq2 > 0.
+ */
+static float solve_exact_cycle(float lq2)
+{
+	float lo = 0.0f;
+	float hi = 2.0f * lq2 + 16.0f;
+	float x;
+	int32_t i;
+
+	/* G(x) ~ x^2/8 near 0 and ~ x - 1.5 ln x for large x */
+	if (lq2 < 2.0f) {
+		x = sq_sqrtf(8.0f * lq2);
+	} else {
+		x = lq2 + 1.5f * sq_lnf(lq2 + 1.5f * sq_lnf(lq2) + 1.0f) + 0.23f;
+	}
+	if (!(x > lo) || !(x < hi)) {
+		x = 0.5f * (lo + hi);
+	}
+	for (i = 0; i < SOLVE_MAX_ITER; i++) {
+		float g;
+		float dg;
+		float f;
+		float next;
+
+		bessel_g(x, &g, &dg, 0);
+		f = g - lq2;
+		if (f == 0.0f) {
+			break;
+		}
+		if (f < 0.0f) {
+			lo = x;
+		} else {
+			hi = x;
+		}
+		next = (dg > 0.0f) ? (x - f / dg) : lo;
+		if (!(next > lo) || !(next < hi)) {
+			next = 0.5f * (lo + hi);
+		}
+		if ((next - x <= 2.0e-7f * x) && (x - next <= 2.0e-7f * x)) {
+			x = next;
+			break;
+		}
+		x = next;
+	}
+	return x;
+}
+
+/* num / den for num >= 0, den > 0; FLT_MAX and *sat = true if it overflows */
+static float div_sat(float num, float den, bool *sat)
+{
+	const float q = num / den;
+
+	if (!sq_isfinitef(q)) {
+		*sat = true;
+		return FLT_MAX;
+	}
+	*sat = false;
+	return q;
+}
+
+static void result_clear(squeal_result_t *out, squeal_state_t state)
+{
+	out->state = state;
+	out->flags = 0U;
+	out->ln_q = 0.0f;
+	out->hopf_v0_mps = 0.0f;
+	out->hopf_margin_mps = 0.0f;
+	out->hopf_force_n = 0.0f;
+	out->cycle_x = 0.0f;
+	out->lc_amplitude_um = 0.0f;
+	out->trigger_velocity_mps = 0.0f;
+	out->basin_ratio = 0.0f;
+}
+
+/* Cycle amplitude and everything derived from it, for lq2 > 0. */
+static void fill_cycle(const squeal_params_t *p, float s, float lq2,
+		       squeal_criterion_t criterion, squeal_result_t *out)
+{
+	float x;
+	bool sat;
+
+	if (criterion == SQUEAL_CRITERION_CUBIC) {
+		/* 4 sqrt(Q - 1/2) = sqrt(8 (2Q - 1)) / ... = sqrt(8 expm1(lq2));
+		 * for large lq2, sqrt(8) e^(lq2/2) avoids overflowing 8 e^lq2 */
+		if (lq2 < 20.0f) {
+			x = sq_sqrtf(8.0f * sq_expm1f(lq2));
+		} else if (lq2 < 170.0f) {
+			x = 2.82842712475f * sq_expf(0.5f * lq2);
+		} else {
+			x = FLT_MAX;
+			out->flags |= SQUEAL_SAT_CYCLE_X;
+		}
+	} else {
+		x = solve_exact_cycle(lq2);
+	}
+	out->cycle_x = x;
+	out->flags |= SQUEAL_HAS_CYCLE;
+
+	out->trigger_velocity_mps = div_sat(x, p->slope_spm, &sat);
+	if (sat) {
+		out->flags |= SQUEAL_SAT_TRIGGER;
+	}
+	out->lc_amplitude_um = div_sat(out->trigger_velocity_mps,
+				       p->omega0_radps, &sat);
+	if (!sat) {
+		out->lc_amplitude_um = div_sat(out->lc_amplitude_um,
+					       1.0f / UM_PER_M, &sat);
+	}
+	if (sat || ((out->flags & SQUEAL_SAT_TRIGGER) != 0U)) {
+		out->lc_amplitude_um = FLT_MAX;
+		out->flags |= SQUEAL_SAT_AMPLITUDE;
+	}
+	if (s > 0.0f) {
+		out->basin_ratio = div_sat(x, s, &sat);
+		out->flags |= SQUEAL_HAS_BASIN;
+		if (sat) {
+			out->flags |= SQUEAL_SAT_BASIN;
+		}
+	}
+}
+
+int squeal_model_classify(const squeal_params_t *params,
+			  const squeal_point_t *point,
+			  squeal_criterion_t criterion,
+			  squeal_result_t *out)
+{
+	const squeal_params_t *p = params;
+	float s;
+	float c2;
+	float lq2;
+	float ln_force;
+	bool stable;
+
+	if ((params == 0) || (point == 0) || (out == 0)) {
+		return SQ_EINVAL;
+	}
+	if ((squeal_model_params_check(params) != SQ_OK) ||
+	    (point_check(point) != SQ_OK) ||
+	    ((criterion != SQUEAL_CRITERION_EXACT) &&
+	     (criterion != SQUEAL_CRITERION_CUBIC))) {
+		result_clear(out, SQUEAL_STATE_INVALID);
+		return SQ_EINVAL;
+	}
+	if ((point->v0_mps == 0.0f) || (point->force_n == 0.0f)) {
+		result_clear(out, SQUEAL_STATE_NOT_SLIDING);
+		return SQ_OK;
+	}
+	result_clear(out, SQUEAL_STATE_STABLE);
+	if ((p->slope_spm == 0.0f) || !(p->delta_mu > 0.0f)) {
+		/* friction does not fall with speed: no border, no cycle */
+		return SQ_OK;
+	}
+
+	s = p->slope_spm * point->v0_mps;
+	ln_force = sq_lnf(point->force_n);
+	c2 = SQ_LN2F + sq_lnf(p->damping) + sq_lnf(p->omega0_radps) +
+	     sq_lnf(p->mass_kg) - sq_lnf(p->slope_spm) - ln_force -
+	     sq_lnf(p->delta_mu);
+	lq2 = c2 + s;
+	out->ln_q = lq2 - SQ_LN2F;
+	out->flags |= SQUEAL_HAS_LNQ;
+
+	/* Hopf border in speed: lq2 = 0 at v0 = -c2 / a */
+	if (c2 < 0.0f) {
+		bool sat;
+
+		out->hopf_v0_mps = div_sat(-c2, p->slope_spm, &sat);
+		out->hopf_margin_mps = point->v0_mps - out->hopf_v0_mps;
+		out->flags |= SQUEAL_HAS_HOPF_V0;
+		if (sat) {
+			out->hopf_margin_mps = -FLT_MAX;
+			out->flags |= SQUEAL_SAT_HOPF_V0;
+		}
+	}
+	/* Hopf border in force: N_H = N e^lq2 */
+	out->flags |= SQUEAL_HAS_HOPF_FORCE;
+	if (lq2 + ln_force < 88.0f) {
+		out->hopf_force_n = point->force_n * sq_expf(lq2);
+	} else {
+		out->hopf_force_n = FLT_MAX;
+		out->flags |= SQUEAL_SAT_HOPF_FORCE;
+	}
+
+	if (!(lq2 > 0.0f)) {
+		out->state = SQUEAL_STATE_UNSTABLE;
+		return SQ_OK;
+	}
+	if (criterion == SQUEAL_CRITERION_CUBIC) {
+		stable = lq2 >= sq_log1pf(0.125f * s * s);
+	} else {
+		float g;
+		float dg;
+		float h;
+
+		bessel_g(s, &g, &dg, &h);
+		stable = c2 >= h;
+	}
+	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
+	fill_cycle(p, s, lq2, criterion, out);
+
+	/* The class is decided by the border comparison above; the basin ratio
+	 * comes from the solved cycle. Within the solver's last bit they could
+	 * disagree: keep rho < 1 exactly for bistable, >= 1 for stable. */
+	if ((out->flags & SQUEAL_HAS_BASIN) != 0U) {
+		if (!stable && !(out->basin_ratio < 1.0f)) {
+			out->basin_ratio = 1.0f - FLT_EPSILON / 2.0f;
+		} else if (!stable && !(out->basin_ratio > 0.0f)) {
+			out->basin_ratio = FLT_TRUE_MIN;
+		} else if (stable && (out->basin_ratio < 1.0f)) {
+			out->basin_ratio = 1.0f;
+		}
+	}
+	return SQ_OK;
+}
+
+#endif /* !SQUEAL_NUMERIC_FIXED */

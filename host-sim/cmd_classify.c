@@ -1,0 +1,394 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * squeal-sim classify: one operating point through the firmware's model.
+ * squeal-sim sweep: a readable stability table over speed and force.
+ */
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim_commands.h"
+#include "sim_num.h"
+#include "squeal_model.h"
+
+/* Vehicle speed for display: v_car = (r_w / r_p) v0 with the default wheel
+ * (0.30 m) and effective pad radius (0.12 m) of model.md section 8. */
+#define WHEEL_OVER_PAD_RADIUS (0.30 / 0.12)
+
+typedef struct {
+	sim_params_d_t params;
+	double v0_mps;
+	double force_n;
+	bool have_v0;
+	bool have_force;
+	squeal_criterion_t criterion;
+	bool json;
+} classify_args_t;
+
+static int parse_double(const char *flag, const char *text, double *out)
+{
+	char *end = NULL;
+	double v;
+
+	errno = 0;
+	v = strtod(text, &end);
+	if ((end == text) || (*end != '\0') || (errno == ERANGE)) {
+		fprintf(stderr, "squeal-sim classify: %s needs a number, got '%s'\n",
+			flag, text);
+		return -1;
+	}
+	*out = v;
+	return 0;
+}
+
+static void classify_usage(FILE *f)
+{
+	fprintf(f,
+		"usage: squeal-sim classify --v0 MPS --force N [--slope A] [--damping D]\n"
+		"         [--omega0 W] [--mass M] [--mu-inf X] [--delta-mu Y]\n"
+		"         [--criterion exact|cubic] [--json]\n\n"
+		"Classifies one operating point of the friction oscillator as stable,\n"
+		"bistable, unstable or not sliding (shared/model.md), with its margins.\n\n"
+		"  --v0 MPS         disc surface speed at the pad radius [m/s] (required)\n"
+		"  --force N        pad normal force [N] (required)\n"
+		"  --slope A        friction slope a [s/m]            (default 2)\n"
+		"  --damping D      damping ratio D [-]              (default 0.023)\n"
+		"  --omega0 W       natural angular frequency [rad/s] (default 5000)\n"
+		"  --mass M         moving mass m [kg]               (default 1)\n"
+		"  --mu-inf X       friction coefficient at high speed (default 0.25)\n"
+		"  --delta-mu Y     mu_0 - mu_inf                    (default 0.15)\n"
+		"  --criterion C    exact (I1(s)/s, default) or cubic (the paper's)\n"
+		"  --json           one JSON object on stdout\n\n"
+		"Exit status: 0 classified, 1 input outside the model's domain\n"
+		"(state \"invalid\"), 2 bad usage. Numeric build: %s.\n",
+		SQUEAL_NUMERIC_NAME);
+}
+
+static int classify_parse(int argc, char **argv, classify_args_t *a)
+{
+	enum {
+		OPT_V0 = 256, OPT_FORCE, OPT_SLOPE, OPT_DAMPING, OPT_OMEGA0,
+		OPT_MASS, OPT_MU_INF, OPT_DELTA_MU, OPT_CRITERION, OPT_JSON, OPT_HELP
+	};
+	static const struct option options[] = {
+		{ "v0", required_argument, NULL, OPT_V0 },
+		{ "force", required_argument, NULL, OPT_FORCE },
+		{ "slope", required_argument, NULL, OPT_SLOPE },
+		{ "damping", required_argument, NULL, OPT_DAMPING },
+		{ "omega0", required_argument, NULL, OPT_OMEGA0 },
+		{ "mass", required_argument, NULL, OPT_MASS },
+		{ "mu-inf", required_argument, NULL, OPT_MU_INF },
+		{ "delta-mu", required_argument, NULL, OPT_DELTA_MU },
+		{ "criterion", required_argument, NULL, OPT_CRITERION },
+		{ "json", no_argument, NULL, OPT_JSON },
+		{ "help", no_argument, NULL, OPT_HELP },
+		{ NULL, 0, NULL, 0 },
+	};
+	int opt;
+
+	memset(a, 0, sizeof(*a));
+	sim_params_default(&a->params);
+	a->criterion = SQUEAL_CRITERION_EXACT;
+	optind = 1;
+	opterr = 0;
+	while ((opt = getopt_long(argc, argv, "h", options, NULL)) != -1) {
+		int rc = 0;
+
+		switch (opt) {
+		case OPT_V0:
+			rc = parse_double("--v0", optarg, &a->v0_mps);
+			a->have_v0 = true;
+			break;
+		case OPT_FORCE:
+			rc = parse_double("--force", optarg, &a->force_n);
+			a->have_force = true;
+			break;
+		case OPT_SLOPE:
+			rc = parse_double("--slope", optarg, &a->params.slope_spm);
+			break;
+		case OPT_DAMPING:
+			rc = parse_double("--damping", optarg, &a->params.damping);
+			break;
+		case OPT_OMEGA0:
+			rc = parse_double("--omega0", optarg, &a->params.omega0_radps);
+			break;
+		case OPT_MASS:
+			rc = parse_double("--mass", optarg, &a->params.mass_kg);
+			break;
+		case OPT_MU_INF:
+			rc = parse_double("--mu-inf", optarg, &a->params.mu_inf);
+			break;
+		case OPT_DELTA_MU:
+			rc = parse_double("--delta-mu", optarg, &a->params.delta_mu);
+			break;
+		case OPT_CRITERION:
+			if (strcmp(optarg, "exact") == 0) {
+				a->criterion = SQUEAL_CRITERION_EXACT;
+			} else if (strcmp(optarg, "cubic") == 0) {
+				a->criterion = SQUEAL_CRITERION_CUBIC;
+			} else {
+				fprintf(stderr, "squeal-sim classify: --criterion is exact or cubic, got '%s'\n",
+					optarg);
+				rc = -1;
+			}
+			break;
+		case OPT_JSON:
+			a->json = true;
+			break;
+		case 'h':
+		case OPT_HELP:
+			classify_usage(stdout);
+			return 1;
+		default:
+			fprintf(stderr, "squeal-sim classify: unknown or incomplete option '%s'\n",
+				argv[optind - 1]);
+			rc = -1;
+			break;
+		}
+		if (rc != 0) {
+			return -1;
+		}
+	}
+	if (optind < argc) {
+		fprintf(stderr, "squeal-sim classify: unexpected argument '%s'\n", argv[optind]);
+		return -1;
+	}
+	if (!a->have_v0 || !a->have_force) {
+		fprintf(stderr, "squeal-sim classify: --v0 and --force are required (see --help)\n");
+		return -1;
+	}
+	return 0;
+}
+
+/* Print a field as a JSON number, or null where the model gives none. */
+static void json_field(const char *key, bool present, double value, bool last)
+{
+	if (present && isfinite(value)) {
+		printf("  \"%s\": %.9g%s\n", key, value, last ? "" : ",");
+	} else {
+		printf("  \"%s\": null%s\n", key, last ? "" : ",");
+	}
+}
+
+typedef struct {
+	double ln_q;
+	double hopf_v0_mps;
+	double hopf_margin_mps;
+	double hopf_force_n;
+	double cycle_x;
+	double lc_amplitude_m;
+	double trigger_velocity_mps;
+	double basin_ratio;
+} result_d_t;
+
+static void result_to_double(const squeal_result_t *r, result_d_t *d)
+{
+	d->ln_q = sim_num_to_double(r->ln_q, SQUEAL_Q_LNQ);
+	d->hopf_v0_mps = sim_num_to_double(r->hopf_v0_mps, SQUEAL_Q_V0);
+	d->hopf_margin_mps = sim_num_to_double(r->hopf_margin_mps, SQUEAL_Q_V0);
+	d->hopf_force_n = sim_num_to_double(r->hopf_force_n, SQUEAL_Q_FORCE);
+	d->cycle_x = sim_num_to_double(r->cycle_x, SQUEAL_Q_CYCLE_X);
+	d->lc_amplitude_m = sim_num_to_double(r->lc_amplitude_um, SQUEAL_Q_AMPL_UM) * 1e-6;
+	d->trigger_velocity_mps = sim_num_to_double(r->trigger_velocity_mps, SQUEAL_Q_V0);
+	d->basin_ratio = sim_num_to_double(r->basin_ratio, SQUEAL_Q_RATIO);
+}
+
+static bool has(const squeal_result_t *r, uint32_t has_flag, uint32_t sat_flag)
+{
+	return ((r->flags & has_flag) != 0U) && ((r->flags & sat_flag) == 0U);
+}
+
+static void print_json(const classify_args_t *a, const squeal_result_t *r)
+{
+	result_d_t d;
+	const bool lnq = has(r, SQUEAL_HAS_LNQ, 0U);
+
+	result_to_double(r, &d);
+	printf("{\n");
+	printf("  \"state\": \"%s\",\n", squeal_model_state_name(r->state));
+	printf("  \"criterion\": \"%s\",\n",
+	       (a->criterion == SQUEAL_CRITERION_CUBIC) ? "cubic" : "exact");
+	printf("  \"numeric\": \"%s\",\n", SQUEAL_NUMERIC_NAME);
+	printf("  \"v0_mps\": %.9g,\n", a->v0_mps);
+	printf("  \"force_n\": %.9g,\n", a->force_n);
+	json_field("q", lnq, exp(d.ln_q), false);
+	json_field("ln_q", lnq, d.ln_q, false);
+	json_field("hopf_v0_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0),
+		   d.hopf_v0_mps, false);
+	json_field("hopf_margin_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0),
+		   d.hopf_margin_mps, false);
+	json_field("hopf_force_n", has(r, SQUEAL_HAS_HOPF_FORCE, SQUEAL_SAT_HOPF_FORCE),
+		   d.hopf_force_n, false);
+	json_field("cycle_x", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_CYCLE_X),
+		   d.cycle_x, false);
+	json_field("lc_amplitude_m", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_AMPLITUDE),
+		   d.lc_amplitude_m, false);
+	json_field("trigger_velocity_mps", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_TRIGGER),
+		   d.trigger_velocity_mps, false);
+	json_field("basin_ratio", has(r, SQUEAL_HAS_BASIN, SQUEAL_SAT_BASIN),
+		   d.basin_ratio, false);
+	printf("  \"saturated\": %s\n", ((r->flags & 0xff00U) != 0U) ? "true" : "false");
+	printf("}\n");
+}
+
+static const char *state_explanation(squeal_state_t state)
+{
+	switch (state) {
+	case SQUEAL_STATE_STABLE:
+		return "steady sliding is safe up to the stick line";
+	case SQUEAL_STATE_BISTABLE:
+		return "stable, but a disturbance above the trigger velocity tips it into stick-slip";
+	case SQUEAL_STATE_UNSTABLE:
+		return "steady sliding is unstable: grows into stick-slip (squeal)";
+	case SQUEAL_STATE_NOT_SLIDING:
+		return "no sliding (standstill or no pad force)";
+	default:
+		return "input outside the model's domain";
+	}
+}
+
+static void print_text(const classify_args_t *a, const squeal_result_t *r)
+{
+	result_d_t d;
+
+	result_to_double(r, &d);
+	printf("operating point  v0 = %.4g m/s (vehicle %.1f km/h), N = %.6g N\n",
+	       a->v0_mps, a->v0_mps * WHEEL_OVER_PAD_RADIUS * 3.6, a->force_n);
+	printf("state            %s: %s\n", squeal_model_state_name(r->state),
+	       state_explanation(r->state));
+	if (has(r, SQUEAL_HAS_LNQ, 0U)) {
+		printf("Q                %.6g (ln Q = %.6g; unstable at Q <= 0.5)\n",
+		       exp(d.ln_q), d.ln_q);
+	}
+	if (has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0)) {
+		printf("Hopf speed       v_H = %.6g m/s, margin v0 - v_H = %+.6g m/s\n",
+		       d.hopf_v0_mps, d.hopf_margin_mps);
+	} else if (has(r, SQUEAL_HAS_LNQ, 0U)) {
+		printf("Hopf speed       none: steady sliding is stable at every speed\n");
+	}
+	if (has(r, SQUEAL_HAS_HOPF_FORCE, SQUEAL_SAT_HOPF_FORCE)) {
+		printf("Hopf force       N_H = %.6g N, margin N_H - N = %+.6g N\n",
+		       d.hopf_force_n, d.hopf_force_n - a->force_n);
+	}
+	if (has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_AMPLITUDE)) {
+		printf("unstable cycle   A_LC = %.6g um, trigger velocity %.6g m/s\n",
+		       d.lc_amplitude_m * 1e6, d.trigger_velocity_mps);
+	}
+	if (has(r, SQUEAL_HAS_BASIN, SQUEAL_SAT_BASIN)) {
+		printf("basin ratio      rho = %.6g (< 1: cycle below the stick line)\n",
+		       d.basin_ratio);
+	}
+}
+
+int cmd_classify(int argc, char **argv)
+{
+	classify_args_t a;
+	squeal_params_t params;
+	squeal_point_t point;
+	squeal_result_t result;
+	int rc;
+
+	rc = classify_parse(argc, argv, &a);
+	if (rc != 0) {
+		return (rc > 0) ? 0 : 2;
+	}
+	/* A value the fixed build cannot represent saturates; the model then
+	 * rejects it like any other value outside its domain. */
+	(void)sim_params_to_model(&a.params, &params);
+	(void)sim_point_to_model(a.v0_mps, a.force_n, &point);
+	rc = squeal_model_classify(&params, &point, a.criterion, &result);
+	if (a.json) {
+		print_json(&a, &result);
+	} else {
+		print_text(&a, &result);
+	}
+	if (rc != SQ_OK) {
+		fprintf(stderr,
+			"squeal-sim classify: input outside the model's domain "
+			"(see firmware/model/squeal_model.h): mass (0,10000] kg, omega0 (0,500000] rad/s, "
+			"damping (0,1], mu-inf [0,1.5], delta-mu [-1.5,1.5] with mu-inf+delta-mu >= 0, "
+			"slope [0,20] s/m, v0 [0,100] m/s, force [0,500000] N\n");
+		return 1;
+	}
+	return 0;
+}
+
+/* ---- sweep ---------------------------------------------------------------- */
+
+static char state_glyph(squeal_state_t s)
+{
+	switch (s) {
+	case SQUEAL_STATE_STABLE:
+		return '.';
+	case SQUEAL_STATE_BISTABLE:
+		return 'b';
+	case SQUEAL_STATE_UNSTABLE:
+		return 'U';
+	case SQUEAL_STATE_NOT_SLIDING:
+		return '-';
+	default:
+		return '?';
+	}
+}
+
+int cmd_sweep(int argc, char **argv)
+{
+	static const double forces_n[] = { 2000.0, 5000.0, 9000.0, 15000.0, 20000.0, 30000.0 };
+	const int n_v0 = 61;
+	sim_params_d_t pd;
+	squeal_params_t params;
+	size_t fi;
+	int crit;
+
+	if ((argc > 1) && ((strcmp(argv[1], "--help") == 0) || (strcmp(argv[1], "-h") == 0))) {
+		printf("usage: squeal-sim sweep\n\nPrints the stability of the default brake over disc "
+		       "speed 0..3 m/s and pad force 2..30 kN, for both criteria.\n");
+		return 0;
+	}
+	if (argc > 1) {
+		fprintf(stderr, "squeal-sim sweep: takes no arguments\n");
+		return 2;
+	}
+	sim_params_default(&pd);
+	if (sim_params_to_model(&pd, &params) != 0) {
+		return 1;
+	}
+	printf("Stability of the default brake (a = 2 s/m, D = 0.023, w0 = 5000 rad/s, m = 1 kg,\n"
+	       "mu_inf = 0.25, dmu = 0.15); numeric build: %s\n"
+	       "U unstable (squeal)   b bistable (a disturbance can start it)   . stable   - not sliding\n",
+	       SQUEAL_NUMERIC_NAME);
+	for (crit = 0; crit < 2; crit++) {
+		const squeal_criterion_t c = (crit == 0) ? SQUEAL_CRITERION_EXACT : SQUEAL_CRITERION_CUBIC;
+		int i;
+
+		printf("\ncriterion %s\n", (crit == 0) ? "exact (default)" : "cubic (paper)");
+		printf("%9s  v0 = 0 m/s %*s 3 m/s   v_H [m/s]\n", "force", n_v0 - 16, "");
+		for (fi = 0; fi < sizeof(forces_n) / sizeof(forces_n[0]); fi++) {
+			char row[128];
+			double vh = NAN;
+
+			for (i = 0; i < n_v0; i++) {
+				squeal_point_t pt;
+				squeal_result_t r;
+
+				(void)sim_point_to_model(3.0 * i / (n_v0 - 1), forces_n[fi], &pt);
+				(void)squeal_model_classify(&params, &pt, c, &r);
+				row[i] = state_glyph(r.state);
+				if ((r.flags & SQUEAL_HAS_HOPF_V0) != 0U) {
+					vh = sim_num_to_double(r.hopf_v0_mps, SQUEAL_Q_V0);
+				}
+			}
+			row[n_v0] = '\0';
+			if (isnan(vh)) {
+				printf("%7.0f N  %s   none\n", forces_n[fi], row);
+			} else {
+				printf("%7.0f N  %s   %.4f\n", forces_n[fi], row, vh);
+			}
+		}
+	}
+	return 0;
+}

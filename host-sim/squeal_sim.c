@@ -1,0 +1,56 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * squeal-sim: the Linux programs around the brake-squeal monitor firmware,
+ * one binary with subcommands (architecture.md section 4).
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "squeal_model.h"
+#include "sim_commands.h"
+
+typedef struct {
+	const char *name;
+	int (*run)(int argc, char **argv);
+	const char *summary;
+} command_t;
+
+static const command_t commands[] = {
+	{ "classify", cmd_classify, "classify one operating point (model only)" },
+	{ "sweep", cmd_sweep, "classify a table of operating points (demo)" },
+};
+
+static void usage(FILE *f)
+{
+	size_t i;
+
+	fprintf(f, "usage: squeal-sim COMMAND [OPTIONS]   (numeric build: %s)\n\n",
+		SQUEAL_NUMERIC_NAME);
+	fprintf(f, "commands:\n");
+	for (i = 0; i < sizeof(commands) / sizeof(commands[0]); i++) {
+		fprintf(f, "  %-10s %s\n", commands[i].name, commands[i].summary);
+	}
+	fprintf(f, "\n'squeal-sim COMMAND --help' describes each command.\n");
+}
+
+int main(int argc, char **argv)
+{
+	size_t i;
+
+	if (argc < 2) {
+		usage(stderr);
+		return 2;
+	}
+	if ((strcmp(argv[1], "--help") == 0) || (strcmp(argv[1], "-h") == 0)) {
+		usage(stdout);
+		return 0;
+	}
+	for (i = 0; i < sizeof(commands) / sizeof(commands[0]); i++) {
+		if (strcmp(argv[1], commands[i].name) == 0) {
+			return commands[i].run(argc - 1, argv + 1);
+		}
+	}
+	fprintf(stderr, "squeal-sim: unknown command '%s'\n", argv[1]);
+	usage(stderr);
+	return 2;
+}

@@ -1,0 +1,18 @@
+# SPDX-License-Identifier: MIT
+# The host programs: build/host/squeal-sim (float) and build/host-fixed/squeal-sim.
+# Other areas add their sources with SIM_SRCS += ... and libraries with
+# SIM_LIBS_<variant> += ...
+
+SIM_SRCS += host-sim/squeal_sim.c host-sim/cmd_classify.c host-sim/sim_num.c
+
+define sim_program
+build/$(1)/squeal-sim: $$(patsubst %.c,build/$(1)/app/%.o,$$(SIM_SRCS)) $$(SIM_LIBS_$(1)) build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$(patsubst %.c,build/$(1)/app/%.o,$$(SIM_SRCS)) $$(SIM_LIBS_$(1)) build/$(1)/libfirmware.a -lm
+endef
+$(foreach v,$(VARIANTS),$(eval $(call sim_program,$(v))))
+
+ALL_TARGETS += build/host/squeal-sim build/host-fixed/squeal-sim
+
+.PHONY: demo
+demo: build/host/squeal-sim
+	build/host/squeal-sim sweep
