@@ -239,7 +239,7 @@ typedef struct {
 	const char *name;     /* signal name, exactly as in the DBC            */
 	const char *unit;     /* as in the DBC ("" for none)                   */
 	uint8_t start_bit;    /* Intel: bit number of the LSB (byte*8 + bit)   */
-	uint8_t length;       /* bits, 1..32                                   */
+	uint8_t length;       /* bits, 1..31                                   */
 	uint8_t flags;        /* MSG_SIG_*                                     */
 	uint8_t mux_value;    /* with MSG_SIG_MUXED                            */
 	int32_t factor_num;   /* physical = (raw * factor_num + offset_num)    */
@@ -261,7 +261,7 @@ typedef struct {
 } msg_desc_t;
 
 #define MSG_COUNT     6U
-#define MSG_SIG_COUNT 48U
+#define MSG_SIG_COUNT 45U
 
 extern const msg_desc_t msg_table[MSG_COUNT];
 extern const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT];
