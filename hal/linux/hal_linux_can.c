@@ -1,0 +1,560 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * hal_linux_can.c: hal.h's CAN functions on a SocketCAN CAN_RAW socket.
+ *
+ * - Filters are the kernel's (CAN_RAW_FILTER): unwanted frames never reach
+ *   the process. Filters set before hal_linux_open() are kept and applied.
+ * - Error frames (CAN_RAW_ERR_FILTER) update hal_can_status_t and are also
+ *   handed to the firmware as HAL_CAN_FLAG_ERR frames (id = error class,
+ *   data = the kernel's 8 bytes) so it can count and report them:
+ *     CAN_ERR_BUSOFF      state BUS_OFF, bus_off_count + 1 (on entry)
+ *     CAN_ERR_CRTL        data[1]: warning/passive/active sets the state,
+ *                         RX overflow counts into rx_overruns, TX overflow
+ *                         into tx_dropped
+ *     CAN_ERR_RESTARTED   state ERROR_ACTIVE (controller restarted)
+ *     CAN_ERR_CNT         data[6] = TEC, data[7] = REC
+ *   A data frame received while BUS_OFF also means the controller is back
+ *   on the bus (a bus-off node receives nothing), so a lost RESTARTED frame
+ *   cannot leave the state stuck.
+ * - Receive times are the kernel's SO_TIMESTAMP (CLOCK_REALTIME at the
+ *   socket layer), moved to the hal_time_us() base by
+ *   hal_linux_realtime_to_mono_us() and clamped to [previous stamp, now].
+ * - SO_RXQ_OVFL: each frame carries the socket's cumulative drop count; the
+ *   difference to the previous frame's count goes into rx_overruns.
+ * - Send never blocks for long: on ENOBUFS (queueing discipline full) or
+ *   EAGAIN (socket send buffer full) it waits with back-off (EAGAIN: poll
+ *   for POLLOUT; ENOBUFS: sleep, as POLLOUT does not see a full qdisc) and
+ *   retries, at most tx_max_tries attempts within tx_budget_us (default 3
+ *   within 1 ms), then counts the frame in tx_dropped and returns
+ *   SQ_ENOBUFS. Waits after attempt k are budget >> (tries - k): 250 us and
+ *   500 us by default.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <net/if.h>
+#include <net/if_arp.h>
+#include <poll.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <sys/socket.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <linux/can.h>
+#include <linux/can/error.h>
+#include <linux/can/raw.h>
+
+#include "hal_linux.h"
+
+#ifndef CAN_ERR_CNT
+#define CAN_ERR_CNT 0x00000200U
+#endif
+
+#define DEFAULT_TX_TRIES 3U
+#define DEFAULT_TX_BUDGET_US 1000U
+/* Frames that are not classic CAN are skipped; bound the skipping per call. */
+#define MAX_SKIP_PER_RECEIVE 16
+
+/* Every error class but lost arbitration (normal on a busy bus). */
+#define ERR_MASK (CAN_ERR_TX_TIMEOUT | CAN_ERR_CRTL | CAN_ERR_PROT | CAN_ERR_TRX \
+		  | CAN_ERR_ACK | CAN_ERR_BUSOFF | CAN_ERR_BUSERROR | CAN_ERR_RESTARTED \
+		  | CAN_ERR_CNT)
+
+static struct {
+	int fd;
+	char ifname[IFNAMSIZ];
+	uint32_t tx_max_tries;
+	uint32_t tx_budget_us;
+	hal_can_status_t status;
+	hal_linux_can_stats_t stats;
+	uint32_t last_drop_count;
+	uint64_t last_stamp_us;
+	/* Filter set by hal_can_set_rx_filter(), applied again on open. */
+	bool filter_set;
+	uint32_t filter_count;
+	struct can_filter filters[HAL_CAN_MAX_FILTERS];
+} can = { .fd = -1, .status = { .state = HAL_CAN_STATE_STOPPED } };
+
+int hal_linux_can_fd(void)
+{
+	return can.fd;
+}
+
+void hal_linux_close(void)
+{
+	if (can.fd >= 0) {
+		(void)close(can.fd);
+	}
+	can.fd = -1;
+	can.status.state = HAL_CAN_STATE_STOPPED;
+}
+
+static int apply_filter(void)
+{
+	static const struct can_filter all = { .can_id = 0U, .can_mask = 0U };
+	const void *opt = &all;
+	socklen_t len = (socklen_t)sizeof(all);
+
+	if (can.fd < 0) {
+		return SQ_OK;
+	}
+	if (can.filter_set) {
+		opt = can.filter_count > 0U ? can.filters : NULL;
+		len = (socklen_t)(can.filter_count * sizeof(can.filters[0]));
+	}
+	if (setsockopt(can.fd, SOL_CAN_RAW, CAN_RAW_FILTER, opt, len) != 0) {
+		hal_linux_set_error("%s: CAN_RAW_FILTER: %s", can.ifname, strerror(errno));
+		return SQ_EINVAL;
+	}
+	return SQ_OK;
+}
+
+int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
+{
+	uint32_t i;
+
+	if (count > HAL_CAN_MAX_FILTERS || (ids == NULL && count > 0U)) {
+		return SQ_EINVAL;
+	}
+	for (i = 0; i < count; i++) {
+		if (ids[i] > CAN_SFF_MASK) {
+			return SQ_EINVAL;
+		}
+	}
+	for (i = 0; i < count; i++) {
+		/* Same id, standard format, data frame (EFF and RTR must be 0). */
+		can.filters[i].can_id = ids[i];
+		can.filters[i].can_mask = CAN_SFF_MASK | CAN_EFF_FLAG | CAN_RTR_FLAG;
+	}
+	can.filter_count = count;
+	can.filter_set = true;
+	return apply_filter();
+}
+
+int hal_linux_can_accept_all(void)
+{
+	can.filter_set = false;
+	can.filter_count = 0U;
+	return apply_filter();
+}
+
+static int open_fail(int fd, int code)
+{
+	(void)close(fd);
+	hal_linux_add_fault(HAL_FAULT_CAN_INIT);
+	return code;
+}
+
+static int set_int_opt(int fd, int level, int name, int value, const char *what)
+{
+	if (setsockopt(fd, level, name, &value, (socklen_t)sizeof(value)) != 0) {
+		hal_linux_set_error("%s: setsockopt %s: %s", can.ifname, what, strerror(errno));
+		return -1;
+	}
+	return 0;
+}
+
+int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
+{
+	static const hal_linux_can_opts_t defaults = { 0 };
+	const can_err_mask_t err_mask = ERR_MASK;
+	struct sockaddr_can addr;
+	struct ifreq ifr;
+	size_t len;
+	int fd;
+
+	hal_linux_close();
+	if (opts == NULL) {
+		opts = &defaults;
+	}
+	if (ifname == NULL || (len = strlen(ifname)) == 0U || len >= IFNAMSIZ) {
+		hal_linux_set_error("bad CAN interface name (1 to %d characters)", IFNAMSIZ - 1);
+		return SQ_EINVAL;
+	}
+	memcpy(can.ifname, ifname, len + 1U);
+
+	fd = socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
+	if (fd < 0) {
+		int err = errno;
+
+		hal_linux_add_fault(HAL_FAULT_CAN_INIT);
+		if (err == EAFNOSUPPORT || err == EPROTONOSUPPORT) {
+			hal_linux_set_error("%s: this kernel has no CAN support (socket(PF_CAN, CAN_RAW): %s): "
+					    "modprobe can-raw / vcan (or use a kernel with CONFIG_CAN)",
+					    ifname, strerror(err));
+			return SQ_ENOTSUP;
+		}
+		if (err == EACCES || err == EPERM) {
+			hal_linux_set_error("%s: permission denied opening a CAN socket (%s)", ifname,
+					    strerror(err));
+			return SQ_EIO;
+		}
+		hal_linux_set_error("%s: socket(PF_CAN, CAN_RAW): %s", ifname, strerror(err));
+		return SQ_EIO;
+	}
+
+	memset(&ifr, 0, sizeof(ifr));
+	memcpy(ifr.ifr_name, ifname, len + 1U);
+	if (ioctl(fd, SIOCGIFINDEX, &ifr) != 0) {
+		int err = errno;
+
+		if (err == ENODEV) {
+			hal_linux_set_error("%s: no such network interface (for a virtual bus: "
+					    "sudo ip link add dev %s type vcan && sudo ip link set up %s)",
+					    ifname, ifname, ifname);
+			return open_fail(fd, SQ_ENOENT);
+		}
+		hal_linux_set_error("%s: SIOCGIFINDEX: %s", ifname, strerror(err));
+		return open_fail(fd, SQ_EIO);
+	}
+	memset(&addr, 0, sizeof(addr));
+	addr.can_family = AF_CAN;
+	addr.can_ifindex = ifr.ifr_ifindex;
+
+	if (ioctl(fd, SIOCGIFHWADDR, &ifr) != 0) {
+		hal_linux_set_error("%s: SIOCGIFHWADDR: %s", ifname, strerror(errno));
+		return open_fail(fd, SQ_EIO);
+	}
+	if (ifr.ifr_hwaddr.sa_family != ARPHRD_CAN) {
+		hal_linux_set_error("%s: not a CAN interface (link type %u, CAN is %u)", ifname,
+				    (unsigned int)ifr.ifr_hwaddr.sa_family, (unsigned int)ARPHRD_CAN);
+		return open_fail(fd, SQ_EINVAL);
+	}
+	if (ioctl(fd, SIOCGIFFLAGS, &ifr) != 0) {
+		hal_linux_set_error("%s: SIOCGIFFLAGS: %s", ifname, strerror(errno));
+		return open_fail(fd, SQ_EIO);
+	}
+	if ((ifr.ifr_flags & IFF_UP) == 0) {
+		hal_linux_set_error("%s: interface is down (bring it up: sudo ip link set up %s; "
+				    "a real adapter also needs its bitrate: ... type can bitrate 500000)",
+				    ifname, ifname);
+		return open_fail(fd, SQ_ENETDOWN);
+	}
+
+	if (setsockopt(fd, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &err_mask,
+		       (socklen_t)sizeof(err_mask)) != 0) {
+		hal_linux_set_error("%s: CAN_RAW_ERR_FILTER: %s", ifname, strerror(errno));
+		return open_fail(fd, SQ_EIO);
+	}
+	if (set_int_opt(fd, SOL_SOCKET, SO_TIMESTAMP, 1, "SO_TIMESTAMP") != 0
+	    || set_int_opt(fd, SOL_SOCKET, SO_RXQ_OVFL, 1, "SO_RXQ_OVFL") != 0
+	    || (opts->rcvbuf_bytes > 0
+		&& set_int_opt(fd, SOL_SOCKET, SO_RCVBUF, opts->rcvbuf_bytes, "SO_RCVBUF") != 0)
+	    || (opts->sndbuf_bytes > 0
+		&& set_int_opt(fd, SOL_SOCKET, SO_SNDBUF, opts->sndbuf_bytes, "SO_SNDBUF") != 0)) {
+		return open_fail(fd, SQ_EIO);
+	}
+	if (bind(fd, (const struct sockaddr *)&addr, (socklen_t)sizeof(addr)) != 0) {
+		int err = errno;
+
+		hal_linux_set_error("%s: bind: %s", ifname, strerror(err));
+		return open_fail(fd, err == ENODEV ? SQ_ENOENT : SQ_EIO);
+	}
+
+	can.fd = fd;
+	can.tx_max_tries = opts->tx_max_tries > 0U ? opts->tx_max_tries : DEFAULT_TX_TRIES;
+	if (can.tx_max_tries > 16U) {
+		can.tx_max_tries = 16U;
+	}
+	can.tx_budget_us = opts->tx_budget_us > 0U ? opts->tx_budget_us : DEFAULT_TX_BUDGET_US;
+	memset(&can.status, 0, sizeof(can.status));
+	memset(&can.stats, 0, sizeof(can.stats));
+	can.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+	can.last_drop_count = 0U;
+	can.last_stamp_us = 0U;
+	if (apply_filter() != SQ_OK) {
+		hal_linux_close();
+		return SQ_EIO;
+	}
+	return SQ_OK;
+}
+
+int hal_can_get_status(hal_can_status_t *status)
+{
+	if (status == NULL) {
+		return SQ_EINVAL;
+	}
+	*status = can.status;
+	if (can.fd < 0) {
+		status->state = HAL_CAN_STATE_STOPPED;
+	}
+	return SQ_OK;
+}
+
+void hal_linux_can_get_stats(hal_linux_can_stats_t *stats)
+{
+	if (stats != NULL) {
+		*stats = can.stats;
+	}
+}
+
+static void count_error_frame(const struct can_frame *cf)
+{
+	canid_t cls = cf->can_id & CAN_ERR_MASK;
+
+	can.status.error_frames++;
+	if ((cls & CAN_ERR_BUSOFF) != 0U) {
+		if (can.status.state != HAL_CAN_STATE_BUS_OFF) {
+			can.status.bus_off_count++;
+		}
+		can.status.state = HAL_CAN_STATE_BUS_OFF;
+	}
+	if ((cls & CAN_ERR_CRTL) != 0U) {
+		uint8_t d1 = cf->data[1];
+
+		if ((d1 & CAN_ERR_CRTL_RX_OVERFLOW) != 0U) {
+			can.status.rx_overruns++;
+			can.stats.rx_ctrl_overflows++;
+		}
+		if ((d1 & CAN_ERR_CRTL_TX_OVERFLOW) != 0U) {
+			can.status.tx_dropped++;
+		}
+		if ((d1 & (CAN_ERR_CRTL_RX_PASSIVE | CAN_ERR_CRTL_TX_PASSIVE)) != 0U) {
+			can.status.state = HAL_CAN_STATE_ERROR_PASSIVE;
+		} else if ((d1 & (CAN_ERR_CRTL_RX_WARNING | CAN_ERR_CRTL_TX_WARNING)) != 0U) {
+			can.status.state = HAL_CAN_STATE_ERROR_WARNING;
+		} else if ((d1 & CAN_ERR_CRTL_ACTIVE) != 0U) {
+			can.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+		}
+	}
+	if ((cls & CAN_ERR_RESTARTED) != 0U) {
+		can.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+	}
+	if ((cls & CAN_ERR_CNT) != 0U) {
+		can.status.tx_error_count = cf->data[6];
+		can.status.rx_error_count = cf->data[7];
+	}
+}
+
+/* The kernel's receive time on our clock, or now when there is none. */
+static uint64_t frame_stamp_us(const struct msghdr *msg)
+{
+	const struct cmsghdr *cm;
+	uint64_t now_us = hal_time_us();
+	uint64_t stamp_us = now_us;
+	bool found = false;
+
+	for (cm = CMSG_FIRSTHDR(msg); cm != NULL; cm = CMSG_NXTHDR((struct msghdr *)msg, (struct cmsghdr *)cm)) {
+		size_t payload;
+
+		if (cm->cmsg_level != SOL_SOCKET) {
+			continue;
+		}
+		payload = cm->cmsg_len - CMSG_LEN(0);
+		if (cm->cmsg_type == SO_RXQ_OVFL && payload >= sizeof(uint32_t)) {
+			uint32_t drops;
+
+			memcpy(&drops, CMSG_DATA(cm), sizeof(drops));
+			/* Cumulative, wraps: the unsigned difference is right. */
+			can.status.rx_overruns += drops - can.last_drop_count;
+			can.stats.rx_kernel_drops += (uint32_t)(drops - can.last_drop_count);
+			can.last_drop_count = drops;
+		} else if (cm->cmsg_type == SCM_TIMESTAMP) {
+			/* struct timeval: two 64-bit fields (64-bit ABIs and
+			 * SO_TIMESTAMP_NEW) or two 32-bit ones (old 32-bit). */
+			if (payload >= 2U * sizeof(int64_t)) {
+				int64_t tv[2];
+
+				memcpy(tv, CMSG_DATA(cm), sizeof(tv));
+				stamp_us = hal_linux_realtime_to_mono_us(tv[0], tv[1] * 1000);
+				found = true;
+			} else if (payload >= 2U * sizeof(int32_t)) {
+				int32_t tv[2];
+
+				memcpy(tv, CMSG_DATA(cm), sizeof(tv));
+				stamp_us = hal_linux_realtime_to_mono_us(tv[0], (int64_t)tv[1] * 1000);
+				found = true;
+			}
+		}
+	}
+	if (!found) {
+		can.stats.ts_fallbacks++;
+	}
+	if (stamp_us > now_us) {
+		stamp_us = now_us;
+	}
+	if (stamp_us < can.last_stamp_us) {
+		stamp_us = can.last_stamp_us;
+	}
+	can.last_stamp_us = stamp_us;
+	return stamp_us;
+}
+
+int hal_can_receive(hal_can_frame_t *frame)
+{
+	int skipped;
+
+	if (frame == NULL) {
+		return SQ_EINVAL;
+	}
+	if (can.fd < 0) {
+		return SQ_ENETDOWN;
+	}
+	for (skipped = 0; skipped < MAX_SKIP_PER_RECEIVE; skipped++) {
+		union {
+			struct can_frame cf;
+			struct canfd_frame fd;
+		} buf;
+		union {
+			struct cmsghdr align;
+			char space[CMSG_SPACE(4U * sizeof(int64_t)) + CMSG_SPACE(sizeof(uint32_t)) + 64U];
+		} ctrl;
+		struct iovec iov = { .iov_base = &buf, .iov_len = sizeof(buf) };
+		struct msghdr msg;
+		ssize_t n;
+
+		memset(&msg, 0, sizeof(msg));
+		msg.msg_iov = &iov;
+		msg.msg_iovlen = 1;
+		msg.msg_control = &ctrl;
+		msg.msg_controllen = sizeof(ctrl);
+		n = recvmsg(can.fd, &msg, MSG_DONTWAIT);
+		if (n < 0) {
+			int err = errno;
+
+			if (err == EAGAIN || err == EWOULDBLOCK || err == EINTR) {
+				return SQ_EAGAIN;
+			}
+			can.status.state = HAL_CAN_STATE_STOPPED;
+			hal_linux_set_error("%s: receive: %s", can.ifname, strerror(err));
+			return SQ_ENETDOWN;
+		}
+		if ((size_t)n != sizeof(struct can_frame) || (msg.msg_flags & MSG_TRUNC) != 0
+		    || buf.cf.len > CAN_MAX_DLEN) {
+			can.stats.rx_skipped++;
+			continue;
+		}
+		memset(frame, 0, sizeof(*frame));
+		frame->timestamp_us = frame_stamp_us(&msg);
+		frame->dlc = buf.cf.len;
+		if ((buf.cf.can_id & CAN_ERR_FLAG) != 0U) {
+			count_error_frame(&buf.cf);
+			frame->id = buf.cf.can_id & CAN_ERR_MASK;
+			frame->flags = HAL_CAN_FLAG_ERR;
+			memcpy(frame->data, buf.cf.data, frame->dlc);
+			can.stats.rx_err_frames++;
+			return SQ_OK;
+		}
+		if (can.status.state == HAL_CAN_STATE_BUS_OFF
+		    || can.status.state == HAL_CAN_STATE_STOPPED) {
+			/* Receiving again: the controller is back on the bus. */
+			can.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+		}
+		if ((buf.cf.can_id & CAN_EFF_FLAG) != 0U) {
+			frame->id = buf.cf.can_id & CAN_EFF_MASK;
+			frame->flags = HAL_CAN_FLAG_EXT;
+		} else {
+			frame->id = buf.cf.can_id & CAN_SFF_MASK;
+		}
+		if ((buf.cf.can_id & CAN_RTR_FLAG) != 0U) {
+			frame->flags |= HAL_CAN_FLAG_RTR;
+		} else {
+			memcpy(frame->data, buf.cf.data, frame->dlc);
+		}
+		can.stats.rx_frames++;
+		return SQ_OK;
+	}
+	return SQ_EAGAIN;
+}
+
+/* Wait up to wait_us: for POLLOUT after EAGAIN, plainly after ENOBUFS. */
+static void tx_backoff(bool wait_for_pollout, uint32_t wait_us)
+{
+	struct timespec ts = {
+		.tv_sec = (time_t)(wait_us / 1000000U),
+		.tv_nsec = (long)((wait_us % 1000000U) * 1000U),
+	};
+
+	if (wait_for_pollout) {
+		struct pollfd pfd = { .fd = can.fd, .events = POLLOUT, .revents = 0 };
+
+		(void)ppoll(&pfd, 1, &ts, NULL);
+	} else {
+		/* An early wake by a signal only shortens the back-off. */
+		(void)nanosleep(&ts, NULL);
+	}
+}
+
+static void note_tx_time(uint64_t start_us)
+{
+	uint64_t took_us = hal_time_us() - start_us;
+
+	if (took_us > can.stats.tx_worst_us) {
+		can.stats.tx_worst_us = took_us > UINT32_MAX ? UINT32_MAX : (uint32_t)took_us;
+	}
+}
+
+int hal_can_send(const hal_can_frame_t *frame)
+{
+	struct can_frame cf;
+	uint64_t start_us;
+	uint32_t attempt;
+
+	if (frame == NULL || frame->dlc > CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U) {
+		return SQ_EINVAL;
+	}
+	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U ? frame->id > CAN_EFF_MASK : frame->id > CAN_SFF_MASK) {
+		return SQ_EINVAL;
+	}
+	if (can.fd < 0) {
+		return SQ_ENETDOWN;
+	}
+	if (can.status.state == HAL_CAN_STATE_BUS_OFF) {
+		return SQ_ENETUNREACH;
+	}
+	memset(&cf, 0, sizeof(cf));
+	cf.can_id = frame->id;
+	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U) {
+		cf.can_id |= CAN_EFF_FLAG;
+	}
+	cf.len = frame->dlc;
+	if ((frame->flags & HAL_CAN_FLAG_RTR) != 0U) {
+		cf.can_id |= CAN_RTR_FLAG;
+	} else {
+		memcpy(cf.data, frame->data, frame->dlc);
+	}
+
+	start_us = hal_time_us();
+	for (attempt = 1U;; attempt++) {
+		ssize_t n = send(can.fd, &cf, sizeof(cf), MSG_DONTWAIT);
+		uint64_t elapsed_us;
+		uint32_t wait_us;
+		int err;
+
+		if (n == (ssize_t)sizeof(cf)) {
+			can.stats.tx_frames++;
+			note_tx_time(start_us);
+			return SQ_OK;
+		}
+		err = n < 0 ? errno : EIO;
+		if (err == ENETDOWN || err == ENODEV || err == ENXIO) {
+			can.status.state = HAL_CAN_STATE_STOPPED;
+			hal_linux_set_error("%s: send: %s", can.ifname, strerror(err));
+			return SQ_ENETDOWN;
+		}
+		if (err == EINVAL) {
+			return SQ_EINVAL;
+		}
+		if (err != ENOBUFS && err != EAGAIN && err != EWOULDBLOCK && err != EINTR) {
+			/* Anything else is lost too: counted, never silent. */
+			can.status.tx_dropped++;
+			can.stats.tx_dropped++;
+			hal_linux_set_error("%s: send: %s", can.ifname, strerror(err));
+			note_tx_time(start_us);
+			return SQ_ENETDOWN;
+		}
+		elapsed_us = hal_time_us() - start_us;
+		if (attempt >= can.tx_max_tries || elapsed_us >= can.tx_budget_us) {
+			can.status.tx_dropped++;
+			can.stats.tx_dropped++;
+			note_tx_time(start_us);
+			return SQ_ENOBUFS;
+		}
+		wait_us = can.tx_budget_us >> (can.tx_max_tries - attempt);
+		if (wait_us > can.tx_budget_us - elapsed_us) {
+			wait_us = (uint32_t)(can.tx_budget_us - elapsed_us);
+		}
+		can.stats.tx_retries++;
+		tx_backoff(err != ENOBUFS, wait_us);
+	}
+}
