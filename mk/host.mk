@@ -16,3 +16,6 @@ ALL_TARGETS += build/host/squeal-sim build/host-fixed/squeal-sim
 .PHONY: demo
 demo: build/host/squeal-sim
 	build/host/squeal-sim sweep
+
+# firmware/ builds for both MCUs; the fixed build has no floating point
+TEST_PROGS += tests/firmware/check_portable.sh
