@@ -68,6 +68,8 @@ typedef struct {
 	uint64_t tx_frames;      /* frames the kernel accepted                  */
 	uint64_t tx_retries;     /* extra attempts after ENOBUFS/EAGAIN         */
 	uint64_t tx_dropped;     /* frames given up after the back-off budget   */
+	uint64_t tx_enobufs;     /* attempts refused: queueing discipline full  */
+	uint64_t tx_eagain;      /* attempts refused: socket send buffer full   */
 	uint64_t rx_kernel_drops; /* SO_RXQ_OVFL: socket queue overflows        */
 	uint64_t rx_ctrl_overflows; /* controller RX overflow error frames      */
 	uint64_t rx_skipped;     /* non-classic frames received (ignored)       */
@@ -82,7 +84,8 @@ int hal_linux_can_accept_all(void);
 
 /* ---- errors --------------------------------------------------------------- */
 
-/* Text of the last failure of hal_linux_* or hal_* set-up calls ("" if none):
+/* Text of the last failure of hal_linux_* or hal_* set-up calls ("" if none;
+ * a successful hal_linux_open() clears it):
  * one line, meant for a user, naming the interface/file and the remedy. */
 const char *hal_linux_strerror(void);
 

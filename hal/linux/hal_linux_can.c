@@ -266,6 +266,7 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 		hal_linux_close();
 		return SQ_EIO;
 	}
+	hal_linux_set_error("%s", "");
 	return SQ_OK;
 }
 
@@ -542,6 +543,11 @@ int hal_can_send(const hal_can_frame_t *frame)
 			hal_linux_set_error("%s: send: %s", can.ifname, strerror(err));
 			note_tx_time(start_us);
 			return SQ_ENETDOWN;
+		}
+		if (err == ENOBUFS) {
+			can.stats.tx_enobufs++;
+		} else if (err != EINTR) {
+			can.stats.tx_eagain++;
 		}
 		elapsed_us = hal_time_us() - start_us;
 		if (attempt >= can.tx_max_tries || elapsed_us >= can.tx_budget_us) {
