@@ -81,6 +81,7 @@ void e2e_p01_rx_reset(e2e_p01_rx_t *rx)
 	rx->max_delta_counter = 0U;
 	rx->lost_data = 0U;
 	rx->wait_for_first_data = true;
+	rx->resync = false;
 	rx->status = E2E_P01_STATUS_NONEWDATA;
 }
 
@@ -109,6 +110,7 @@ static e2e_p01_status_t check_sequence(const e2e_p01_config_t *cfg,
 	}
 	if (rx->wait_for_first_data) {
 		rx->wait_for_first_data = false;
+		rx->resync = false;
 		rx->max_delta_counter = cfg->max_delta_counter;
 		rx->last_valid_counter = counter;
 		rx->lost_data = 0U;
@@ -120,11 +122,20 @@ static e2e_p01_status_t check_sequence(const e2e_p01_config_t *cfg,
 		return E2E_P01_STATUS_REPEATED;
 	}
 	if (delta > rx->max_delta_counter) {
+		/* Adopt the new sequence, but use nothing until the next frame
+		 * confirms it. */
+		rx->resync = true;
+		rx->max_delta_counter = cfg->max_delta_counter;
+		rx->last_valid_counter = counter;
 		return E2E_P01_STATUS_WRONGSEQUENCE;
 	}
 	rx->max_delta_counter = cfg->max_delta_counter;
 	rx->last_valid_counter = counter;
 	rx->lost_data = (uint8_t)(delta - 1U);
+	if (rx->resync) {
+		rx->resync = false;
+		return E2E_P01_STATUS_INITIAL;
+	}
 	return delta == 1U ? E2E_P01_STATUS_OK : E2E_P01_STATUS_OKSOMELOST;
 }
 

@@ -18,11 +18,18 @@
  *   - delta 0                                  -> REPEATED
  *   - delta 1                                  -> OK
  *   - 2 <= delta <= tolerated jump             -> OKSOMELOST, lost = delta-1
- *   - delta beyond the tolerated jump          -> WRONGSEQUENCE
- *   The receiver's last counter changes only on INITIAL, OK and OKSOMELOST.
- *   After a WRONGSEQUENCE the tolerated jump keeps growing with each call,
- *   so the stream is accepted again (OKSOMELOST) after at most 14 calls,
- *   as in P01; e2e_p01_rx_reset() forces a resync (next good frame INITIAL).
+ *   - delta beyond the tolerated jump          -> WRONGSEQUENCE, and the
+ *     receiver adopts that frame's counter as its new reference (resync);
+ *   - the next frame that continues the adopted sequence (delta within the
+ *     tolerated jump)                          -> INITIAL (usable)
+ *   So a sender that restarted its counter costs one frame, and a single
+ *   stray frame also costs the good frame after it; plain R4.0 P01 (no
+ *   resync) would instead reject every frame after a counter jump until
+ *   the counters wrap (up to 15 frames). This is P01's later SyncCounter
+ *   scheme with SyncCounterInit = 1, reported as INITIAL.
+ *   The reference counter otherwise changes only on INITIAL, OK and
+ *   OKSOMELOST. e2e_p01_rx_reset() forces a full restart (the next good
+ *   frame, whatever its counter, is INITIAL).
  *
  * A frame's content may be used ONLY when e2e_p01_status_usable() is true
  * (OK, OKSOMELOST, INITIAL). Every other status means "discard this frame".
@@ -41,7 +48,7 @@
 
 typedef enum {
 	E2E_P01_STATUS_OK = 0,        /* next expected counter                 */
-	E2E_P01_STATUS_INITIAL,       /* first good frame after init/reset     */
+	E2E_P01_STATUS_INITIAL,       /* first good frame after init/resync    */
 	E2E_P01_STATUS_OKSOMELOST,    /* accepted; rx->lost_data frames lost   */
 	E2E_P01_STATUS_REPEATED,      /* same counter again: discard           */
 	E2E_P01_STATUS_WRONGSEQUENCE, /* jump too large or counter 15: discard */
@@ -68,6 +75,7 @@ typedef struct {
 	uint8_t max_delta_counter;   /* currently tolerated jump            */
 	uint8_t lost_data;           /* frames lost, set on OKSOMELOST       */
 	bool wait_for_first_data;
+	bool resync;                 /* reference adopted from a WRONGSEQUENCE */
 	e2e_p01_status_t status;     /* result of the last check             */
 	uint32_t status_count[E2E_P01_STATUS_COUNT]; /* saturating, per status */
 } e2e_p01_rx_t;

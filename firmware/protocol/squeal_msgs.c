@@ -184,8 +184,8 @@ static uint32_t get_bits(const uint8_t *data, uint8_t start, uint8_t len)
 	for (k = 0U; k < len; k++) {
 		unsigned int bit = (unsigned int)start + k;
 
-		if (((data[bit / 8U] >> (bit % 8U)) & 1U) != 0U) {
-			value |= 1UL << k;
+		if ((((unsigned int)data[bit / 8U] >> (bit % 8U)) & 1U) != 0U) {
+			value |= (uint32_t)1U << k;
 		}
 	}
 	return value;

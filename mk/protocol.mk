@@ -1,0 +1,40 @@
+# SPDX-License-Identifier: MIT
+# firmware/protocol tests (the protocol sources themselves are compiled into
+# libfirmware.a by the top-level Makefile):
+#   build/test/tests/unit/test_protocol     cmocka, ASan+UBSan
+#   build/test/tests/protocol/emit_frames   packs+protects frames, prints the
+#                                           C descriptor table (host helper)
+#   tests/protocol/check_dbc_vs_c.py        C defines/descriptors == DBC
+#   tests/protocol/test_canmatrix_crosscheck.py  canmatrix decodes our frames
+
+PROTOCOL_TEST_BIN := build/test/tests/unit/test_protocol
+PROTOCOL_EMIT := build/test/tests/protocol/emit_frames
+
+$(PROTOCOL_TEST_BIN): build/test/app/tests/unit/test_protocol.o build/test/libfirmware.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka
+
+$(PROTOCOL_EMIT): build/test/app/tests/protocol/emit_frames.o build/test/libfirmware.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^
+
+# The Python checks run the emitter: build it first.
+tests/protocol/check_dbc_vs_c.py tests/protocol/test_canmatrix_crosscheck.py: $(PROTOCOL_EMIT)
+
+TEST_PROGS += $(PROTOCOL_TEST_BIN) tests/protocol/check_dbc_vs_c.py \
+	tests/protocol/test_canmatrix_crosscheck.py
+
+# The protocol layer must build for the ECUs too (freestanding, hard-float
+# Cortex-M4F and soft Cortex-M3), with the same warnings.
+PROTOCOL_SRCS := $(wildcard firmware/protocol/*.c)
+ARM_CC ?= arm-none-eabi-gcc
+build/arm-check/protocol.stamp: $(PROTOCOL_SRCS) $(wildcard firmware/protocol/*.h)
+	@mkdir -p $(@D)
+	for f in $(PROTOCOL_SRCS); do \
+		$(ARM_CC) $(WARN) $(FW_FLAGS) -Os -mcpu=cortex-m4 -mthumb -mfloat-abi=hard \
+			-mfpu=fpv4-sp-d16 $(FW_INC) -c $$f -o build/arm-check/m4-$$(basename $$f .c).o || exit 1; \
+		$(ARM_CC) $(WARN) $(FW_FLAGS) -Os -mcpu=cortex-m3 -mthumb -mfloat-abi=soft \
+			$(FW_INC) -c $$f -o build/arm-check/m3-$$(basename $$f .c).o || exit 1; \
+	done
+	touch $@
+ALL_TARGETS += build/arm-check/protocol.stamp
