@@ -43,6 +43,10 @@
 #include "sq_num.h"
 #include "squeal_model.h"
 
+/* math.h defines NAN and INFINITY as float constants. */
+#define D_NAN ((double)NAN)
+#define D_INF ((double)INFINITY)
+
 #define CLASS_BORDER_TOL 1e-3
 #define MAX_REPORTS 40
 
@@ -74,7 +78,7 @@ typedef struct {
 	squeal_criterion_t criterion;
 	double in[8]; /* C_V0 .. C_DMU */
 	squeal_state_t state;
-	double val[C_COUNT];  /* numeric columns; NAN where empty */
+	double val[C_COUNT];  /* numeric columns; D_NAN where empty */
 	bool has[C_COUNT];    /* column not empty */
 } vec_t;
 
@@ -223,7 +227,7 @@ static bool parse_line(char *line, vec_t *v)
 		if (i == C_STATE) {
 			continue;
 		}
-		v->val[i] = NAN;
+		v->val[i] = D_NAN;
 		if (f[i][0] == '\0') {
 			continue;
 		}
@@ -337,6 +341,10 @@ static double get_field(const squeal_result_t *r, int f)
 /* Failures counted per kind and field (F_COUNT: not about one field);
  * the first few of each are printed in full. */
 static size_t fail_tally[K_COUNT][F_COUNT + 1];
+
+static void report(const vec_t *v, const squeal_result_t *r, int ret,
+		   enum fail_kind kind, int field, const char *fmt, ...)
+	__attribute__((format(printf, 6, 7)));
 
 static void report(const vec_t *v, const squeal_result_t *r, int ret,
 		   enum fail_kind kind, int field, const char *fmt, ...)
@@ -823,17 +831,17 @@ static void test_params_check_rejects_each_field_outside_domain(void **state)
 		double good[3];
 	} cases[] = {
 		{ offsetof(squeal_params_t, mass_kg), SQUEAL_Q_MASS,
-		  { 0.0, -1.0, 10001.0, NAN, INFINITY, -INFINITY }, { 10000.0, 1e-3, 1.0 } },
+		  { 0.0, -1.0, 10001.0, D_NAN, D_INF, -D_INF }, { 10000.0, 1e-3, 1.0 } },
 		{ offsetof(squeal_params_t, omega0_radps), SQUEAL_Q_OMEGA0,
-		  { 0.0, -1.0, 500001.0, NAN, INFINITY, -INFINITY }, { 500000.0, 1.0, 5000.0 } },
+		  { 0.0, -1.0, 500001.0, D_NAN, D_INF, -D_INF }, { 500000.0, 1.0, 5000.0 } },
 		{ offsetof(squeal_params_t, damping), SQUEAL_Q_DAMPING,
-		  { 0.0, -0.5, 1.0 + 1e-6, NAN, INFINITY, -INFINITY }, { 1.0, 1e-6, 0.023 } },
+		  { 0.0, -0.5, 1.0 + 1e-6, D_NAN, D_INF, -D_INF }, { 1.0, 1e-6, 0.023 } },
 		{ offsetof(squeal_params_t, slope_spm), SQUEAL_Q_SLOPE,
-		  { -1e-3, -1.0, 20.001, NAN, INFINITY, -INFINITY }, { 0.0, 20.0, 2.0 } },
+		  { -1e-3, -1.0, 20.001, D_NAN, D_INF, -D_INF }, { 0.0, 20.0, 2.0 } },
 		{ offsetof(squeal_params_t, mu_inf), SQUEAL_Q_MU,
-		  { -1e-3, -1.0, 1.501, NAN, INFINITY, -INFINITY }, { 0.0, 1.5, 0.25 } },
+		  { -1e-3, -1.0, 1.501, D_NAN, D_INF, -D_INF }, { 0.0, 1.5, 0.25 } },
 		{ offsetof(squeal_params_t, delta_mu), SQUEAL_Q_MU,
-		  { -1.501, -0.26, 1.501, NAN, INFINITY, -INFINITY }, { -0.25, 1.5, 0.0 } },
+		  { -1.501, -0.26, 1.501, D_NAN, D_INF, -D_INF }, { -0.25, 1.5, 0.0 } },
 	};
 	size_t i;
 	size_t j;
@@ -883,8 +891,8 @@ static void test_conversion_helper_saturates_out_of_domain(void **state)
 	if (sq_num_is_fixed()) {
 		assert_int_equal(sq_num_from_double(1e9, SQUEAL_Q_V0), INT32_MAX);
 		assert_int_equal(sq_num_from_double(-1e9, SQUEAL_Q_V0), INT32_MIN);
-		assert_int_equal(sq_num_from_double(NAN, SQUEAL_Q_V0), INT32_MIN);
-		assert_int_equal(sq_num_from_double(INFINITY, SQUEAL_Q_FORCE), INT32_MAX);
+		assert_int_equal(sq_num_from_double(D_NAN, SQUEAL_Q_V0), INT32_MIN);
+		assert_int_equal(sq_num_from_double(D_INF, SQUEAL_Q_FORCE), INT32_MAX);
 		assert_int_equal(sq_num_from_double(0.5 * 0x1p-20, SQUEAL_Q_V0), 1);
 		assert_int_equal(sq_num_from_double(0.49 * 0x1p-20, SQUEAL_Q_V0), 0);
 		assert_int_equal(sq_num_from_double(1.5, SQUEAL_Q_MU), 3 << 29);
@@ -898,7 +906,7 @@ static void test_conversion_helper_saturates_out_of_domain(void **state)
 		assert_true(sq_num_field_max(SQUEAL_Q_SLOPE) > 20.0);
 	} else {
 		assert_true(isinf(sq_num_to_double(sq_num_from_double(1e39, 0), 0)));
-		assert_true(isnan(sq_num_to_double(sq_num_from_double(NAN, 0), 0)));
+		assert_true(isnan(sq_num_to_double(sq_num_from_double(D_NAN, 0), 0)));
 		assert_true(sq_num_to_double(sq_num_from_double(3.4028235e38, 0), 0) ==
 			    sq_num_field_max(0));
 	}
