@@ -119,6 +119,10 @@ void hal_idle_until(uint64_t deadline_us)
 
 	watchdog_check(now_us);
 	if (stop_flag != NULL && *stop_flag) {
+		/* The signal's byte must not wake a later idle early. */
+		if (wake_pipe[0] >= 0) {
+			drain_wake_pipe();
+		}
 		return;
 	}
 	if (deadline_us <= now_us) {

@@ -1,0 +1,17 @@
+# SPDX-License-Identifier: MIT
+# Tests on real SocketCAN: hal/linux's self-test in the QEMU guest of
+# tests/vcan/guest.sh, and hal/linux's host test (no CAN needed).
+VCAN_SELFTEST := build/test/vcan/selftest_hal_linux
+VCAN_HOSTTEST := build/test/vcan/test_hal_linux_host
+
+$(VCAN_SELFTEST): build/test/app/tests/vcan/selftest_hal_linux.o build/test/libhal_linux.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^
+
+$(VCAN_HOSTTEST): build/test/app/tests/vcan/test_hal_linux_host.o build/test/libhal_linux.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka
+
+# The guest wrapper builds its binary itself too; prebuilding keeps make -j.
+test: $(VCAN_SELFTEST)
+TEST_PROGS += $(VCAN_HOSTTEST) tests/vcan/run-selftest.sh
