@@ -225,6 +225,14 @@ int oscsim_cycle_backward_plain(double damping, double ln_q, double s,
 				oscsim_cycle_t *out);
 
 /*
+ * Trace one backward revolution of the sliding system from (r, 0) with a
+ * sample every dt (tau units): fn(ctx, tau, y) with y = (u, u'), tau <= 0.
+ * Used to draw the unstable cycle. Returns SQ_OK or a negative code.
+ */
+int oscsim_cycle_trace(double damping, double ln_q, double r, double dt,
+		       oscsim_sample_fn fn, void *ctx);
+
+/*
  * Forward-time linear check: ratio of the section amplitude after one
  * forward revolution to the start, from the small perturbation r = 1e-5.
  * > 1 means the steady state is unstable (grows).

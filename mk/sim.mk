@@ -1,0 +1,25 @@
+# SPDX-License-Identifier: MIT
+# The oscillator simulator (host-sim/oscsim): ground truth for the model.
+#   build/<v>/liboscsim.a      simulator + map/simulate commands (needs
+#                              libfirmware.a and host-sim/sim_num.o of <v>)
+#   build/<v>/oscsim           stand-alone driver: oscsim map|simulate
+#   make plots                 pictures into build/plots/, PNGs to docs/img/
+# For squeal-sim: link $(OSCSIM_LIB_host) and call oscsim_cmd_map /
+# oscsim_cmd_simulate (host-sim/oscsim/oscsim_cmd.h).
+
+OSCSIM_SRCS := host-sim/oscsim/oscsim.c host-sim/oscsim/oscsim_map.c \
+	host-sim/oscsim/oscsim_cmd.c
+OSCSIM_VARIANTS := host host-fixed test
+OSCSIM_NUM_SRC := host-sim/sim_num.c
+
+define oscsim_rules
+build/$(1)/liboscsim.a: $$(patsubst %.c,build/$(1)/app/%.o,$$(OSCSIM_SRCS))
+	@rm -f $$@
+	ar rcs $$@ $$^
+OSCSIM_LIB_$(1) := build/$(1)/liboscsim.a
+build/$(1)/oscsim: build/$(1)/app/host-sim/oscsim/oscsim_main.o build/$(1)/liboscsim.a build/$(1)/app/$(OSCSIM_NUM_SRC:.c=.o) build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(OSCSIM_VARIANTS),$(eval $(call oscsim_rules,$(v))))
+
+ALL_TARGETS += build/host/oscsim
