@@ -27,3 +27,6 @@ TEST_PROGS += tests/cli/test_classify_cli.py
 golden:
 	$(PYTHON) tests/reference/squeal_reference.py --self-check
 	$(PYTHON) tests/reference/gen_model_vectors.py -o tests/golden/model_vectors.csv
+
+# The reference against model.md, and the golden file against the reference.
+TEST_PROGS += tests/reference/check_golden.py

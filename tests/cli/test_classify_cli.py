@@ -86,7 +86,8 @@ def tolerance(build, crit, h, name, want, x):
     d = dlnq(build, h)
     rel = REL[build]
     q = FIELDS[name][2]
-    lsb2 = 2.0 * lsb(build, q)
+    # 2 LSB in fixed; FLT_MIN in float (no relative precision below it)
+    lsb2 = 2.0 * lsb(build, q) if build == "fixed" else 1.1754943508222875e-38
     a = h["slope"]
     if name == "ln_q":
         return d + lsb2

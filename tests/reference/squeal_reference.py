@@ -282,6 +282,14 @@ def self_check():
     from scipy.special import i1
     for x in (1e-6, 0.1, 1.0, 1.999999, 2.0, 2.000001, 5.0, 30.0):
         check("g(%g) vs ln(2 i1(x)/x)" % x, g_ratio(x), math.log(2.0 * i1(x) / x), 1e-13)
+    # I1 from its integral definition, I1(x) = (1/pi) int_0^pi e^(x cos t) cos t dt,
+    # independent of scipy.special: checks the ive-based branch of g.
+    from scipy.integrate import quad
+    for x in (0.5, 2.4868, 10.0, 60.0):
+        val, _ = quad(lambda th: math.exp(x * (math.cos(th) - 1.0)) * math.cos(th), 0.0, math.pi,
+                      epsabs=0.0, epsrel=1e-13, limit=200)
+        g_int = math.log(2.0 * val / math.pi / x) + x
+        check("g(%g) vs integral definition of I1" % x, g_ratio(x), g_int, 1e-11 * max(1.0, x))
     # Inversion is consistent for tiny and huge t.
     for t in (1e-12, 1e-6, 0.5, 10.0, 300.0, 2500.0):
         x = solve_exact_x(t)

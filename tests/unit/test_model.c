@@ -24,11 +24,13 @@
  *     border x ~ sqrt(8 (ln Q - ln 1/2)), so x itself is only known to
  *     sqrt(8 DLNQ) there; A_LC, trigger and basin are x times an exact
  *     factor (1e6/(a w0), 1/a, 1/s) and get dx times that factor;
- *   plus 2 LSB of the field's Q-format in the fixed build.
+ *   plus 2 LSB of the field's Q-format in the fixed build, FLT_MIN in the
+ *   float build (below the normal range a float has no relative precision).
  * The class must equal the reference wherever border_dist > 1e-3 (closer,
  * any of stable/bistable/unstable is accepted, but the flags must agree
  * with the class returned).
  */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -425,7 +427,10 @@ static double tolerance(const vec_t *v, int f, double ref)
 	double a = held(v, 2);
 	double v0 = held(v, 0);
 	double w0 = held(v, 4);
-	double lsb2 = 2.0 * sq_num_lsb(fields[f].q);
+	/* Floor: 2 LSB of the fixed format; in float, FLT_MIN: values below
+	 * the normal range have no relative precision left and an FPU in
+	 * flush-to-zero mode (as Cortex-M4F code often runs) makes them 0. */
+	double lsb2 = sq_num_is_fixed() ? 2.0 * sq_num_lsb(fields[f].q) : (double)FLT_MIN;
 	double x = v->val[C_CYCLE_X];
 
 	switch (f) {
