@@ -18,7 +18,7 @@ CC := gcc
 endif
 NUMERIC ?= float
 
-FW_DIRS := firmware/common firmware/model firmware/protocol firmware/monitor
+FW_DIRS := firmware/common firmware/model firmware/protocol firmware/monitor firmware/app
 FW_SRCS := $(sort $(wildcard $(addsuffix /*.c,$(FW_DIRS))))
 FW_INC := $(addprefix -I,$(FW_DIRS)) -Ihal
 

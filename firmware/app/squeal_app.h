@@ -10,6 +10,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "monitor.h"
+
 /* Load calibration through the HAL (defaults if none or corrupt), set CAN
  * filters, start the watchdog. Returns SQ_OK or a negative SQ_E* code
  * (the app still runs with defaults and reports the fault). */
@@ -22,5 +24,12 @@ uint64_t squeal_app_poll(void);
 /* init, then poll + hal_idle_until() until *stop becomes true (never, on the
  * ECU). Returns the init status. */
 int squeal_main(volatile const bool *stop);
+
+/* The running monitor, read-only: host tools print its counters and tests
+ * inspect it. */
+const monitor_t *squeal_app_monitor(void);
+
+/* What squeal_app_init() returned. */
+int squeal_app_init_status(void);
 
 #endif /* SQUEAL_APP_H */
