@@ -15,6 +15,15 @@
  *
  * Single-threaded: call everything from the firmware's thread (the signal
  * handlers only set a flag and write one byte to a pipe).
+ *
+ * A Linux ECU main, in outline:
+ *	static volatile bool stop;
+ *	hal_linux_install_signal_handlers(&stop);   SIGINT/SIGTERM end the loop
+ *	hal_linux_set_calib_path("squeal.cal");
+ *	if (hal_linux_open("vcan0", NULL) != SQ_OK)
+ *		fprintf(stderr, "%s\n", hal_linux_strerror()), exit(1);
+ *	squeal_main(&stop);                          poll + hal_idle_until
+ *	hal_linux_close();
  */
 #ifndef HAL_LINUX_H
 #define HAL_LINUX_H
@@ -100,10 +109,17 @@ const char *hal_linux_strerror(void);
 int hal_linux_install_signal_handlers(volatile bool *stop);
 
 /* The software watchdog (hal_watchdog_start/kick): there is no reset line on
- * a Linux process, so it only reports. hal_idle_until() and this function
- * check the deadline; an expiry is sticky and counted. */
+ * a Linux process, so it reports. hal_idle_until() and this function check
+ * the deadline; an expiry is counted, printed once on stderr and sticky until
+ * the next hal_watchdog_start(). */
 bool hal_linux_watchdog_expired(void);
 uint32_t hal_linux_watchdog_expiries(void);
+
+/* When on, an expiry also sets the stop flag given to
+ * hal_linux_install_signal_handlers(), so squeal_main() returns and the
+ * program can exit with an error: the Linux analogue of a watchdog reset.
+ * Default off (report only). */
+void hal_linux_watchdog_stop_on_expiry(bool on);
 
 /* Convert a CLOCK_REALTIME instant (kernel socket timestamps) to the
  * hal_time_us() base, with the offset between the clocks read now. */

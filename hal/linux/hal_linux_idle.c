@@ -35,6 +35,7 @@ static uint32_t wdg_timeout_us;
 static uint64_t wdg_last_kick_us;
 static bool wdg_expired;
 static uint32_t wdg_expiries;
+static bool wdg_stop_on_expiry;
 
 static void on_stop_signal(int signo)
 {
@@ -105,6 +106,9 @@ static void watchdog_check(uint64_t now_us)
 		wdg_expiries++;
 		(void)fprintf(stderr, "hal_linux: watchdog expired: no kick for %llu us (timeout %u us)\n",
 			      (unsigned long long)(now_us - wdg_last_kick_us), wdg_timeout_us);
+		if (wdg_stop_on_expiry && stop_flag != NULL) {
+			*stop_flag = true;
+		}
 	}
 }
 
@@ -162,6 +166,8 @@ int hal_watchdog_start(uint32_t timeout_ms)
 	wdg_timeout_us = timeout_ms * 1000U;
 	wdg_last_kick_us = hal_time_us();
 	wdg_running = true;
+	/* A new start is a new watchdog (as after a reset); the count stays. */
+	wdg_expired = false;
 	return SQ_OK;
 }
 
@@ -179,4 +185,9 @@ bool hal_linux_watchdog_expired(void)
 uint32_t hal_linux_watchdog_expiries(void)
 {
 	return wdg_expiries;
+}
+
+void hal_linux_watchdog_stop_on_expiry(bool on)
+{
+	wdg_stop_on_expiry = on;
 }

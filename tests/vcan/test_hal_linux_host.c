@@ -203,6 +203,29 @@ static void test_watchdog_reports_a_missed_kick(void **state)
 	assert_int_equal(hal_linux_watchdog_expiries(), 1U);
 }
 
+static void test_watchdog_expiry_can_stop_the_loop(void **state)
+{
+	static volatile bool stop;
+	uint64_t deadline;
+
+	(void)state;
+	stop = false;
+	assert_int_equal(hal_linux_install_signal_handlers(&stop), SQ_OK);
+	hal_linux_watchdog_stop_on_expiry(true);
+	/* Restarting re-arms the sticky flag; the count goes on. */
+	assert_int_equal(hal_watchdog_start(20U), SQ_OK);
+	assert_false(hal_linux_watchdog_expired());
+	deadline = hal_time_us() + 3000000U;
+	while (!stop && hal_time_us() < deadline) {
+		hal_idle_until(deadline);
+	}
+	assert_true(stop);
+	assert_int_equal(hal_linux_watchdog_expiries(), 2U);
+	hal_linux_watchdog_stop_on_expiry(false);
+	signal(SIGINT, SIG_DFL);
+	signal(SIGTERM, SIG_DFL);
+}
+
 static char tmpdir[64];
 static char calib_file[128];
 
@@ -336,6 +359,7 @@ int main(void)
 		cmocka_unit_test(test_idle_sleeps_to_the_deadline_without_can),
 		cmocka_unit_test(test_sigterm_sets_stop_and_wakes_idle),
 		cmocka_unit_test(test_watchdog_reports_a_missed_kick),
+		cmocka_unit_test(test_watchdog_expiry_can_stop_the_loop),
 		cmocka_unit_test_setup_teardown(test_calib_file_roundtrip_and_errors, calib_setup,
 						calib_teardown),
 		cmocka_unit_test_setup_teardown(test_calib_unwritable_place_is_eio_and_a_fault,
