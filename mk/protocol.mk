@@ -38,3 +38,10 @@ build/arm-check/protocol.stamp: $(PROTOCOL_SRCS) $(wildcard firmware/protocol/*.
 	done
 	touch $@
 ALL_TARGETS += build/arm-check/protocol.stamp
+
+# Host figures (release build): make bench
+PROTOCOL_BENCH := build/host/tests/protocol/bench_protocol
+$(PROTOCOL_BENCH): build/host/app/tests/protocol/bench_protocol.o build/host/libfirmware.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_host) -o $@ $^
+BENCH_PROGS += $(PROTOCOL_BENCH)
