@@ -96,3 +96,6 @@ awk -v fe="${med[fixed.exact]}" -v fle="${med[float.exact]}" \
 	-v fc="${med[fixed.cubic]}" -v flc="${med[float.cubic]}" 'BEGIN {
 	printf "ratio fixed/float: exact %.2f, cubic %.2f\n", fe / fle, fc / flc
 	printf "ratio cubic/exact: float %.2f, fixed %.2f\n", flc / fle, fc / fe }'
+awk '$1 == "brute" && $2 == "ns/decision" {
+	printf "brute force per decision: mean %.2f ms, median %.2f ms, min %.2f ms, max %.2f ms (the column and ratio use the mean)\n",
+		$4 / 1e6, $6 / 1e6, $8 / 1e6, $10 / 1e6 }' "$tmp/brute"
