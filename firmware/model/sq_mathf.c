@@ -161,4 +161,84 @@ float sq_sqrtf(float x)
 	return sqrt_normal(x);
 }
 
+sq_xf_t sq_xf_from(float x)
+{
+	f32_bits_t v = { .f = x };
+	sq_xf_t r = { 0.0f, 0 };
+
+	if (!(x > 0.0f) || !sq_isfinitef(x)) {
+		return r;
+	}
+	if (((v.u >> 23) & 0xffU) == 0U) {
+		v.f = x * 8388608.0f; /* subnormal: 2^23 */
+		r.e = -23;
+	}
+	r.e += (int32_t)((v.u >> 23) & 0xffU) - 127;
+	v.u = (v.u & 0x007fffffU) | 0x3f800000U;
+	r.m = v.f;
+	return r;
+}
+
+static sq_xf_t xf_norm(float m, int32_t e)
+{
+	sq_xf_t r = { m, e };
+
+	if (!(m > 0.0f)) {
+		r.m = 0.0f;
+		r.e = 0;
+		return r;
+	}
+	if (r.m >= 2.0f) {
+		r.m *= 0.5f;
+		r.e += 1;
+	} else if (r.m < 1.0f) {
+		r.m *= 2.0f;
+		r.e -= 1;
+	}
+	return r;
+}
+
+sq_xf_t sq_xf_exp(float y)
+{
+	float r;
+	const int32_t k = exp_reduce(y, &r);
+
+	return xf_norm(1.0f + expm1_reduced(r), k);
+}
+
+sq_xf_t sq_xf_mul(sq_xf_t a, sq_xf_t b)
+{
+	return xf_norm(a.m * b.m, a.e + b.e);
+}
+
+sq_xf_t sq_xf_div(sq_xf_t a, sq_xf_t b)
+{
+	if (!(b.m > 0.0f)) {
+		sq_xf_t inf = { 1.0f, 1 << 20 };
+
+		return inf;
+	}
+	return xf_norm(a.m / b.m, a.e - b.e);
+}
+
+float sq_xf_to_float(sq_xf_t a, bool *sat)
+{
+	*sat = false;
+	if (!(a.m > 0.0f)) {
+		return 0.0f;
+	}
+	if (a.e > 127) {
+		*sat = true;
+		return FLT_MAX;
+	}
+	if (a.e >= -126) {
+		return a.m * pow2i(a.e);
+	}
+	if (a.e >= -190) {
+		/* two steps: the second rounds once into the subnormal range */
+		return (a.m * pow2i(a.e + 64)) * pow2i(-64);
+	}
+	return 0.0f;
+}
+
 #endif /* !SQUEAL_NUMERIC_FIXED */

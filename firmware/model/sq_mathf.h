@@ -9,6 +9,7 @@
 #define SQ_MATHF_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 #define SQ_LN2F 0.693147180559945309f
 
@@ -24,5 +25,23 @@ float sq_expf(float x);
 float sq_expm1f(float x);
 /* square root, x >= 0 finite; 0 otherwise */
 float sq_sqrtf(float x);
+
+/*
+ * Extended-range non-negative numbers m * 2^e (m in [1, 2), or m = 0) for
+ * the quotients and products of the model's outputs, whose intermediates may
+ * leave float's range although the result fits (or must be reported as not
+ * fitting). Each operation rounds like one float operation.
+ */
+typedef struct {
+	float m;
+	int32_t e;
+} sq_xf_t;
+
+sq_xf_t sq_xf_from(float x);          /* x >= 0 finite (subnormals too) */
+sq_xf_t sq_xf_exp(float y);           /* e^y for |y| < 2^20            */
+sq_xf_t sq_xf_mul(sq_xf_t a, sq_xf_t b);
+sq_xf_t sq_xf_div(sq_xf_t a, sq_xf_t b); /* b != 0                      */
+/* as a float: FLT_MAX and *sat = true beyond its range; gradual underflow */
+float sq_xf_to_float(sq_xf_t a, bool *sat);
 
 #endif /* SQ_MATHF_H */

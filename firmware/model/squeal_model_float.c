@@ -174,19 +174,6 @@ static float solve_exact_cycle(float lq2)
 	return x;
 }
 
-/* num / den for num >= 0, den > 0; FLT_MAX and *sat = true if it overflows */
-static float div_sat(float num, float den, bool *sat)
-{
-	const float q = num / den;
-
-	if (!sq_isfinitef(q)) {
-		*sat = true;
-		return FLT_MAX;
-	}
-	*sat = false;
-	return q;
-}
-
 static void result_clear(squeal_result_t *out, squeal_state_t state)
 {
 	out->state = state;
@@ -201,51 +188,49 @@ static void result_clear(squeal_result_t *out, squeal_state_t state)
 	out->basin_ratio = 0.0f;
 }
 
-/* Cycle amplitude and everything derived from it, for lq2 > 0. */
-static void fill_cycle(const squeal_params_t *p, float s, float lq2,
-		       squeal_criterion_t criterion, squeal_result_t *out)
+/* Store an extended-range value into a field, flagging it when it does not
+ * fit a float. */
+static float put(sq_xf_t v, squeal_result_t *out, uint32_t sat_flag)
 {
-	float x;
 	bool sat;
+	const float f = sq_xf_to_float(v, &sat);
+
+	if (sat) {
+		out->flags |= sat_flag;
+	}
+	return f;
+}
+
+/* Cycle amplitude and everything derived from it, for lq2 > 0. The cycle x
+ * is kept in extended range so that x / a, x / (a w0) and x / (a v0) are
+ * right (or flagged) even where x itself or an intermediate overflows. */
+static void fill_cycle(const squeal_params_t *p, const squeal_point_t *pt,
+		       float lq2, squeal_criterion_t criterion,
+		       squeal_result_t *out)
+{
+	const sq_xf_t a = sq_xf_from(p->slope_spm);
+	sq_xf_t x;
 
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
-		/* 4 sqrt(Q - 1/2) = sqrt(8 (2Q - 1)) / ... = sqrt(8 expm1(lq2));
-		 * for large lq2, sqrt(8) e^(lq2/2) avoids overflowing 8 e^lq2 */
+		/* 4 sqrt(Q - 1/2) = sqrt(8 (e^lq2 - 1)); for large lq2 the -1
+		 * is below float resolution and sqrt(8) e^(lq2/2) cannot
+		 * overflow in extended range */
 		if (lq2 < 20.0f) {
-			x = sq_sqrtf(8.0f * sq_expm1f(lq2));
-		} else if (lq2 < 170.0f) {
-			x = 2.82842712475f * sq_expf(0.5f * lq2);
+			x = sq_xf_from(sq_sqrtf(8.0f * sq_expm1f(lq2)));
 		} else {
-			x = FLT_MAX;
-			out->flags |= SQUEAL_SAT_CYCLE_X;
+			x = sq_xf_mul(sq_xf_from(2.82842712475f), sq_xf_exp(0.5f * lq2));
 		}
 	} else {
-		x = solve_exact_cycle(lq2);
+		x = sq_xf_from(solve_exact_cycle(lq2));
 	}
-	out->cycle_x = x;
-	out->flags |= SQUEAL_HAS_CYCLE;
-
-	out->trigger_velocity_mps = div_sat(x, p->slope_spm, &sat);
-	if (sat) {
-		out->flags |= SQUEAL_SAT_TRIGGER;
-	}
-	out->lc_amplitude_um = div_sat(out->trigger_velocity_mps,
-				       p->omega0_radps, &sat);
-	if (!sat) {
-		out->lc_amplitude_um = div_sat(out->lc_amplitude_um,
-					       1.0f / UM_PER_M, &sat);
-	}
-	if (sat || ((out->flags & SQUEAL_SAT_TRIGGER) != 0U)) {
-		out->lc_amplitude_um = FLT_MAX;
-		out->flags |= SQUEAL_SAT_AMPLITUDE;
-	}
-	if (s > 0.0f) {
-		out->basin_ratio = div_sat(x, s, &sat);
-		out->flags |= SQUEAL_HAS_BASIN;
-		if (sat) {
-			out->flags |= SQUEAL_SAT_BASIN;
-		}
-	}
+	out->flags |= SQUEAL_HAS_CYCLE | SQUEAL_HAS_BASIN;
+	out->cycle_x = put(x, out, SQUEAL_SAT_CYCLE_X);
+	out->trigger_velocity_mps = put(sq_xf_div(x, a), out, SQUEAL_SAT_TRIGGER);
+	out->lc_amplitude_um = put(sq_xf_div(sq_xf_mul(x, sq_xf_from(UM_PER_M)),
+					     sq_xf_mul(a, sq_xf_from(p->omega0_radps))),
+				   out, SQUEAL_SAT_AMPLITUDE);
+	out->basin_ratio = put(sq_xf_div(x, sq_xf_mul(a, sq_xf_from(pt->v0_mps))),
+			       out, SQUEAL_SAT_BASIN);
 }
 
 int squeal_model_classify(const squeal_params_t *params,
@@ -257,7 +242,6 @@ int squeal_model_classify(const squeal_params_t *params,
 	float s;
 	float c2;
 	float lq2;
-	float ln_force;
 	bool stable;
 
 	if ((params == 0) || (point == 0) || (out == 0)) {
@@ -281,9 +265,8 @@ int squeal_model_classify(const squeal_params_t *params,
 	}
 
 	s = p->slope_spm * point->v0_mps;
-	ln_force = sq_lnf(point->force_n);
 	c2 = SQ_LN2F + sq_lnf(p->damping) + sq_lnf(p->omega0_radps) +
-	     sq_lnf(p->mass_kg) - sq_lnf(p->slope_spm) - ln_force -
+	     sq_lnf(p->mass_kg) - sq_lnf(p->slope_spm) - sq_lnf(point->force_n) -
 	     sq_lnf(p->delta_mu);
 	lq2 = c2 + s;
 	out->ln_q = lq2 - SQ_LN2F;
@@ -291,24 +274,17 @@ int squeal_model_classify(const squeal_params_t *params,
 
 	/* Hopf border in speed: lq2 = 0 at v0 = -c2 / a */
 	if (c2 < 0.0f) {
-		bool sat;
-
-		out->hopf_v0_mps = div_sat(-c2, p->slope_spm, &sat);
-		out->hopf_margin_mps = point->v0_mps - out->hopf_v0_mps;
 		out->flags |= SQUEAL_HAS_HOPF_V0;
-		if (sat) {
-			out->hopf_margin_mps = -FLT_MAX;
-			out->flags |= SQUEAL_SAT_HOPF_V0;
-		}
+		out->hopf_v0_mps = put(sq_xf_div(sq_xf_from(-c2), sq_xf_from(p->slope_spm)),
+				       out, SQUEAL_SAT_HOPF_V0);
+		out->hopf_margin_mps = ((out->flags & SQUEAL_SAT_HOPF_V0) != 0U) ?
+			-FLT_MAX : point->v0_mps - out->hopf_v0_mps;
 	}
-	/* Hopf border in force: N_H = N e^lq2 */
+	/* Hopf border in force: N_H = 2 Q N = N e^lq2 (extended range: N may
+	 * be tiny and e^lq2 huge) */
 	out->flags |= SQUEAL_HAS_HOPF_FORCE;
-	if (lq2 + ln_force < 88.0f) {
-		out->hopf_force_n = point->force_n * sq_expf(lq2);
-	} else {
-		out->hopf_force_n = FLT_MAX;
-		out->flags |= SQUEAL_SAT_HOPF_FORCE;
-	}
+	out->hopf_force_n = put(sq_xf_mul(sq_xf_from(point->force_n), sq_xf_exp(lq2)),
+				out, SQUEAL_SAT_HOPF_FORCE);
 
 	if (!(lq2 > 0.0f)) {
 		out->state = SQUEAL_STATE_UNSTABLE;
@@ -325,7 +301,7 @@ int squeal_model_classify(const squeal_params_t *params,
 		stable = c2 >= h;
 	}
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
-	fill_cycle(p, s, lq2, criterion, out);
+	fill_cycle(p, point, lq2, criterion, out);
 
 	/* The class is decided by the border comparison above; the basin ratio
 	 * comes from the solved cycle. Within the solver's last bit they could
