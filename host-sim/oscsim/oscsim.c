@@ -396,6 +396,7 @@ static int crossed(double g0, double g1, int dir)
 }
 
 #define OSCSIM_MAX_EVENTS 4U
+#define EVENT_SUBSTEPS 4U
 
 int oscsim_dp5_advance(oscsim_dp5_t *me, double t_end, oscsim_watch_t *watch)
 {
@@ -435,15 +436,36 @@ int oscsim_dp5_advance(oscsim_dp5_t *me, double t_end, oscsim_watch_t *watch)
 		for (k = 0; k < n_ev; k++) {
 			const oscsim_event_t *ev = &watch->ev[k];
 			double g1 = ev->fn(me->t, me->y, ev->ctx);
+			double ta = me->t_old, ga = g_old[k];
+			unsigned int j;
 
-			if (crossed(g_old[k], g1, ev->dir)) {
-				double tr = event_locate(me, ev, me->t_old,
-							 g_old[k], me->t, g1);
+			/* look inside the step too: a graze (g dips through
+			 * zero and back within one step) leaves no sign change
+			 * at the ends */
+			for (j = 1; j <= EVENT_SUBSTEPS; j++) {
+				double tb, gb;
 
-				if (hit < 0 || (double)dir * (tr - t_stop) < 0.0) {
-					hit = (int)k;
-					t_stop = tr;
+				if (j == EVENT_SUBSTEPS) {
+					tb = me->t;
+					gb = g1;
+				} else {
+					tb = me->t_old + me->h_last * (double)j /
+								 (double)EVENT_SUBSTEPS;
+					gb = event_at(me, ev, tb);
 				}
+				if (crossed(ga, gb, ev->dir)) {
+					double tr = event_locate(me, ev, ta, ga,
+								 tb, gb);
+
+					if (hit < 0 ||
+					    (double)dir * (tr - t_stop) < 0.0) {
+						hit = (int)k;
+						t_stop = tr;
+					}
+					break;
+				}
+				ta = tb;
+				ga = gb;
 			}
 			g_old[k] = g1;
 		}
@@ -594,6 +616,12 @@ static int revolve(const oscsim_slide_t *sl, double s, double r,
 		if (rc == 1) {
 			out->v_max = fmax(out->v_max, dp.y[1]);
 			out->v_min = fmin(out->v_min, dp.y[1]);
+			if (dp.y[1] >= s) {
+				/* a peak located exactly above the line: the
+				 * crossing grazed inside a step */
+				out->hit_stick = 1;
+				break;
+			}
 			continue;
 		}
 		/* rc == 2: reached the stick line */
