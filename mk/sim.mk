@@ -28,3 +28,14 @@ ALL_TARGETS += build/host/oscsim
 build/test/test_oscsim: build/test/app/tests/sim/test_oscsim.o build/test/liboscsim.a
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
 TEST_PROGS += build/test/test_oscsim
+
+# Agreement of the model (float and fixed) with simulation over the (a, v0)
+# plane, 40 x 40 per brake. Release builds: the sweep is the heavy part and
+# the simulator already runs under the sanitizers in test_oscsim.
+OSCSIM_AGREE_VARIANTS := host host-fixed
+define oscsim_agree_rules
+build/$(1)/test_agreement: build/$(1)/app/tests/sim/test_agreement.o build/$(1)/liboscsim.a build/$(1)/app/$(OSCSIM_NUM_SRC:.c=.o) build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,$(OSCSIM_AGREE_VARIANTS),$(eval $(call oscsim_agree_rules,$(v))))
+TEST_PROGS += $(foreach v,$(OSCSIM_AGREE_VARIANTS),build/$(v)/test_agreement)
