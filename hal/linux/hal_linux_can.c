@@ -45,6 +45,7 @@
 #include <linux/can/raw.h>
 
 #include "hal_linux.h"
+#include "hal_vbus.h"
 
 #ifndef CAN_ERR_CNT
 #define CAN_ERR_CNT 0x00000200U
@@ -111,6 +112,9 @@ static int apply_filter(void)
 
 int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
 {
+	if (hal_vbus_active()) {
+		return hal_vbus_can_set_rx_filter(ids, count);
+	}
 	uint32_t i;
 
 	if (count > HAL_CAN_MAX_FILTERS || (ids == NULL && count > 0U)) {
@@ -272,6 +276,9 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 
 int hal_can_get_status(hal_can_status_t *status)
 {
+	if (hal_vbus_active()) {
+		return hal_vbus_can_get_status(status);
+	}
 	if (status == NULL) {
 		return SQ_EINVAL;
 	}
@@ -383,6 +390,9 @@ static uint64_t frame_stamp_us(const struct msghdr *msg)
 
 int hal_can_receive(hal_can_frame_t *frame)
 {
+	if (hal_vbus_active()) {
+		return hal_vbus_can_receive(frame);
+	}
 	int skipped;
 
 	if (frame == NULL) {
@@ -487,6 +497,9 @@ static void note_tx_time(uint64_t start_us)
 
 int hal_can_send(const hal_can_frame_t *frame)
 {
+	if (hal_vbus_active()) {
+		return hal_vbus_can_send(frame);
+	}
 	struct can_frame cf;
 	uint64_t start_us;
 	uint32_t attempt;
