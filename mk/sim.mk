@@ -39,3 +39,7 @@ build/$(1)/test_agreement: build/$(1)/app/tests/sim/test_agreement.o build/$(1)/
 endef
 $(foreach v,$(OSCSIM_AGREE_VARIANTS),$(eval $(call oscsim_agree_rules,$(v))))
 TEST_PROGS += $(foreach v,$(OSCSIM_AGREE_VARIANTS),build/$(v)/test_agreement)
+
+# Cross-check against scipy's solve_ivp and model.md section 6.
+tests/sim/test_oscsim_scipy.py: build/host/oscsim
+TEST_PROGS += tests/sim/test_oscsim_scipy.py
