@@ -100,13 +100,13 @@ static void input_accept(monitor_t *me, input_t *in, int32_t value,
 	const int64_t x_q8 = (int64_t)value * 256;
 
 	if ((in->faults & INPUT_FAULT_NEVER_SEEN) != 0U) {
-		in->filtered_q8 = (int32_t)x_q8; /* start the filter at the value */
+		in->filtered_q8 = x_q8; /* start the filter at the value */
 	} else {
 		/* first-order low pass, alpha in Q15 (32768 = no filtering) */
-		in->filtered_q8 += (int32_t)(((x_q8 - in->filtered_q8) *
-					      (int64_t)me->cal.lowpass_alpha_q15) / 32768);
+		in->filtered_q8 += (((x_q8 - in->filtered_q8) *
+				    (int64_t)me->cal.lowpass_alpha_q15) / 32768);
 	}
-	in->value = in->filtered_q8 / 256;
+	in->value = (int32_t)(in->filtered_q8 / 256);
 	in->faults &= ~(INPUT_FAULT_IMPLAUSIBLE | INPUT_FAULT_STALE |
 			INPUT_FAULT_NEVER_SEEN | INPUT_FAULT_E2E);
 	in->last_used_us = t_us;

@@ -67,7 +67,7 @@ typedef struct {
 	bool has_prev_raw;
 	uint16_t prev_raw;         /* last E2E-good raw value (rate limit)        */
 	int32_t value;             /* conditioned: v0 [um/s] or force [mN]        */
-	int32_t filtered_q8;       /* low-pass state, value x 256                 */
+	int64_t filtered_q8;       /* low-pass state, value x 256 (needs 64 bit) */
 	uint64_t last_used_us;     /* time of the last used frame                 */
 	bool fresh;                /* a new value since the last classification   */
 	input_counters_t count;
