@@ -1,0 +1,32 @@
+# SPDX-License-Identifier: MIT
+# Tests of firmware/monitor and firmware/app through the in-memory test HAL
+# (tests/support/test_hal.c), both numeric builds, ASan+UBSan:
+#   build/<v>/test_monitor        braking manoeuvre, warning levels, debounce,
+#                                 periodic TX and E2E of every outgoing frame
+#   build/<v>/test_monitor_faults every input fault, through protected frames
+#   build/<v>/test_calib          calibration block: CRC-32, round trip, ranges
+#   build/<v>/test_app            scheduler + HAL: calibration storage, CAN
+#                                 status, bus-off, TX queue full, watchdog
+# Expected border speeds and the DBC's data IDs come from
+# tests/monitor/gen_monitor_expect.py (scipy reference) into
+# build/monitor/monitor_expect.h.
+#   build/host/monitor_step_cost  callgrind driver (make monitor-cost)
+
+MONITOR_TEST_VARIANTS := test test-fixed
+MONITOR_TESTS := test_monitor
+MONITOR_EXPECT_H := build/monitor/monitor_expect.h
+
+$(MONITOR_EXPECT_H): tests/monitor/gen_monitor_expect.py tests/reference/squeal_reference.py firmware/protocol/squeal.dbc
+	@mkdir -p $(@D)
+	$(PYTHON) tests/monitor/gen_monitor_expect.py firmware/protocol/squeal.dbc $@
+
+define monitor_test_rules
+build/$(1)/app/tests/unit/$(2).o: tests/unit/$(2).c $(MONITOR_EXPECT_H)
+	@mkdir -p $$(@D)
+	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Itests/support -Ibuild/monitor -MMD -MP -c $$< -o $$@
+build/$(1)/$(2): build/$(1)/app/tests/unit/$(2).o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,$(MONITOR_TEST_VARIANTS),$(foreach t,$(MONITOR_TESTS),$(eval $(call monitor_test_rules,$(v),$(t)))))
+
+TEST_PROGS += $(foreach v,$(MONITOR_TEST_VARIANTS),$(foreach t,$(MONITOR_TESTS),build/$(v)/$(t)))
