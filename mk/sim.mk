@@ -43,3 +43,8 @@ TEST_PROGS += $(foreach v,$(OSCSIM_AGREE_VARIANTS),build/$(v)/test_agreement)
 # Cross-check against scipy's solve_ivp and model.md section 6.
 tests/sim/test_oscsim_scipy.py: build/host/oscsim
 TEST_PROGS += tests/sim/test_oscsim_scipy.py
+
+# make bench: the full-grid agreement figures with timings.
+ALL_TARGETS += build/host-fixed/oscsim
+tests/sim/bench_agreement.sh: build/host/oscsim build/host-fixed/oscsim
+BENCH_PROGS += tests/sim/bench_agreement.sh
