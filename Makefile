@@ -71,7 +71,17 @@ include $(sort $(wildcard mk/*.mk))
 .PHONY: all test bench demo clean
 all: $(ALL_TARGETS)
 
-test: $(TEST_PROGS)
+# The README's commands install what they need (tools/ensure-deps.sh), then
+# build; the test runner's summary line is the last line printed.
+.PHONY: deps-test deps-demo
+deps-test:
+	@tools/ensure-deps.sh test
+deps-demo:
+	@tools/ensure-deps.sh demo
+
+test: deps-test
+	@mkdir -p build
+	@$(MAKE) --no-print-directory -j$$(nproc) $(TEST_PROGS) >build/test-build.log 2>&1 || { tail -n 40 build/test-build.log; exit 1; }
 	@tests/run-tests.sh $(TEST_PROGS)
 
 bench: $(BENCH_PROGS)

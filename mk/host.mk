@@ -14,7 +14,7 @@ $(foreach v,$(VARIANTS),$(eval $(call sim_program,$(v))))
 ALL_TARGETS += build/host/squeal-sim build/host-fixed/squeal-sim
 
 .PHONY: demo
-demo: build/host/squeal-sim
+demo: deps-demo build/host/squeal-sim
 	build/host/squeal-sim sweep
 
 # firmware/ builds for both MCUs; the fixed build has no floating point
