@@ -1,0 +1,12 @@
+# SPDX-License-Identifier: MIT
+# squeal-sim ecu/plant, the calibration text format, and the integration
+# tests on real vcan (tests/integration/, in the QEMU guest of
+# tests/vcan/guest.sh):
+#   build/test/test_calib_text        cmocka, ASan+UBSan: calibration text files
+
+CALIB_TEXT_TEST := build/test/test_calib_text
+
+$(CALIB_TEXT_TEST): build/test/app/tests/unit/test_calib_text.o build/test/app/host-sim/calib_text.o build/test/libfirmware.a
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
+
+TEST_PROGS += $(CALIB_TEXT_TEST)
