@@ -92,10 +92,22 @@ uint32_t hal_cycles_per_us(void)
 
 int test_hal_rx_push(const hal_can_frame_t *frame)
 {
+	uint32_t i;
+
 	if ((frame == NULL) || (th.rx_count >= TEST_HAL_RX_CAP)) {
 		return SQ_ENOBUFS;
 	}
-	th.rx[(th.rx_head + th.rx_count) % TEST_HAL_RX_CAP] = *frame;
+	/* keep the queue in timestamp order (stable: after every frame with
+	 * the same or an earlier time), as a real bus delivers them, so a
+	 * test may queue each sender's schedule separately */
+	i = th.rx_count;
+	while ((i > 0U) &&
+	       (th.rx[(th.rx_head + i - 1U) % TEST_HAL_RX_CAP].timestamp_us > frame->timestamp_us)) {
+		th.rx[(th.rx_head + i) % TEST_HAL_RX_CAP] =
+			th.rx[(th.rx_head + i - 1U) % TEST_HAL_RX_CAP];
+		i--;
+	}
+	th.rx[(th.rx_head + i) % TEST_HAL_RX_CAP] = *frame;
 	th.rx_count++;
 	return SQ_OK;
 }

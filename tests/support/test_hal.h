@@ -7,7 +7,9 @@
  *   clock to its deadline (or to the next queued frame, if earlier).
  * - RX: a FIFO the test fills with frames and their receive timestamps;
  *   hal_can_receive() delivers a frame only once the clock has reached its
- *   timestamp (so a test can queue a whole bus schedule up front).
+ *   timestamp (so a test can queue a whole bus schedule up front). The
+ *   queue is kept in timestamp order (frames with equal times in push
+ *   order), so each sender's frames may be queued separately.
  *   Filters set by hal_can_set_rx_filter() are recorded; they are applied
  *   only after test_hal_apply_rx_filter(true), so a test can also prove
  *   that the firmware itself ignores identifiers it does not use.
