@@ -1,0 +1,720 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * candump_log: see candump_log.h for the grammar. The parser is a plain
+ * cursor over [line, line + len): every read goes through peek(), which
+ * answers 0 past the end, so no path can read out of bounds whatever the
+ * bytes are.
+ */
+#include "candump_log.h"
+
+#include <string.h>
+
+typedef struct {
+	const char *s;
+	size_t len;
+	size_t i;
+} cursor_t;
+
+static int peek(const cursor_t *c)
+{
+	return (c->i < c->len) ? (unsigned char)c->s[c->i] : 0;
+}
+
+static int peek_at(const cursor_t *c, size_t off)
+{
+	return ((c->i + off) < c->len) ? (unsigned char)c->s[c->i + off] : 0;
+}
+
+static bool at_end(const cursor_t *c)
+{
+	return c->i >= c->len;
+}
+
+static bool is_blank(int ch)
+{
+	return (ch == ' ') || (ch == '\t');
+}
+
+static bool is_digit(int ch)
+{
+	return (ch >= '0') && (ch <= '9');
+}
+
+/* 0..15 for a hex digit, -1 otherwise */
+static int hex_val(int ch)
+{
+	if ((ch >= '0') && (ch <= '9')) {
+		return ch - '0';
+	}
+	if ((ch >= 'A') && (ch <= 'F')) {
+		return ch - 'A' + 10;
+	}
+	if ((ch >= 'a') && (ch <= 'f')) {
+		return ch - 'a' + 10;
+	}
+	return -1;
+}
+
+static void skip_blanks(cursor_t *c)
+{
+	while (!at_end(c) && is_blank(peek(c))) {
+		c->i++;
+	}
+}
+
+static const char *const err_text[CANDUMP_ERR_COUNT] = {
+	[CANDUMP_OK] = "ok",
+	[CANDUMP_ERR_NUL] = "NUL byte in the line",
+	[CANDUMP_ERR_TOO_LONG] = "line too long",
+	[CANDUMP_ERR_NOT_A_FRAME] = "not a candump -L line (does not start with '(')",
+	[CANDUMP_ERR_TIMESTAMP] = "bad timestamp (want (SECONDS.FRACTION) with 6 or 9 fraction digits)",
+	[CANDUMP_ERR_TIME_RANGE] = "timestamp out of range",
+	[CANDUMP_ERR_IFACE] = "missing or too long interface name",
+	[CANDUMP_ERR_NO_FRAME] = "no frame after the interface name",
+	[CANDUMP_ERR_NO_HASH] = "no '#' after the identifier",
+	[CANDUMP_ERR_ID_DIGITS] = "identifier must have 3 or 8 hex digits",
+	[CANDUMP_ERR_ID_HEX] = "bad hex digit in the identifier",
+	[CANDUMP_ERR_ID_RANGE] = "identifier too large",
+	[CANDUMP_ERR_DATA_HEX] = "bad hex digit in the data",
+	[CANDUMP_ERR_DATA_ODD] = "odd number of data digits",
+	[CANDUMP_ERR_DATA_LEN] = "too many data bytes",
+	[CANDUMP_ERR_FD_LEN] = "not a valid CAN FD length",
+	[CANDUMP_ERR_FD_FLAGS] = "missing or bad CAN FD flags digit",
+	[CANDUMP_ERR_DLC_CODE] = "bad _X DLC code (only after 8 bytes, X = 9..F)",
+	[CANDUMP_ERR_RTR_LEN] = "bad remote frame length (0..8)",
+	[CANDUMP_ERR_ERROR_FRAME] = "error frame in remote or FD form",
+	[CANDUMP_ERR_XL] = "malformed CAN XL frame",
+	[CANDUMP_ERR_TRAILING] = "unexpected characters after the frame",
+};
+
+const char *candump_strerror(candump_err_t err)
+{
+	if (((unsigned)err < (unsigned)CANDUMP_ERR_COUNT) && (err_text[err] != NULL)) {
+		return err_text[err];
+	}
+	return "unknown error";
+}
+
+/* (SECONDS.FRACTION) */
+static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
+{
+	const uint64_t max_s = UINT64_MAX / 1000000000ULL;
+	uint64_t sec = 0U;
+	uint64_t frac = 0U;
+	unsigned nd = 0U;
+	unsigned nf = 0U;
+
+	c->i++; /* '(' */
+	while (is_digit(peek(c))) {
+		if (nd >= 20U) {
+			return CANDUMP_ERR_TIME_RANGE;
+		}
+		if (sec > (UINT64_MAX - 9U) / 10U) {
+			return CANDUMP_ERR_TIME_RANGE;
+		}
+		sec = sec * 10U + (uint64_t)(peek(c) - '0');
+		nd++;
+		c->i++;
+	}
+	if ((nd == 0U) || (peek(c) != '.')) {
+		return CANDUMP_ERR_TIMESTAMP;
+	}
+	c->i++;
+	while (is_digit(peek(c))) {
+		if (nf >= 9U) {
+			return CANDUMP_ERR_TIMESTAMP;
+		}
+		frac = frac * 10U + (uint64_t)(peek(c) - '0');
+		nf++;
+		c->i++;
+	}
+	if (((nf != 6U) && (nf != 9U)) || (peek(c) != ')')) {
+		return CANDUMP_ERR_TIMESTAMP;
+	}
+	c->i++;
+	if (nf == 6U) {
+		frac *= 1000U;
+	}
+	if ((sec > max_s) || ((sec == max_s) && (frac > UINT64_MAX - max_s * 1000000000ULL))) {
+		return CANDUMP_ERR_TIME_RANGE;
+	}
+	*t_ns = sec * 1000000000ULL + frac;
+	return CANDUMP_OK;
+}
+
+/* Hex bytes with optional '.' before each, up to max (stored if data). */
+static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
+				size_t *n_out)
+{
+	size_t n = 0U;
+
+	for (;;) {
+		int hi;
+		int lo;
+
+		if (peek(c) == '.') {
+			c->i++;
+		}
+		if (at_end(c) || is_blank(peek(c)) || (peek(c) == '_') ||
+		    (peek(c) == '\r') || (peek(c) == '\n')) {
+			break;
+		}
+		hi = hex_val(peek(c));
+		if (hi < 0) {
+			return CANDUMP_ERR_DATA_HEX;
+		}
+		c->i++;
+		if (at_end(c) || is_blank(peek(c)) || (peek(c) == '_') || (peek(c) == '.') ||
+		    (peek(c) == '\r') || (peek(c) == '\n')) {
+			return CANDUMP_ERR_DATA_ODD;
+		}
+		lo = hex_val(peek(c));
+		if (lo < 0) {
+			return CANDUMP_ERR_DATA_HEX;
+		}
+		if (n >= max) {
+			c->i--;
+			return CANDUMP_ERR_DATA_LEN;
+		}
+		if (data != NULL) {
+			data[n] = (uint8_t)((hi << 4) | lo);
+		}
+		n++;
+		c->i++;
+	}
+	*n_out = n;
+	return CANDUMP_OK;
+}
+
+/* optional _X after 8 bytes (classic data or RTR of length 8) */
+static candump_err_t parse_dlc_code(cursor_t *c, candump_frame_t *out)
+{
+	int x;
+
+	if (peek(c) != '_') {
+		return CANDUMP_OK;
+	}
+	x = hex_val(peek_at(c, 1U));
+	if ((out->len != 8U) || (x < 9)) {
+		return CANDUMP_ERR_DLC_CODE;
+	}
+	out->len8_dlc = (uint8_t)x;
+	c->i += 2U;
+	return CANDUMP_OK;
+}
+
+static bool fd_len_valid(size_t n)
+{
+	return (n <= 8U) || (n == 12U) || (n == 16U) || (n == 20U) || (n == 24U) ||
+	       (n == 32U) || (n == 48U) || (n == 64U);
+}
+
+/* VVPPP#FF:SS:AAAAAAAA#data; the cursor is on the first id digit. */
+static candump_err_t parse_xl(cursor_t *c, candump_frame_t *out)
+{
+	static const char shape[] = "HH:HH:HHHHHHHH#";
+	uint32_t prio = 0U;
+	size_t n = 0U;
+	size_t k;
+	candump_err_t e;
+
+	for (k = 0U; k < 5U; k++) {
+		const int v = hex_val(peek(c));
+
+		if (v < 0) {
+			return CANDUMP_ERR_XL;
+		}
+		if (k >= 2U) {
+			prio = (prio << 4) | (uint32_t)v;
+		}
+		c->i++;
+	}
+	c->i++; /* '#' */
+	for (k = 0U; shape[k] != '\0'; k++) {
+		const int ch = peek(c);
+
+		if ((shape[k] == 'H') ? (hex_val(ch) < 0) : (ch != shape[k])) {
+			return CANDUMP_ERR_XL;
+		}
+		c->i++;
+	}
+	e = parse_data(c, NULL, CANDUMP_XL_DATA_MAX, &n);
+	if (e != CANDUMP_OK) {
+		return e;
+	}
+	if ((n == 0U) || (prio > CANDUMP_SFF_MAX)) {
+		return CANDUMP_ERR_XL;
+	}
+	out->kind = CANDUMP_KIND_XL;
+	out->id = prio;
+	out->xl_len = (uint16_t)n;
+	return CANDUMP_OK;
+}
+
+static candump_err_t parse_frame(cursor_t *c, candump_frame_t *out)
+{
+	uint32_t id = 0U;
+	size_t nd = 0U;
+	size_t n = 0U;
+	size_t k;
+	candump_err_t e;
+
+	while ((nd < 9U) && (hex_val(peek_at(c, nd)) >= 0)) {
+		nd++;
+	}
+	if ((nd == 5U) && (peek_at(c, 5U) == '#') && (peek_at(c, 8U) == ':')) {
+		return parse_xl(c, out);
+	}
+	if ((nd != 3U) && (nd != 8U)) {
+		c->i += nd;
+		if ((nd > 8U) || (peek(c) == '#')) {
+			return CANDUMP_ERR_ID_DIGITS;
+		}
+		return (at_end(c) || is_blank(peek(c))) ? CANDUMP_ERR_NO_HASH :
+			CANDUMP_ERR_ID_HEX;
+	}
+	out->ext = (nd == 8U);
+	for (k = 0U; k < nd; k++) {
+		id = (id << 4) | (uint32_t)hex_val(peek(c));
+		c->i++;
+	}
+	if (peek(c) != '#') {
+		return (at_end(c) || is_blank(peek(c))) ? CANDUMP_ERR_NO_HASH :
+			CANDUMP_ERR_ID_HEX;
+	}
+	c->i++; /* '#' */
+	out->kind = CANDUMP_KIND_CLASSIC;
+	if (out->ext) {
+		if (id > 0x3FFFFFFFU) {
+			return CANDUMP_ERR_ID_RANGE;
+		}
+		if ((id & CANDUMP_ERR_FLAG) != 0U) {
+			out->kind = CANDUMP_KIND_ERROR;
+			id &= CANDUMP_ERR_MASK;
+		}
+	} else if (id > CANDUMP_SFF_MAX) {
+		c->i -= 4U;
+		return CANDUMP_ERR_ID_RANGE;
+	}
+	out->id = id;
+
+	if (peek(c) == '#') { /* CAN FD */
+		int flags;
+
+		c->i++;
+		if (out->kind == CANDUMP_KIND_ERROR) {
+			return CANDUMP_ERR_ERROR_FRAME;
+		}
+		flags = hex_val(peek(c));
+		if (flags < 0) {
+			return CANDUMP_ERR_FD_FLAGS;
+		}
+		c->i++;
+		out->kind = CANDUMP_KIND_FD;
+		out->fd_flags = (uint8_t)flags;
+		e = parse_data(c, out->data, CANDUMP_DATA_MAX, &n);
+		if (e != CANDUMP_OK) {
+			return e;
+		}
+		if (!fd_len_valid(n)) {
+			return CANDUMP_ERR_FD_LEN;
+		}
+		out->len = (uint8_t)n;
+		if (peek(c) == '_') {
+			return CANDUMP_ERR_DLC_CODE;
+		}
+		return CANDUMP_OK;
+	}
+	if ((peek(c) == 'R') || (peek(c) == 'r')) { /* remote frame */
+		if (out->kind == CANDUMP_KIND_ERROR) {
+			return CANDUMP_ERR_ERROR_FRAME;
+		}
+		c->i++;
+		out->kind = CANDUMP_KIND_RTR;
+		if (is_digit(peek(c))) {
+			if (peek(c) > '8') {
+				return CANDUMP_ERR_RTR_LEN;
+			}
+			out->len = (uint8_t)(peek(c) - '0');
+			c->i++;
+		} else if (hex_val(peek(c)) >= 0) {
+			return CANDUMP_ERR_RTR_LEN;
+		}
+		return parse_dlc_code(c, out);
+	}
+	e = parse_data(c, out->data, 8U, &n);
+	if (e != CANDUMP_OK) {
+		return e;
+	}
+	out->len = (uint8_t)n;
+	return parse_dlc_code(c, out);
+}
+
+/* "DROPCOUNT: dropped N CAN frame(s) on 'IF' socket (total drops M)" */
+static uint32_t parse_dropped(const cursor_t *line)
+{
+	static const char key[] = "DROPCOUNT: dropped ";
+	cursor_t c = *line;
+	uint64_t n = 0U;
+	size_t k;
+
+	for (k = 0U; key[k] != '\0'; k++) {
+		if (peek(&c) != (unsigned char)key[k]) {
+			return 0U;
+		}
+		c.i++;
+	}
+	while (is_digit(peek(&c)) && (n <= UINT32_MAX)) {
+		n = n * 10U + (uint64_t)(peek(&c) - '0');
+		c.i++;
+	}
+	return (n > UINT32_MAX) ? UINT32_MAX : (uint32_t)n;
+}
+
+candump_line_t candump_parse_line(const char *line, size_t len,
+				  candump_frame_t *out, candump_err_t *err,
+				  size_t *col)
+{
+	cursor_t c = { line, len, 0U };
+	candump_err_t e = CANDUMP_OK;
+	candump_line_t kind = CANDUMP_LINE_MALFORMED;
+	size_t k;
+
+	if (err != NULL) {
+		*err = CANDUMP_OK;
+	}
+	if (col != NULL) {
+		*col = 0U;
+	}
+	if ((out == NULL) || ((line == NULL) && (len > 0U))) {
+		if (err != NULL) {
+			*err = CANDUMP_ERR_NOT_A_FRAME;
+		}
+		return CANDUMP_LINE_MALFORMED;
+	}
+	/* the line ends before its "\n" or "\r\n" */
+	if ((c.len > 0U) && (c.s[c.len - 1U] == '\n')) {
+		c.len--;
+	}
+	if ((c.len > 0U) && (c.s[c.len - 1U] == '\r')) {
+		c.len--;
+	}
+	memset(out, 0, sizeof(*out));
+	if (c.len > CANDUMP_LINE_MAX) {
+		e = CANDUMP_ERR_TOO_LONG;
+		c.i = CANDUMP_LINE_MAX;
+		goto done;
+	}
+	if ((c.len > 0U) && (memchr(c.s, '\0', c.len) != NULL)) {
+		e = CANDUMP_ERR_NUL;
+		c.i = (size_t)((const char *)memchr(c.s, '\0', c.len) - c.s);
+		goto done;
+	}
+	skip_blanks(&c);
+	if (at_end(&c)) {
+		kind = CANDUMP_LINE_BLANK;
+		goto done;
+	}
+	if ((peek(&c) == '#') || (peek(&c) == ';')) {
+		kind = CANDUMP_LINE_COMMENT;
+		goto done;
+	}
+	if ((c.len - c.i >= 10U) && (memcmp(c.s + c.i, "DROPCOUNT:", 10U) == 0)) {
+		out->dropped = parse_dropped(&c);
+		kind = CANDUMP_LINE_DROPCOUNT;
+		goto done;
+	}
+	if (peek(&c) != '(') {
+		e = CANDUMP_ERR_NOT_A_FRAME;
+		goto done;
+	}
+	e = parse_time(&c, &out->t_ns);
+	if (e != CANDUMP_OK) {
+		goto done;
+	}
+	if (!is_blank(peek(&c))) {
+		e = CANDUMP_ERR_IFACE;
+		goto done;
+	}
+	skip_blanks(&c);
+	for (k = 0U; !at_end(&c) && !is_blank(peek(&c)); k++) {
+		if (k >= CANDUMP_IFACE_MAX) {
+			e = CANDUMP_ERR_IFACE;
+			goto done;
+		}
+		out->iface[k] = (char)peek(&c);
+		c.i++;
+	}
+	if (k == 0U) {
+		e = CANDUMP_ERR_IFACE;
+		goto done;
+	}
+	skip_blanks(&c);
+	if (at_end(&c)) {
+		e = CANDUMP_ERR_NO_FRAME;
+		goto done;
+	}
+	e = parse_frame(&c, out);
+	if (e != CANDUMP_OK) {
+		goto done;
+	}
+	/* optional direction of candump -x, then nothing */
+	if (is_blank(peek(&c))) {
+		skip_blanks(&c);
+		if (((peek(&c) == 'T') || (peek(&c) == 'R')) &&
+		    ((c.i + 1U >= c.len) || is_blank(peek_at(&c, 1U)))) {
+			out->dir = (char)peek(&c);
+			c.i++;
+			skip_blanks(&c);
+		}
+	}
+	if (!at_end(&c)) {
+		e = CANDUMP_ERR_TRAILING;
+		goto done;
+	}
+	kind = CANDUMP_LINE_FRAME;
+done:
+	if (e != CANDUMP_OK) {
+		kind = CANDUMP_LINE_MALFORMED;
+		if (err != NULL) {
+			*err = e;
+		}
+		if (col != NULL) {
+			*col = c.i;
+		}
+	}
+	return kind;
+}
+
+/* ---- writer ---------------------------------------------------------------- */
+
+static const char hex_upper[] = "0123456789ABCDEF";
+
+/* n decimal digits of v, zero-padded (v < 10^n assumed by the caller,
+ * larger values keep their low digits) */
+static char *put_dec(char *p, uint64_t v, unsigned n)
+{
+	unsigned k;
+
+	for (k = n; k > 0U; k--) {
+		p[k - 1U] = (char)('0' + (v % 10U));
+		v /= 10U;
+	}
+	return p + n;
+}
+
+static char *put_hex(char *p, uint32_t v, unsigned digits)
+{
+	unsigned k;
+
+	for (k = digits; k > 0U; k--) {
+		p[k - 1U] = hex_upper[v & 0xFU];
+		v >>= 4;
+	}
+	return p + digits;
+}
+
+int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
+			 size_t size)
+{
+	char tmp[CANDUMP_FORMAT_MAX + 2U];
+	char *p = tmp;
+	uint64_t sec;
+	uint64_t usec;
+	unsigned sec_digits = 10U;
+	size_t ifl;
+	size_t n;
+	size_t i;
+	uint64_t s;
+
+	if ((buf == NULL) || (size == 0U)) {
+		return -1;
+	}
+	buf[0] = '\0';
+	if (f == NULL) {
+		return -1;
+	}
+	ifl = strnlen(f->iface, sizeof(f->iface));
+	if ((ifl == 0U) || (ifl > CANDUMP_IFACE_MAX)) {
+		return -1;
+	}
+	sec = f->t_ns / 1000000000ULL;
+	usec = (f->t_ns % 1000000000ULL) / 1000U;
+	for (s = sec / 10000000000ULL; s > 0U; s /= 10U) {
+		sec_digits++; /* %010llu: at least 10 digits */
+	}
+	*p++ = '(';
+	p = put_dec(p, sec, sec_digits);
+	*p++ = '.';
+	p = put_dec(p, usec, 6U);
+	*p++ = ')';
+	*p++ = ' ';
+	memcpy(p, f->iface, ifl);
+	p += ifl;
+	*p++ = ' ';
+	switch (f->kind) {
+	case CANDUMP_KIND_CLASSIC:
+	case CANDUMP_KIND_RTR:
+		if ((f->len > 8U) || ((f->len8_dlc != 0U) &&
+				      ((f->len != 8U) || (f->len8_dlc < 9U) || (f->len8_dlc > 15U)))) {
+			return -1;
+		}
+		if (f->ext) {
+			if (f->id > CANDUMP_EFF_MAX) {
+				return -1;
+			}
+			p = put_hex(p, f->id, 8U);
+		} else {
+			if (f->id > CANDUMP_SFF_MAX) {
+				return -1;
+			}
+			p = put_hex(p, f->id, 3U);
+		}
+		*p++ = '#';
+		if (f->kind == CANDUMP_KIND_RTR) {
+			*p++ = 'R';
+			if (f->len > 0U) {
+				*p++ = (char)('0' + f->len);
+			}
+		} else {
+			for (i = 0U; i < f->len; i++) {
+				*p++ = hex_upper[f->data[i] >> 4];
+				*p++ = hex_upper[f->data[i] & 0xFU];
+			}
+		}
+		if (f->len8_dlc != 0U) {
+			*p++ = '_';
+			*p++ = hex_upper[f->len8_dlc];
+		}
+		break;
+	case CANDUMP_KIND_FD:
+		if (!fd_len_valid(f->len) || (f->fd_flags > 0xFU) ||
+		    (f->id > (f->ext ? CANDUMP_EFF_MAX : CANDUMP_SFF_MAX))) {
+			return -1;
+		}
+		p = put_hex(p, f->id, f->ext ? 8U : 3U);
+		*p++ = '#';
+		*p++ = '#';
+		*p++ = hex_upper[f->fd_flags];
+		for (i = 0U; i < f->len; i++) {
+			*p++ = hex_upper[f->data[i] >> 4];
+			*p++ = hex_upper[f->data[i] & 0xFU];
+		}
+		break;
+	case CANDUMP_KIND_ERROR:
+		if ((f->id > CANDUMP_ERR_MASK) || (f->len > 8U)) {
+			return -1;
+		}
+		p = put_hex(p, f->id | CANDUMP_ERR_FLAG, 8U);
+		*p++ = '#';
+		for (i = 0U; i < f->len; i++) {
+			*p++ = hex_upper[f->data[i] >> 4];
+			*p++ = hex_upper[f->data[i] & 0xFU];
+		}
+		break;
+	default:
+		return -1;
+	}
+	if ((f->dir == 'T') || (f->dir == 'R')) {
+		*p++ = ' ';
+		*p++ = f->dir;
+	}
+	if (newline) {
+		*p++ = '\n';
+	}
+	n = (size_t)(p - tmp);
+	if (n + 1U > size) {
+		return -1;
+	}
+	memcpy(buf, tmp, n);
+	buf[n] = '\0';
+	return (int)n;
+}
+
+/* ---- reader ---------------------------------------------------------------- */
+
+void candump_reader_init(candump_reader_t *r, FILE *f)
+{
+	r->f = f;
+	r->pos = 0U;
+	r->end = 0U;
+	r->eof = false;
+	r->error = false;
+	r->line_no = 0U;
+	r->line[0] = '\0';
+}
+
+static bool reader_fill(candump_reader_t *r)
+{
+	size_t got;
+
+	if (r->eof || r->error) {
+		return false;
+	}
+	got = fread(r->buf, 1U, sizeof(r->buf), r->f);
+	r->pos = 0U;
+	r->end = got;
+	if (got == 0U) {
+		if (ferror(r->f)) {
+			r->error = true;
+		}
+		r->eof = true;
+		return false;
+	}
+	return true;
+}
+
+int candump_reader_next(candump_reader_t *r, const char **line, size_t *len,
+			bool *too_long)
+{
+	size_t n = 0U;
+	bool any = false;
+	bool longer = false;
+
+	for (;;) {
+		const char *start;
+		const char *nl;
+		size_t avail;
+		size_t take;
+
+		if ((r->pos >= r->end) && !reader_fill(r)) {
+			break;
+		}
+		any = true;
+		start = r->buf + r->pos;
+		avail = r->end - r->pos;
+		nl = memchr(start, '\n', avail);
+		take = (nl != NULL) ? (size_t)(nl - start) : avail;
+		if (n < CANDUMP_LINE_MAX) {
+			const size_t room = CANDUMP_LINE_MAX - n;
+			const size_t c = (take < room) ? take : room;
+
+			memcpy(r->line + n, start, c);
+			n += c;
+			if (take > room) {
+				longer = true;
+			}
+		} else if (take > 0U) {
+			longer = true;
+		}
+		r->pos += take;
+		if (nl != NULL) {
+			r->pos++; /* the '\n' */
+			break;
+		}
+	}
+	if (r->error) {
+		return -1;
+	}
+	if (!any) {
+		return 0;
+	}
+	r->line[n] = '\0';
+	r->line_no++;
+	*line = r->line;
+	*len = n;
+	if (too_long != NULL) {
+		*too_long = longer;
+	}
+	return 1;
+}
