@@ -5,5 +5,7 @@
 
 int cmd_classify(int argc, char **argv);
 int cmd_sweep(int argc, char **argv);
+int cmd_ecu(int argc, char **argv);
+int cmd_plant(int argc, char **argv);
 
 #endif /* SIM_COMMANDS_H */

@@ -18,6 +18,8 @@ typedef struct {
 static const command_t commands[] = {
 	{ "classify", cmd_classify, "classify one operating point (model only)" },
 	{ "sweep", cmd_sweep, "classify a table of operating points (demo)" },
+	{ "ecu", cmd_ecu, "the monitor firmware on a SocketCAN interface" },
+	{ "plant", cmd_plant, "send DiscSpeed/PadForce from a scenario (or write a log)" },
 };
 
 static void usage(FILE *f)

@@ -4,6 +4,12 @@
 # SIM_LIBS_<variant> += ...
 
 SIM_SRCS += host-sim/squeal_sim.c host-sim/cmd_classify.c host-sim/sim_num.c
+# ecu, plant (mk/integration.mk has their tests); they run on hal/linux
+SIM_SRCS += host-sim/cmd_ecu.c host-sim/cmd_plant.c host-sim/plant_scenario.c host-sim/calib_text.c
+SIM_LIBS_host += build/host/libhal_linux.a
+SIM_LIBS_host-fixed += build/host-fixed/libhal_linux.a
+SIM_LIBS_test += build/test/libhal_linux.a
+SIM_LIBS_test-fixed += build/test-fixed/libhal_linux.a
 
 define sim_program
 build/$(1)/squeal-sim: $$(patsubst %.c,build/$(1)/app/%.o,$$(SIM_SRCS)) $$(SIM_LIBS_$(1)) build/$(1)/libfirmware.a

@@ -1,0 +1,325 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * squeal-sim ecu: the unchanged firmware (squeal_app) on a SocketCAN
+ * interface in real time, through hal/linux.
+ *
+ * --calib FILE (text, calib_text.h) is checked here, encoded into the
+ * firmware's binary block (calib_encode: magic, version, CRC-32) and written
+ * to a private temporary file that becomes the HAL's calibration storage, so
+ * the firmware loads it exactly as it would load its flash block on the ECU
+ * (and a bad block would take the same fallback path). The file is removed
+ * at exit.
+ *
+ * The loop is squeal_main()'s (init, then poll + hal_idle_until until
+ * stopped), written out here so the state can be followed after every poll
+ * for --verbose and the exit summary.
+ */
+#include <errno.h>
+#include <getopt.h>
+#include <inttypes.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "calib.h"
+#include "calib_text.h"
+#include "hal.h"
+#include "hal_linux.h"
+#include "monitor.h"
+#include "sim_commands.h"
+#include "sq_status.h"
+#include "squeal_app.h"
+#include "squeal_model.h"
+
+typedef struct {
+	const char *iface;
+	const char *calib_path;
+	bool verbose;
+	double duration_s; /* < 0: until SIGINT/SIGTERM */
+} ecu_args_t;
+
+static volatile bool ecu_stop;
+static char ecu_calib_tmp[64];
+
+static void ecu_usage(FILE *f)
+{
+	fprintf(f,
+		"usage: squeal-sim ecu --iface IF [--calib FILE] [--duration S] [--verbose]\n\n"
+		"Runs the monitor firmware on a SocketCAN interface (vcan0, can0, ...) in\n"
+		"real time: reads DiscSpeed/PadForce, sends SquealStatus, SquealDetail,\n"
+		"SquealDetail2 and SquealDiag, until SIGINT or SIGTERM. The interface must\n"
+		"exist and be up (no root needed). On exit a summary goes to stderr.\n\n"
+		"  --iface IF      the CAN interface (required)\n"
+		"  --calib FILE    calibration text file (docs/calib-example.txt lists\n"
+		"                  every key); a bad file is refused with its line number\n"
+		"  --duration S    stop by itself after S seconds\n"
+		"  --verbose       print every state / warning level change on stderr\n\n"
+		"Exit status: 0 stopped by a signal or --duration, 1 interface or\n"
+		"calibration error, 2 bad usage. Watchdog expiries (a stalled loop) are\n"
+		"reported on stderr and counted in the summary.\n"
+		"Numeric build: %s.\n", SQUEAL_NUMERIC_NAME);
+}
+
+static int ecu_parse(int argc, char **argv, ecu_args_t *a)
+{
+	enum { OPT_IFACE = 256, OPT_CALIB, OPT_VERBOSE, OPT_DURATION, OPT_HELP };
+	static const struct option options[] = {
+		{ "iface", required_argument, NULL, OPT_IFACE },
+		{ "calib", required_argument, NULL, OPT_CALIB },
+		{ "verbose", no_argument, NULL, OPT_VERBOSE },
+		{ "duration", required_argument, NULL, OPT_DURATION },
+		{ "help", no_argument, NULL, OPT_HELP },
+		{ NULL, 0, NULL, 0 }
+	};
+	int c;
+
+	memset(a, 0, sizeof(*a));
+	a->duration_s = -1.0;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "hv", options, NULL)) != -1) {
+		char *end = NULL;
+
+		switch (c) {
+		case OPT_IFACE:
+			a->iface = optarg;
+			break;
+		case OPT_CALIB:
+			a->calib_path = optarg;
+			break;
+		case 'v':
+		case OPT_VERBOSE:
+			a->verbose = true;
+			break;
+		case OPT_DURATION:
+			a->duration_s = strtod(optarg, &end);
+			if ((end == optarg) || (*end != '\0') || !(a->duration_s >= 0.0)) {
+				fprintf(stderr, "squeal-sim ecu: --duration needs seconds >= 0, got '%s'\n",
+					optarg);
+				return -1;
+			}
+			break;
+		case 'h':
+		case OPT_HELP:
+			ecu_usage(stdout);
+			return 1;
+		default:
+			ecu_usage(stderr);
+			return -1;
+		}
+	}
+	if (optind < argc) {
+		fprintf(stderr, "squeal-sim ecu: unexpected argument '%s'\n", argv[optind]);
+		return -1;
+	}
+	if (a->iface == NULL) {
+		fprintf(stderr, "squeal-sim ecu: --iface IF is required (e.g. --iface vcan0)\n");
+		return -1;
+	}
+	return 0;
+}
+
+/* Text file -> binary block in a private temporary file -> HAL storage. */
+static int install_calibration(const char *path)
+{
+	calib_t cal;
+	uint8_t block[CALIB_BLOCK_LEN];
+	char err[300];
+	const char *dir = getenv("TMPDIR");
+	ssize_t n;
+	int fd;
+
+	if (calib_text_load(path, &cal, err, sizeof(err)) != SQ_OK) {
+		fprintf(stderr, "squeal-sim ecu: %s\n", err);
+		return -1;
+	}
+	if (calib_encode(&cal, block, sizeof(block)) != SQ_OK) {
+		fprintf(stderr, "squeal-sim ecu: %s: calibration does not encode\n", path);
+		return -1;
+	}
+	if ((dir == NULL) || (dir[0] == '\0') || (strlen(dir) > 40U)) {
+		dir = "/tmp";
+	}
+	snprintf(ecu_calib_tmp, sizeof(ecu_calib_tmp), "%s/squeal-cal.XXXXXX", dir);
+	fd = mkstemp(ecu_calib_tmp);
+	if (fd < 0) {
+		fprintf(stderr, "squeal-sim ecu: cannot create %s: %s\n", ecu_calib_tmp,
+			strerror(errno));
+		ecu_calib_tmp[0] = '\0';
+		return -1;
+	}
+	n = write(fd, block, sizeof(block));
+	if ((close(fd) != 0) || (n != (ssize_t)sizeof(block))) {
+		fprintf(stderr, "squeal-sim ecu: cannot write %s\n", ecu_calib_tmp);
+		return -1;
+	}
+	if (hal_linux_set_calib_path(ecu_calib_tmp) != SQ_OK) {
+		fprintf(stderr, "squeal-sim ecu: %s\n", hal_linux_strerror());
+		return -1;
+	}
+	return 0;
+}
+
+static void remove_calibration(void)
+{
+	if (ecu_calib_tmp[0] != '\0') {
+		(void)unlink(ecu_calib_tmp);
+		ecu_calib_tmp[0] = '\0';
+	}
+}
+
+static const char *state_name(uint8_t state)
+{
+	switch (state) {
+	case MSG_SQUEAL_STATE_STABLE:
+		return "stable";
+	case MSG_SQUEAL_STATE_BISTABLE:
+		return "bistable";
+	case MSG_SQUEAL_STATE_UNSTABLE:
+		return "unstable";
+	case MSG_SQUEAL_STATE_NOT_SLIDING:
+		return "not_sliding";
+	case MSG_SQUEAL_STATE_FAULT:
+		return "fault";
+	default:
+		return "?";
+	}
+}
+
+/* index into the per-state time table: 0..3, 4 = fault */
+static unsigned int state_slot(uint8_t state)
+{
+	return (state <= 3U) ? state : 4U;
+}
+
+static void print_input(const char *name, const input_t *in)
+{
+	const input_counters_t *c = &in->count;
+
+	fprintf(stderr, "%s_frames=%" PRIu32 " %s_used=%" PRIu32 " %s_bad_dlc=%" PRIu32
+		" %s_e2e_wrong_crc=%" PRIu32 " %s_e2e_wrong_sequence=%" PRIu32
+		" %s_e2e_repeated=%" PRIu32 " %s_e2e_lost=%" PRIu32
+		" %s_implausible=%" PRIu32 " %s_stale_events=%" PRIu32 "\n",
+		name, c->frames, name, c->used, name, c->bad_dlc, name, c->e2e_wrong_crc,
+		name, c->e2e_wrong_sequence, name, c->e2e_repeated, name, c->e2e_lost,
+		name, c->implausible, name, c->stale_events);
+}
+
+static void ecu_summary(const uint64_t state_us[5], uint64_t run_us)
+{
+	const monitor_t *m = squeal_app_monitor();
+	hal_linux_can_stats_t st;
+	unsigned int i;
+
+	hal_linux_can_get_stats(&st);
+	fprintf(stderr, "squeal-sim ecu: summary after %.3f s (key=value)\n",
+		(double)run_us / 1e6);
+	fprintf(stderr, "state=%s warning=%u state_changes=%" PRIu32
+		" classifications=%" PRIu32 " model_invalid=%" PRIu32
+		" fault_bits=0x%04X calib_invalid=%d init_rc=%d\n",
+		state_name(m->state), m->warning, m->count.state_changes,
+		m->count.classifications, m->count.model_invalid,
+		monitor_fault_bits(m), m->calib_invalid ? 1 : 0,
+		squeal_app_init_status());
+	fprintf(stderr, "time_s:");
+	for (i = 0U; i < 5U; i++) {
+		fprintf(stderr, " %s=%.3f", state_name((uint8_t)(i < 4U ? i : 15U)),
+			(double)state_us[i] / 1e6);
+	}
+	fprintf(stderr, "\n");
+	print_input("speed", &m->speed);
+	print_input("force", &m->force);
+	fprintf(stderr, "unknown_id=%" PRIu32 " error_frames=%" PRIu32
+		" rtr_or_ext=%" PRIu32 " bus_off_events=%" PRIu32
+		" rx_overruns=%" PRIu32 "\n",
+		m->count.unknown_id, m->count.error_frames, m->count.rtr_or_ext,
+		m->count.bus_off_events, m->count.rx_overruns);
+	fprintf(stderr, "tx_frames=%" PRIu32 " tx_overflow=%" PRIu32 " tx_errors=%" PRIu32
+		" worst_task_us=%" PRIu32 "\n",
+		m->count.tx_frames, m->count.tx_overflow, m->count.tx_errors,
+		m->worst_task_us);
+	fprintf(stderr, "hal_rx_frames=%" PRIu64 " hal_rx_err_frames=%" PRIu64
+		" hal_rx_kernel_drops=%" PRIu64 " hal_tx_frames=%" PRIu64
+		" hal_tx_retries=%" PRIu64 " hal_tx_dropped=%" PRIu64
+		" hal_tx_worst_us=%" PRIu32 " watchdog_expiries=%" PRIu32 "\n",
+		st.rx_frames, st.rx_err_frames, st.rx_kernel_drops, st.tx_frames,
+		st.tx_retries, st.tx_dropped, st.tx_worst_us,
+		hal_linux_watchdog_expiries());
+}
+
+int cmd_ecu(int argc, char **argv)
+{
+	ecu_args_t a;
+	uint64_t state_us[5] = { 0U, 0U, 0U, 0U, 0U };
+	uint64_t t_start;
+	uint64_t t_prev;
+	uint64_t t_end = UINT64_MAX;
+	uint8_t state;
+	uint8_t warning;
+	int rc = ecu_parse(argc, argv, &a);
+
+	if (rc != 0) {
+		return rc > 0 ? 0 : 2;
+	}
+	if (hal_linux_install_signal_handlers(&ecu_stop) != SQ_OK) {
+		fprintf(stderr, "squeal-sim ecu: %s\n", hal_linux_strerror());
+		return 1;
+	}
+	if (a.calib_path != NULL) {
+		if (install_calibration(a.calib_path) != 0) {
+			remove_calibration();
+			return 1;
+		}
+	} else {
+		/* no storage: the firmware's defaults, not a fault */
+		(void)hal_linux_set_calib_path(NULL);
+	}
+	if (hal_linux_open(a.iface, NULL) != SQ_OK) {
+		fprintf(stderr, "squeal-sim ecu: %s\n", hal_linux_strerror());
+		remove_calibration();
+		return 1;
+	}
+	rc = squeal_app_init();
+	remove_calibration(); /* read once at init, as from flash */
+	if (rc != SQ_OK) {
+		fprintf(stderr, "squeal-sim ecu: firmware init reported %d (running on; see fault_bits)\n",
+			rc);
+	}
+	state = squeal_app_monitor()->state;
+	warning = squeal_app_monitor()->warning;
+	t_start = hal_time_us();
+	t_prev = t_start;
+	if (a.duration_s >= 0.0) {
+		t_end = t_start + (uint64_t)(a.duration_s * 1e6);
+	}
+	if (a.verbose) {
+		fprintf(stderr, "squeal-sim ecu: running on %s (%s build), state %s\n",
+			a.iface, SQUEAL_NUMERIC_NAME, state_name(state));
+	}
+	while (!ecu_stop) {
+		const uint64_t next = squeal_app_poll();
+		const monitor_t *m = squeal_app_monitor();
+		const uint64_t now = hal_time_us();
+
+		state_us[state_slot(state)] += now - t_prev;
+		t_prev = now;
+		if ((m->state != state) || (m->warning != warning)) {
+			if (a.verbose) {
+				fprintf(stderr, "%.6f state %s -> %s, warning %u -> %u\n",
+					(double)(now - t_start) / 1e6, state_name(state),
+					state_name(m->state), warning, m->warning);
+			}
+			state = m->state;
+			warning = m->warning;
+		}
+		if (now >= t_end) {
+			break;
+		}
+		hal_idle_until(next < t_end ? next : t_end);
+	}
+	ecu_summary(state_us, hal_time_us() - t_start);
+	hal_linux_close();
+	return 0;
+}
