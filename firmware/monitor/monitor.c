@@ -485,9 +485,11 @@ static void send_status(monitor_t *me)
 	m.hopf_margin_mps = MSG_HOPF_MARGIN_MPS_NA;
 	if (classified(me)) {
 		if ((me->eval.has & MODEL_EVAL_HAS_BASIN) != 0U) {
-			const int32_t r = (me->eval.basin_ratio_ppm + 50) / 100;
+			/* 64 bit: the ratio saturates at INT32_MAX ppm and
+			 * + 50 must not overflow */
+			const int64_t r = ((int64_t)me->eval.basin_ratio_ppm + 50) / 100;
 
-			m.basin_ratio = (r > (int32_t)MSG_BASIN_RATIO_MAX) ?
+			m.basin_ratio = (r > (int64_t)MSG_BASIN_RATIO_MAX) ?
 				(uint16_t)MSG_BASIN_RATIO_MAX : (uint16_t)r;
 		}
 		if ((me->eval.has & MODEL_EVAL_HAS_HOPF_V0) != 0U) {
