@@ -13,7 +13,7 @@
 #   build/host/monitor_step_cost  callgrind driver (make monitor-cost)
 
 MONITOR_TEST_VARIANTS := test test-fixed
-MONITOR_TESTS := test_monitor test_monitor_faults test_calib
+MONITOR_TESTS := test_monitor test_monitor_faults test_calib test_app
 MONITOR_EXPECT_H := build/monitor/monitor_expect.h
 
 $(MONITOR_EXPECT_H): tests/monitor/gen_monitor_expect.py tests/reference/squeal_reference.py firmware/protocol/squeal.dbc
