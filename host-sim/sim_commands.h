@@ -7,5 +7,7 @@ int cmd_classify(int argc, char **argv);
 int cmd_sweep(int argc, char **argv);
 int cmd_ecu(int argc, char **argv);
 int cmd_plant(int argc, char **argv);
+int cmd_replay(int argc, char **argv);
+int cmd_decode(int argc, char **argv);
 
 #endif /* SIM_COMMANDS_H */

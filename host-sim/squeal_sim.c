@@ -20,6 +20,8 @@ static const command_t commands[] = {
 	{ "sweep", cmd_sweep, "classify a table of operating points (demo)" },
 	{ "ecu", cmd_ecu, "the monitor firmware on a SocketCAN interface" },
 	{ "plant", cmd_plant, "send DiscSpeed/PadForce from a scenario (or write a log)" },
+	{ "replay", cmd_replay, "feed a candump log through the firmware in virtual time" },
+	{ "decode", cmd_decode, "print CAN frames as physical values (log or interface)" },
 };
 
 static void usage(FILE *f)

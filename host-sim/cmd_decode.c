@@ -1,0 +1,567 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * squeal-sim decode [LOG|-|--iface IF] [--csv]: the frames of squeal.dbc as
+ * physical values, from a candump -L log, stdin, or a CAN interface.
+ *
+ * Values come from the firmware's descriptor tables (msg_table,
+ * msg_sig_table, checked against the DBC by tests/protocol/): physical =
+ * (raw * factor_num + offset_num) / factor_den, printed exactly in decimal
+ * with as many digits as the factor needs (0.01 -> 2, 0.5 -> 1), "NA" for
+ * the DBC's "not available" raw value.
+ *
+ * E2E (every message of the DBC is protected, AUTOSAR P01 1A): the CRC is
+ * recomputed with the DBC's E2E_DataID and the alive counter of each
+ * message is followed:
+ *   ok             CRC right, counter = previous + 1 (mod 15)
+ *   initial        first frame of that message
+ *   lost:N         N frames missing before this one
+ *   repeated       same counter as the previous frame
+ *   wrong_crc      CRC wrong (values printed anyway, as received)
+ *   bad_counter    counter 15 (never sent by a P01 sender)
+ *   bad_dlc        length is not the message's DLC (no values)
+ *
+ * Text: one line per frame, "TIME NAME signal=value ... ctr=N e2e=STATUS";
+ * SquealState, WarningLevel and SquealDiag_Page print as state=NAME,
+ * warning=NAME, page=NAME, the Fault_* bits as faults=A|B (or none).
+ * Other frames: "TIME ID unknown [LEN] DATA", remote/FD/XL/error frames
+ * likewise raw.
+ *
+ * CSV (--csv): a header, then one row per frame:
+ *   time_s,id,message,counter,e2e,<every non-E2E signal of squeal.dbc in
+ *   DBC order, named as in the DBC>,raw
+ * A signal's cell is empty when the frame does not carry it (other message
+ * or other SquealDiag page), "NA" when not available; enumerations
+ * (SquealState, WarningLevel, SquealDiag_Page) are their numbers; raw is the
+ * payload in hex. The column set depends only on the DBC, so scripts can
+ * rely on it; forward-fill a column to get its value at every time.
+ */
+#include <errno.h>
+#include <getopt.h>
+#include <inttypes.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "candump_log.h"
+#include "crc8_p01.h"
+#include "hal.h"
+#include "hal_linux.h"
+#include "sim_commands.h"
+#include "squeal_msgs.h"
+
+typedef struct {
+	bool seen;
+	uint8_t last_counter;
+} e2e_track_t;
+
+typedef struct {
+	bool csv;
+	e2e_track_t e2e[MSG_COUNT];
+	uint8_t decimals[MSG_SIG_COUNT];
+	char *out;      /* line being built */
+	size_t out_len;
+	size_t out_size;
+	bool overflow;
+} decoder_t;
+
+static const char *const state_names[16] = {
+	"stable", "bistable", "unstable", "not_sliding", "4", "5", "6", "7", "8",
+	"9", "10", "11", "12", "13", "14", "fault"
+};
+static const char *const level_names[4] = { "none", "advisory", "warning", "critical" };
+static const char *const page_names[4] = {
+	"uptime_and_bus_off", "task_time_and_overruns", "e2e_errors", "tx_and_frame_errors"
+};
+
+static void put(decoder_t *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void put(decoder_t *d, const char *fmt, ...)
+{
+	va_list ap;
+	int n;
+
+	if (d->out_len >= d->out_size) {
+		d->overflow = true;
+		return;
+	}
+	va_start(ap, fmt);
+	n = vsnprintf(d->out + d->out_len, d->out_size - d->out_len, fmt, ap);
+	va_end(ap);
+	if ((n < 0) || ((size_t)n >= d->out_size - d->out_len)) {
+		d->overflow = true;
+		d->out_len = d->out_size;
+		return;
+	}
+	d->out_len += (size_t)n;
+}
+
+/* Digits after the point that (raw * num + off) / den needs, 0..9. */
+static uint8_t sig_decimals(const msg_sig_desc_t *s)
+{
+	int64_t p = 1;
+	uint8_t k;
+
+	for (k = 0U; k < 9U; k++) {
+		if ((((int64_t)s->factor_num * p) % s->factor_den == 0) &&
+		    (((int64_t)s->offset_num * p) % s->factor_den == 0)) {
+			return k;
+		}
+		p *= 10;
+	}
+	return 9U;
+}
+
+/* Exact decimal text of a raw value ("NA" for not available). */
+static void put_phys(decoder_t *d, const msg_sig_desc_t *s, uint8_t decimals, int32_t raw)
+{
+	int64_t p = 1;
+	int64_t v;
+	uint64_t a;
+	uint8_t k;
+
+	if (((s->flags & MSG_SIG_HAS_NA) != 0U) && (raw == s->na_raw)) {
+		put(d, "NA");
+		return;
+	}
+	for (k = 0U; k < decimals; k++) {
+		p *= 10;
+	}
+	/* |raw| < 2^31, |num| small, p <= 10^9: fits in int64 for the table's
+	 * factors (checked: num * p < 2^32) */
+	v = ((int64_t)raw * s->factor_num + s->offset_num) * p / s->factor_den;
+	a = (v < 0) ? (uint64_t)(-v) : (uint64_t)v;
+	if (decimals == 0U) {
+		put(d, "%s%" PRIu64, (v < 0) ? "-" : "", a);
+	} else {
+		put(d, "%s%" PRIu64 ".%0*" PRIu64, (v < 0) ? "-" : "", a / (uint64_t)p,
+		    (int)decimals, a % (uint64_t)p);
+	}
+}
+
+static bool is_fault_bit(const msg_sig_desc_t *s)
+{
+	return (s->length == 1U) && (strncmp(s->name, "Fault_", 6) == 0);
+}
+
+/* E2E state of one frame of a known message (dlc already checked). */
+static const char *e2e_status(decoder_t *d, size_t mi, const uint8_t *data, uint8_t dlc,
+			      uint8_t *lost)
+{
+	const msg_desc_t *m = &msg_table[mi];
+	e2e_track_t *t = &d->e2e[mi];
+	const uint8_t id[2] = { (uint8_t)(m->data_id & 0xFFU), (uint8_t)(m->data_id >> 8) };
+	const uint8_t counter = data[1] & 0x0FU;
+	uint8_t crc;
+	uint8_t delta;
+
+	*lost = 0U;
+	crc = crc8_p01_update(crc8_p01_update(0U, id, 2U), data + 1, (size_t)dlc - 1U);
+	if (crc != data[0]) {
+		return "wrong_crc";
+	}
+	if (counter > 14U) {
+		return "bad_counter";
+	}
+	if (!t->seen) {
+		t->seen = true;
+		t->last_counter = counter;
+		return "initial";
+	}
+	delta = (uint8_t)((counter + 15U - t->last_counter) % 15U);
+	t->last_counter = counter;
+	if (delta == 0U) {
+		return "repeated";
+	}
+	if (delta == 1U) {
+		return "ok";
+	}
+	*lost = (uint8_t)(delta - 1U);
+	return "lost";
+}
+
+static void put_time(decoder_t *d, uint64_t t_ns)
+{
+	put(d, "%" PRIu64 ".%06" PRIu64, t_ns / 1000000000U, (t_ns % 1000000000U) / 1000U);
+}
+
+static void put_hex(decoder_t *d, const uint8_t *data, size_t len)
+{
+	size_t i;
+
+	for (i = 0U; i < len; i++) {
+		put(d, "%02X", data[i]);
+	}
+}
+
+static void put_id(decoder_t *d, const candump_frame_t *f)
+{
+	if (f->kind == CANDUMP_KIND_ERROR) {
+		put(d, "%08" PRIX32, f->id | CANDUMP_ERR_FLAG);
+	} else if (f->ext) {
+		put(d, "%08" PRIX32, f->id);
+	} else {
+		put(d, "%03" PRIX32, f->id);
+	}
+}
+
+static const char *kind_name(const candump_frame_t *f)
+{
+	switch (f->kind) {
+	case CANDUMP_KIND_RTR:
+		return "remote";
+	case CANDUMP_KIND_FD:
+		return "fd";
+	case CANDUMP_KIND_ERROR:
+		return "error";
+	case CANDUMP_KIND_XL:
+		return "xl";
+	default:
+		return "unknown";
+	}
+}
+
+static void csv_header(decoder_t *d)
+{
+	size_t i;
+
+	put(d, "time_s,id,message,counter,e2e");
+	for (i = 0U; i < MSG_SIG_COUNT; i++) {
+		if ((msg_sig_table[i].flags & MSG_SIG_E2E) == 0U) {
+			put(d, ",%s", msg_sig_table[i].name);
+		}
+	}
+	put(d, ",raw\n");
+}
+
+static void decode_frame(decoder_t *d, const candump_frame_t *f)
+{
+	const msg_desc_t *m = NULL;
+	size_t mi = 0U;
+	const char *e2e = "";
+	uint8_t lost = 0U;
+	bool dlc_ok = false;
+	size_t i;
+
+	if ((f->kind == CANDUMP_KIND_CLASSIC) && !f->ext) {
+		m = msg_desc_find((uint16_t)f->id);
+	}
+	if (m != NULL) {
+		mi = (size_t)(m - msg_table);
+		dlc_ok = (f->len == m->dlc);
+		e2e = dlc_ok ? e2e_status(d, mi, f->data, f->len, &lost) : "bad_dlc";
+	}
+	put_time(d, f->t_ns);
+	if (d->csv) {
+		put(d, ",");
+		put_id(d, f);
+		put(d, ",%s,", (m != NULL) ? m->name : kind_name(f));
+		if (dlc_ok) {
+			put(d, "%u", f->data[1] & 0x0FU);
+		}
+		put(d, ",%s", e2e);
+		if (lost != 0U) {
+			put(d, ":%u", lost);
+		}
+		for (i = 0U; i < MSG_SIG_COUNT; i++) {
+			const msg_sig_desc_t *s = &msg_sig_table[i];
+			int32_t raw;
+
+			if ((s->flags & MSG_SIG_E2E) != 0U) {
+				continue;
+			}
+			put(d, ",");
+			if (dlc_ok && (s->msg_id == m->id) &&
+			    (msg_sig_get_raw(s, f->data, f->len, &raw) == SQ_OK)) {
+				put_phys(d, s, d->decimals[i], raw);
+			}
+		}
+		put(d, ",");
+		if ((f->kind != CANDUMP_KIND_RTR) && (f->kind != CANDUMP_KIND_XL)) {
+			put_hex(d, f->data, f->len);
+		}
+		put(d, "\n");
+		return;
+	}
+	put(d, " ");
+	if ((m == NULL) || !dlc_ok) {
+		if (m != NULL) {
+			put(d, "%s bad_dlc ", m->name);
+		} else {
+			put_id(d, f);
+			put(d, " %s ", kind_name(f));
+		}
+		if (f->kind == CANDUMP_KIND_XL) {
+			put(d, "[%u]\n", f->xl_len);
+			return;
+		}
+		if (f->kind == CANDUMP_KIND_FD) {
+			put(d, "flags=%X ", f->fd_flags);
+		}
+		put(d, "[%u]", f->len);
+		if (f->kind != CANDUMP_KIND_RTR) {
+			put(d, " ");
+			put_hex(d, f->data, f->len);
+		}
+		put(d, "\n");
+		return;
+	}
+	put(d, "%s", m->name);
+	{
+		bool any_fault_sig = false;
+		bool any_fault = false;
+
+		for (i = m->sig_first; i < (size_t)m->sig_first + m->sig_count; i++) {
+			const msg_sig_desc_t *s = &msg_sig_table[i];
+			int32_t raw;
+
+			if (((s->flags & MSG_SIG_E2E) != 0U) ||
+			    (msg_sig_get_raw(s, f->data, f->len, &raw) != SQ_OK)) {
+				continue;
+			}
+			if (strcmp(s->name, "SquealState") == 0) {
+				put(d, " state=%s", state_names[raw & 0xF]);
+			} else if (strcmp(s->name, "WarningLevel") == 0) {
+				if ((raw >= 0) && (raw < 4)) {
+					put(d, " warning=%s", level_names[raw]);
+				} else {
+					put(d, " warning=%" PRId32, raw);
+				}
+			} else if (strcmp(s->name, "SquealDiag_Page") == 0) {
+				if ((raw >= 0) && (raw < 4)) {
+					put(d, " page=%s", page_names[raw]);
+				} else {
+					put(d, " page=%" PRId32, raw);
+				}
+			} else if (is_fault_bit(s)) {
+				if (!any_fault_sig) {
+					put(d, " faults=");
+					any_fault_sig = true;
+				}
+				if (raw != 0) {
+					put(d, "%s%s", any_fault ? "|" : "", s->name + 6);
+					any_fault = true;
+				}
+			} else {
+				if (any_fault_sig && !any_fault) {
+					put(d, "none");
+					any_fault = true;
+				}
+				put(d, " %s=", s->name);
+				put_phys(d, s, d->decimals[i], raw);
+			}
+		}
+		if (any_fault_sig && !any_fault) {
+			put(d, "none");
+		}
+	}
+	put(d, " ctr=%u e2e=%s", f->data[1] & 0x0FU, e2e);
+	if (lost != 0U) {
+		put(d, ":%u", lost);
+	}
+	put(d, "\n");
+}
+
+static int flush_line(decoder_t *d)
+{
+	int rc = 0;
+
+	if (d->overflow) {
+		rc = -1; /* cannot happen with the table's signals; never print half */
+	} else if (fwrite(d->out, 1U, d->out_len, stdout) != d->out_len) {
+		rc = -1;
+	}
+	d->out_len = 0U;
+	d->overflow = false;
+	return rc;
+}
+
+static void decode_usage(FILE *f)
+{
+	fprintf(f,
+		"usage: squeal-sim decode [LOG|-] [--csv]\n"
+		"       squeal-sim decode --iface IF [--csv]\n\n"
+		"Prints every frame of the monitor's messages and inputs (squeal.dbc) as\n"
+		"physical values with names and state names, checking E2E (CRC with the\n"
+		"DBC's data ID, alive counter sequence per message); other frames raw.\n"
+		"Reads a candump -L log (default: stdin), or a SocketCAN interface until\n"
+		"SIGINT/SIGTERM.\n\n"
+		"  --csv       one CSV row per frame: time_s,id,message,counter,e2e,\n"
+		"              every signal of the DBC (empty if not in the frame,\n"
+		"              NA if not available),raw\n"
+		"  --iface IF  read from a CAN interface (vcan0, can0, ...)\n\n"
+		"Malformed log lines are reported on stderr as LOG:LINE: message.\n"
+		"Exit status: 0 done, 1 input error, 2 bad usage.\n");
+}
+
+static volatile bool stop_flag;
+
+static int decode_iface(decoder_t *d, const char *iface)
+{
+	hal_can_frame_t hf;
+	candump_frame_t f;
+	int rc;
+
+	if (hal_linux_install_signal_handlers(&stop_flag) != SQ_OK) {
+		fprintf(stderr, "squeal-sim decode: %s\n", hal_linux_strerror());
+		return 1;
+	}
+	rc = hal_linux_open(iface, NULL);
+	if (rc != SQ_OK) {
+		fprintf(stderr, "squeal-sim decode: %s\n", hal_linux_strerror());
+		return 1;
+	}
+	while (!stop_flag) {
+		hal_idle_until(hal_time_us() + 200000U);
+		while (!stop_flag && (hal_can_receive(&hf) == SQ_OK)) {
+			memset(&f, 0, sizeof(f));
+			f.t_ns = hf.timestamp_us * 1000U;
+			f.id = hf.id;
+			f.len = hf.dlc;
+			f.ext = (hf.flags & HAL_CAN_FLAG_EXT) != 0U;
+			memcpy(f.data, hf.data, HAL_CAN_MAX_DLEN);
+			if ((hf.flags & HAL_CAN_FLAG_ERR) != 0U) {
+				f.kind = CANDUMP_KIND_ERROR;
+				f.id &= CANDUMP_ERR_MASK;
+			} else if ((hf.flags & HAL_CAN_FLAG_RTR) != 0U) {
+				f.kind = CANDUMP_KIND_RTR;
+			}
+			decode_frame(d, &f);
+			if (flush_line(d) != 0) {
+				hal_linux_close();
+				return 1;
+			}
+		}
+	}
+	hal_linux_close();
+	return 0;
+}
+
+static int decode_log(decoder_t *d, const char *path)
+{
+	static candump_reader_t reader;
+	const char *name = path;
+	candump_frame_t f;
+	const char *line;
+	size_t len;
+	bool too_long;
+	FILE *in = stdin;
+	int rc;
+	int status = 0;
+
+	if ((path == NULL) || (strcmp(path, "-") == 0)) {
+		name = "<stdin>";
+	} else {
+		in = fopen(path, "rb");
+		if (in == NULL) {
+			fprintf(stderr, "squeal-sim decode: cannot open %s: %s\n", path, strerror(errno));
+			return 1;
+		}
+	}
+	candump_reader_init(&reader, in);
+	while ((rc = candump_reader_next(&reader, &line, &len, &too_long)) > 0) {
+		candump_err_t err = CANDUMP_OK;
+		size_t col = 0U;
+
+		if (too_long) {
+			fprintf(stderr, "%s:%" PRIu64 ": %s\n", name, reader.line_no,
+				candump_strerror(CANDUMP_ERR_TOO_LONG));
+			continue;
+		}
+		switch (candump_parse_line(line, len, &f, &err, &col)) {
+		case CANDUMP_LINE_FRAME:
+			decode_frame(d, &f);
+			if (flush_line(d) != 0) {
+				status = 1;
+			}
+			break;
+		case CANDUMP_LINE_MALFORMED:
+			fprintf(stderr, "%s:%" PRIu64 ": %s (column %zu)\n", name, reader.line_no,
+				candump_strerror(err), col + 1U);
+			break;
+		default:
+			break;
+		}
+	}
+	if (rc < 0) {
+		fprintf(stderr, "squeal-sim decode: %s: read error\n", name);
+		status = 1;
+	}
+	if (in != stdin) {
+		(void)fclose(in);
+	}
+	if (fflush(stdout) != 0) {
+		status = 1;
+	}
+	return status;
+}
+
+int cmd_decode(int argc, char **argv)
+{
+	enum { OPT_CSV = 256, OPT_IFACE, OPT_HELP };
+	static const struct option options[] = {
+		{ "csv", no_argument, NULL, OPT_CSV },
+		{ "iface", required_argument, NULL, OPT_IFACE },
+		{ "help", no_argument, NULL, OPT_HELP },
+		{ NULL, 0, NULL, 0 },
+	};
+	static char linebuf[4096];
+	static char outbuf[1U << 16];
+	static decoder_t d;
+	const char *iface = NULL;
+	const char *path = NULL;
+	size_t i;
+	int c;
+
+	memset(&d, 0, sizeof(d));
+	d.out = linebuf;
+	d.out_size = sizeof(linebuf);
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "h", options, NULL)) != -1) {
+		switch (c) {
+		case OPT_CSV:
+			d.csv = true;
+			break;
+		case OPT_IFACE:
+			iface = optarg;
+			break;
+		case OPT_HELP:
+		case 'h':
+			decode_usage(stdout);
+			return 0;
+		default:
+			decode_usage(stderr);
+			return 2;
+		}
+	}
+	if (optind < argc) {
+		path = argv[optind++];
+	}
+	if ((optind < argc) || ((iface != NULL) && (path != NULL))) {
+		fprintf(stderr, "squeal-sim decode: give one LOG, -, or --iface IF\n");
+		decode_usage(stderr);
+		return 2;
+	}
+	for (i = 0U; i < MSG_SIG_COUNT; i++) {
+		d.decimals[i] = sig_decimals(&msg_sig_table[i]);
+	}
+	/* before any output: line buffered live, block buffered from a log */
+	if (iface != NULL) {
+		(void)setvbuf(stdout, NULL, _IOLBF, 0);
+	} else {
+		(void)setvbuf(stdout, outbuf, _IOFBF, sizeof(outbuf));
+	}
+	if (d.csv) {
+		csv_header(&d);
+		if (flush_line(&d) != 0) {
+			return 1;
+		}
+	}
+	if (iface != NULL) {
+		return decode_iface(&d, iface);
+	}
+	return decode_log(&d, path);
+}

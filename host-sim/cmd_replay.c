@@ -1,0 +1,627 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * squeal-sim replay LOG|- : the unchanged firmware (squeal_app_init/poll)
+ * fed from a candump -L log in virtual time (hal_vbus), offline and
+ * deterministic.
+ *
+ * Time: the first frame's timestamp (microseconds; a 9-digit log is
+ * truncated to us, the firmware's resolution) starts the firmware. Before
+ * each frame, every 1 ms tick up to the frame's time is run (set the virtual
+ * clock, poll, take what the ECU sent); then the clock is set to the frame's
+ * time, the frame is offered to the CAN controller and the firmware polls
+ * once more. After the last frame the ticks go on for --tail-ms (default
+ * 100 ms: ten SquealStatus periods, enough for the status after the last
+ * input and for the staleness timeout of 30 ms to show). Nothing depends on
+ * the wall clock, so the same log gives the same bytes.
+ *
+ * A timestamp earlier than the current virtual time is reported and the
+ * frame is given at the current time (time never goes back). A gap longer
+ * than --max-gap seconds (default 3600) is reported and skipped: the clock
+ * jumps, without the ticks in between (a mix of relative and absolute
+ * timestamps would otherwise tick for decades).
+ *
+ * Output: every frame the ECU sends, as candump -L lines on stdout (the
+ * log's first interface name or --iface-out); the summary on stderr.
+ * Memory is constant: the log is streamed line by line.
+ */
+#include <errno.h>
+#include <getopt.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "calib.h"
+#include "calib_text.h"
+#include "candump_log.h"
+#include "hal_vbus.h"
+#include "monitor.h"
+#include "sim_commands.h"
+#include "squeal_app.h"
+#include "squeal_msgs.h"
+
+#define TICK_US 1000U
+#define N_STATES 5U /* stable, bistable, unstable, not sliding, fault */
+#define N_LEVELS 4U
+
+static const char *const state_names[N_STATES] = {
+	"stable", "bistable", "unstable", "not_sliding", "fault"
+};
+static const char *const level_names[N_LEVELS] = {
+	"none", "advisory", "warning", "critical"
+};
+
+typedef struct {
+	const char *log_name;
+	const char *calib_path;
+	const char *iface_out;
+	uint64_t tail_us;
+	uint64_t max_gap_us;
+	bool rss;
+} replay_args_t;
+
+typedef struct {
+	/* lines */
+	uint64_t lines;
+	uint64_t frames;
+	uint64_t comments;
+	uint64_t blanks;
+	uint64_t dropcount_lines;
+	uint64_t dropped;
+	uint64_t malformed;
+	/* frames not given to the firmware or refused by its controller */
+	uint64_t unsupported_fd;
+	uint64_t unsupported_xl;
+	uint64_t filtered_id;
+	uint64_t filtered_rtr;
+	uint64_t filtered_ext;
+	uint64_t rx_overflow;
+	uint64_t pushed;
+	/* time */
+	bool started;
+	uint64_t t0_us;
+	uint64_t now_us;
+	uint64_t next_tick_us;
+	uint64_t backwards;
+	uint64_t gaps;
+	uint64_t state_us[N_STATES];
+	uint8_t state;
+	uint8_t warning;
+	uint64_t into_level[N_LEVELS];
+	uint64_t transitions[N_STATES][N_STATES];
+	/* output */
+	char iface[CANDUMP_IFACE_MAX + 1U];
+	uint64_t out_frames;
+	uint64_t out_by_msg[MSG_COUNT + 1U];
+	bool out_error;
+} replay_t;
+
+static unsigned state_index(uint8_t s)
+{
+	return (s < 4U) ? s : 4U;
+}
+
+static void replay_usage(FILE *f)
+{
+	fprintf(f,
+		"usage: squeal-sim replay LOG|- [--calib FILE] [--iface-out NAME]\n"
+		"         [--tail-ms MS] [--max-gap S] [--rss]\n\n"
+		"Feeds a candump -L log (a file, or - for stdin) through the firmware in\n"
+		"virtual time taken from the log's timestamps, offline. Writes every frame\n"
+		"the ECU sends as a candump -L log on stdout, and a summary on stderr:\n"
+		"frames read, used, rejected by reason, time in each state, warnings\n"
+		"raised, state changes. Malformed lines are reported as LOG:LINE: message\n"
+		"and skipped. The same log gives the same output, byte for byte.\n\n"
+		"  --calib FILE     calibration text file (docs/calib-example.txt)\n"
+		"  --iface-out NAME interface name of the output lines (default: the\n"
+		"                   log's first interface)\n"
+		"  --tail-ms MS     run on after the last frame (default 100)\n"
+		"  --max-gap S      a gap between frames longer than S seconds is\n"
+		"                   skipped instead of simulated (default 3600)\n"
+		"  --rss            add the peak resident memory (VmHWM) to the summary\n\n"
+		"CAN FD and XL frames are counted as unsupported (classic controller).\n"
+		"Exit status: 0 done (also with malformed lines), 1 input/calibration\n"
+		"error, 2 bad usage.\n");
+}
+
+static int parse_u64(const char *flag, const char *text, uint64_t max, uint64_t *out)
+{
+	char *end = NULL;
+	unsigned long long v;
+
+	errno = 0;
+	v = strtoull(text, &end, 10);
+	if ((end == text) || (*end != '\0') || (errno != 0) || (text[0] == '-') || (v > max)) {
+		fprintf(stderr, "squeal-sim replay: %s needs a whole number 0..%llu, got '%s'\n",
+			flag, (unsigned long long)max, text);
+		return -1;
+	}
+	*out = v;
+	return 0;
+}
+
+static int replay_parse(int argc, char **argv, replay_args_t *a)
+{
+	enum { OPT_CALIB = 256, OPT_IFACE_OUT, OPT_TAIL, OPT_GAP, OPT_RSS, OPT_HELP };
+	static const struct option options[] = {
+		{ "calib", required_argument, NULL, OPT_CALIB },
+		{ "iface-out", required_argument, NULL, OPT_IFACE_OUT },
+		{ "tail-ms", required_argument, NULL, OPT_TAIL },
+		{ "max-gap", required_argument, NULL, OPT_GAP },
+		{ "rss", no_argument, NULL, OPT_RSS },
+		{ "help", no_argument, NULL, OPT_HELP },
+		{ NULL, 0, NULL, 0 },
+	};
+	uint64_t v;
+	int c;
+
+	a->tail_us = 100000U;
+	a->max_gap_us = 3600ULL * 1000000ULL;
+	optind = 1;
+	while ((c = getopt_long(argc, argv, "h", options, NULL)) != -1) {
+		switch (c) {
+		case OPT_CALIB:
+			a->calib_path = optarg;
+			break;
+		case OPT_IFACE_OUT:
+			if ((strlen(optarg) == 0U) || (strlen(optarg) > CANDUMP_IFACE_MAX) ||
+			    (strpbrk(optarg, " \t\n") != NULL)) {
+				fprintf(stderr, "squeal-sim replay: --iface-out needs 1..%u characters without blanks\n",
+					CANDUMP_IFACE_MAX);
+				return 2;
+			}
+			a->iface_out = optarg;
+			break;
+		case OPT_TAIL:
+			if (parse_u64("--tail-ms", optarg, 86400000ULL, &v) != 0) {
+				return 2;
+			}
+			a->tail_us = v * 1000U;
+			break;
+		case OPT_GAP:
+			if (parse_u64("--max-gap", optarg, 31536000ULL, &v) != 0) {
+				return 2;
+			}
+			a->max_gap_us = v * 1000000U;
+			break;
+		case OPT_RSS:
+			a->rss = true;
+			break;
+		case OPT_HELP:
+		case 'h':
+			replay_usage(stdout);
+			return 1;
+		default:
+			replay_usage(stderr);
+			return 2;
+		}
+	}
+	if (optind + 1 != argc) {
+		fprintf(stderr, "squeal-sim replay: give exactly one LOG (or - for stdin)\n");
+		replay_usage(stderr);
+		return 2;
+	}
+	a->log_name = argv[optind];
+	return 0;
+}
+
+/* ---- output ------------------------------------------------------------------ */
+
+static void emit(replay_t *r, const hal_can_frame_t *hf)
+{
+	candump_frame_t f;
+	char line[CANDUMP_FORMAT_MAX + 2U];
+	const msg_desc_t *d;
+	int n;
+
+	memset(&f, 0, sizeof(f));
+	f.t_ns = hf->timestamp_us * 1000U;
+	memcpy(f.iface, r->iface, sizeof(f.iface));
+	f.kind = ((hf->flags & HAL_CAN_FLAG_RTR) != 0U) ? CANDUMP_KIND_RTR : CANDUMP_KIND_CLASSIC;
+	f.ext = (hf->flags & HAL_CAN_FLAG_EXT) != 0U;
+	f.id = hf->id;
+	f.len = hf->dlc;
+	memcpy(f.data, hf->data, HAL_CAN_MAX_DLEN);
+	n = candump_format_frame(&f, true, line, sizeof(line));
+	if (n < 0) {
+		r->out_error = true;
+		return;
+	}
+	if (fwrite(line, 1U, (size_t)n, stdout) != (size_t)n) {
+		r->out_error = true;
+	}
+	r->out_frames++;
+	d = f.ext ? NULL : msg_desc_find((uint16_t)f.id);
+	r->out_by_msg[(d != NULL) ? (size_t)(d - msg_table) : MSG_COUNT]++;
+}
+
+/* After each poll: take what the ECU sent, follow state and warning. */
+static void after_poll(replay_t *r)
+{
+	const monitor_t *m = squeal_app_monitor();
+	hal_can_frame_t f;
+	unsigned from;
+	unsigned to;
+
+	while (hal_vbus_pop_tx(&f) == SQ_OK) {
+		emit(r, &f);
+	}
+	from = state_index(r->state);
+	to = state_index(m->state);
+	if (from != to) {
+		r->transitions[from][to]++;
+	}
+	r->state = m->state;
+	if ((m->warning != r->warning) && (m->warning < N_LEVELS)) {
+		r->into_level[m->warning]++;
+	}
+	r->warning = m->warning;
+}
+
+/* Move the virtual clock to t_us (never back); the time in between counts
+ * for the state that held during it. */
+static void set_time(replay_t *r, uint64_t t_us)
+{
+	if (t_us > r->now_us) {
+		r->state_us[state_index(r->state)] += t_us - r->now_us;
+		r->now_us = t_us;
+		hal_vbus_set_time_us(t_us);
+	}
+}
+
+/* Every 1 ms tick up to and including t_us. */
+static void run_until(replay_t *r, uint64_t t_us)
+{
+	while (r->next_tick_us <= t_us) {
+		set_time(r, r->next_tick_us);
+		(void)squeal_app_poll();
+		after_poll(r);
+		r->next_tick_us += TICK_US;
+	}
+	set_time(r, t_us);
+}
+
+static void start(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
+{
+	const monitor_t *m;
+
+	r->started = true;
+	r->t0_us = f->t_ns / 1000U;
+	r->now_us = r->t0_us;
+	r->next_tick_us = r->t0_us;
+	hal_vbus_set_time_us(r->t0_us);
+	if (a->iface_out != NULL) {
+		(void)snprintf(r->iface, sizeof(r->iface), "%s", a->iface_out);
+	} else {
+		memcpy(r->iface, f->iface, sizeof(r->iface));
+	}
+	(void)squeal_app_init();
+	m = squeal_app_monitor();
+	r->state = m->state;
+	r->warning = m->warning;
+}
+
+static void give_frame(replay_t *r, const candump_frame_t *f)
+{
+	hal_can_frame_t hf;
+	int rc;
+
+	switch (f->kind) {
+	case CANDUMP_KIND_FD:
+		r->unsupported_fd++;
+		return;
+	case CANDUMP_KIND_XL:
+		r->unsupported_xl++;
+		return;
+	default:
+		break;
+	}
+	memset(&hf, 0, sizeof(hf));
+	hf.id = f->id;
+	hf.dlc = (f->len > HAL_CAN_MAX_DLEN) ? (uint8_t)HAL_CAN_MAX_DLEN : f->len;
+	if (f->kind == CANDUMP_KIND_RTR) {
+		hf.flags |= HAL_CAN_FLAG_RTR;
+	} else {
+		memcpy(hf.data, f->data, hf.dlc);
+	}
+	if (f->kind == CANDUMP_KIND_ERROR) {
+		hf.flags |= HAL_CAN_FLAG_ERR;
+	} else if (f->ext) {
+		hf.flags |= HAL_CAN_FLAG_EXT;
+	}
+	rc = hal_vbus_push_rx(&hf);
+	if (rc == SQ_ENOENT) {
+		if ((hf.flags & HAL_CAN_FLAG_RTR) != 0U) {
+			r->filtered_rtr++;
+		} else if ((hf.flags & HAL_CAN_FLAG_EXT) != 0U) {
+			r->filtered_ext++;
+		} else {
+			r->filtered_id++;
+		}
+		return;
+	}
+	if (rc == SQ_ENOBUFS) {
+		r->rx_overflow++;
+		return;
+	}
+	r->pushed++;
+	(void)squeal_app_poll();
+	after_poll(r);
+}
+
+static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a,
+		     uint64_t line_no)
+{
+	uint64_t t_us = f->t_ns / 1000U;
+
+	if (!r->started) {
+		start(r, f, a);
+	}
+	if (t_us < r->now_us) {
+		const uint64_t back = r->now_us - t_us;
+
+		r->backwards++;
+		fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s: frame given at the current time\n",
+			a->log_name, (unsigned long long)line_no,
+			(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U));
+		t_us = r->now_us;
+	} else if (t_us - r->now_us > a->max_gap_us) {
+		const uint64_t gap = t_us - r->now_us;
+
+		r->gaps++;
+		fprintf(stderr, "%s:%llu: gap of %llu.%06llu s > --max-gap: skipped, not simulated\n",
+			a->log_name, (unsigned long long)line_no,
+			(unsigned long long)(gap / 1000000U), (unsigned long long)(gap % 1000000U));
+		/* keep the tick grid's phase */
+		r->next_tick_us += ((t_us - r->next_tick_us) / TICK_US) * TICK_US;
+		set_time(r, t_us);
+	}
+	run_until(r, t_us);
+	give_frame(r, f);
+}
+
+/* ---- summary ------------------------------------------------------------------- */
+
+static void print_us(FILE *o, uint64_t us)
+{
+	fprintf(o, "%llu.%06llu", (unsigned long long)(us / 1000000U),
+		(unsigned long long)(us % 1000000U));
+}
+
+static long vm_hwm_kb(void)
+{
+	FILE *f = fopen("/proc/self/status", "r");
+	char line[256];
+	long kb = -1;
+
+	if (f == NULL) {
+		return -1;
+	}
+	while (fgets(line, sizeof(line), f) != NULL) {
+		if (strncmp(line, "VmHWM:", 6) == 0) {
+			kb = strtol(line + 6, NULL, 10);
+			break;
+		}
+	}
+	(void)fclose(f);
+	return kb;
+}
+
+static void summary(const replay_t *r, const replay_args_t *a)
+{
+	FILE *o = stderr;
+	const monitor_t *m = squeal_app_monitor();
+	const input_counters_t *sp = &m->speed.count;
+	const input_counters_t *fo = &m->force.count;
+	unsigned i;
+	unsigned j;
+	uint64_t changes = 0U;
+
+	fprintf(o, "replay summary: %s\n", a->log_name);
+	fprintf(o, "  lines                 %llu (frames %llu, comments %llu, blank %llu, dropcount %llu, malformed %llu)\n",
+		(unsigned long long)r->lines, (unsigned long long)r->frames,
+		(unsigned long long)r->comments, (unsigned long long)r->blanks,
+		(unsigned long long)r->dropcount_lines, (unsigned long long)r->malformed);
+	if (!r->started) {
+		fprintf(o, "  no frames: the firmware was not started\n");
+		return;
+	}
+	fprintf(o, "  virtual_time_s        ");
+	print_us(o, r->now_us - r->t0_us);
+	fprintf(o, " (from ");
+	print_us(o, r->t0_us);
+	fprintf(o, ", tail %llu ms)\n", (unsigned long long)(a->tail_us / 1000U));
+	fprintf(o, "  frames_read           %llu\n", (unsigned long long)r->frames);
+	fprintf(o, "  frames_used           %llu (DiscSpeed %u, PadForce %u)\n",
+		(unsigned long long)sp->used + fo->used, sp->used, fo->used);
+	fprintf(o, "  rejected:\n");
+	fprintf(o, "    malformed_lines     %llu\n", (unsigned long long)r->malformed);
+	fprintf(o, "    filtered_ids        %llu (other ids %llu, remote %llu, extended %llu)\n",
+		(unsigned long long)(r->filtered_id + r->filtered_rtr + r->filtered_ext),
+		(unsigned long long)r->filtered_id, (unsigned long long)r->filtered_rtr,
+		(unsigned long long)r->filtered_ext);
+	fprintf(o, "    unsupported_fd_xl   %llu (FD %llu, XL %llu)\n",
+		(unsigned long long)(r->unsupported_fd + r->unsupported_xl),
+		(unsigned long long)r->unsupported_fd, (unsigned long long)r->unsupported_xl);
+	fprintf(o, "    e2e_wrong_crc       %llu (DiscSpeed %u, PadForce %u)\n",
+		(unsigned long long)sp->e2e_wrong_crc + fo->e2e_wrong_crc, sp->e2e_wrong_crc,
+		fo->e2e_wrong_crc);
+	fprintf(o, "    e2e_wrong_sequence  %llu (DiscSpeed %u, PadForce %u)\n",
+		(unsigned long long)sp->e2e_wrong_sequence + fo->e2e_wrong_sequence,
+		sp->e2e_wrong_sequence, fo->e2e_wrong_sequence);
+	fprintf(o, "    repeated            %llu (DiscSpeed %u, PadForce %u)\n",
+		(unsigned long long)sp->e2e_repeated + fo->e2e_repeated, sp->e2e_repeated,
+		fo->e2e_repeated);
+	fprintf(o, "    implausible         %llu (DiscSpeed %u, PadForce %u)\n",
+		(unsigned long long)sp->implausible + fo->implausible, sp->implausible,
+		fo->implausible);
+	fprintf(o, "    bad_dlc             %llu (DiscSpeed %u, PadForce %u)\n",
+		(unsigned long long)sp->bad_dlc + fo->bad_dlc, sp->bad_dlc, fo->bad_dlc);
+	fprintf(o, "    error_frames        %u\n", m->count.error_frames);
+	fprintf(o, "    remote_or_extended  %u\n", m->count.rtr_or_ext);
+	fprintf(o, "    rx_overflow         %llu\n", (unsigned long long)r->rx_overflow);
+	fprintf(o, "  e2e_frames_lost       %llu (counter gaps: DiscSpeed %u, PadForce %u)\n",
+		(unsigned long long)sp->e2e_lost + fo->e2e_lost, sp->e2e_lost, fo->e2e_lost);
+	fprintf(o, "  stale_events          %llu (DiscSpeed %u, PadForce %u)\n",
+		(unsigned long long)sp->stale_events + fo->stale_events, sp->stale_events,
+		fo->stale_events);
+	fprintf(o, "  candump_dropped       %llu\n", (unsigned long long)r->dropped);
+	fprintf(o, "  time_backwards        %llu\n", (unsigned long long)r->backwards);
+	fprintf(o, "  gaps_skipped          %llu\n", (unsigned long long)r->gaps);
+	fprintf(o, "  state_time_s         ");
+	for (i = 0U; i < N_STATES; i++) {
+		fprintf(o, " %s=", state_names[i]);
+		print_us(o, r->state_us[i]);
+	}
+	fprintf(o, "\n  warnings_raised      ");
+	for (i = 1U; i < N_LEVELS; i++) {
+		fprintf(o, " %s=%llu", level_names[i], (unsigned long long)r->into_level[i]);
+	}
+	fprintf(o, " (back to none: %llu)\n", (unsigned long long)r->into_level[0]);
+	for (i = 0U; i < N_STATES; i++) {
+		for (j = 0U; j < N_STATES; j++) {
+			changes += r->transitions[i][j];
+		}
+	}
+	fprintf(o, "  state_changes         %llu", (unsigned long long)changes);
+	for (i = 0U; i < N_STATES; i++) {
+		for (j = 0U; j < N_STATES; j++) {
+			if (r->transitions[i][j] != 0U) {
+				fprintf(o, " %s->%s=%llu", state_names[i], state_names[j],
+					(unsigned long long)r->transitions[i][j]);
+			}
+		}
+	}
+	fprintf(o, "\n  final_state           %s, warning %s\n",
+		state_names[state_index(m->state)],
+		(m->warning < N_LEVELS) ? level_names[m->warning] : "?");
+	fprintf(o, "  output_frames         %llu (", (unsigned long long)r->out_frames);
+	for (i = 0U; i < MSG_COUNT; i++) {
+		fprintf(o, "%s%s %llu", (i == 0U) ? "" : ", ", msg_table[i].name,
+			(unsigned long long)r->out_by_msg[i]);
+	}
+	fprintf(o, ", other %llu)\n", (unsigned long long)r->out_by_msg[MSG_COUNT]);
+	if (squeal_app_init_status() != SQ_OK) {
+		fprintf(o, "  firmware_init         error %d (running with defaults)\n",
+			squeal_app_init_status());
+	}
+	if (a->rss) {
+		fprintf(o, "  peak_rss_kb           %ld\n", vm_hwm_kb());
+	}
+}
+
+/* ---- main ------------------------------------------------------------------------ */
+
+static int load_calib(const char *path)
+{
+	calib_t cal;
+	uint8_t block[CALIB_BLOCK_LEN];
+	char err[256];
+
+	if (calib_text_load(path, &cal, err, sizeof(err)) != SQ_OK) {
+		fprintf(stderr, "squeal-sim replay: %s\n", err);
+		return -1;
+	}
+	if ((calib_encode(&cal, block, sizeof(block)) != SQ_OK) ||
+	    (hal_vbus_set_calib(block, sizeof(block)) != SQ_OK)) {
+		fprintf(stderr, "squeal-sim replay: %s: cannot store the calibration\n", path);
+		return -1;
+	}
+	return 0;
+}
+
+int cmd_replay(int argc, char **argv)
+{
+	static candump_reader_t reader; /* 70 kB: not on the stack */
+	static char outbuf[1U << 16];
+	static replay_t r;
+	replay_args_t a;
+	candump_frame_t f;
+	const char *line;
+	size_t len;
+	bool too_long;
+	FILE *in;
+	int rc;
+
+	memset(&a, 0, sizeof(a));
+	memset(&r, 0, sizeof(r));
+	rc = replay_parse(argc, argv, &a);
+	if (rc != 0) {
+		return (rc == 1) ? 0 : rc;
+	}
+	if (strcmp(a.log_name, "-") == 0) {
+		in = stdin;
+		a.log_name = "<stdin>";
+	} else {
+		in = fopen(a.log_name, "rb");
+		if (in == NULL) {
+			fprintf(stderr, "squeal-sim replay: cannot open %s: %s\n", a.log_name,
+				strerror(errno));
+			return 1;
+		}
+	}
+	(void)setvbuf(stdout, outbuf, _IOFBF, sizeof(outbuf));
+	hal_vbus_enable();
+	if ((a.calib_path != NULL) && (load_calib(a.calib_path) != 0)) {
+		if (in != stdin) {
+			(void)fclose(in);
+		}
+		return 1;
+	}
+	candump_reader_init(&reader, in);
+	for (;;) {
+		candump_err_t err = CANDUMP_OK;
+		size_t col = 0U;
+
+		rc = candump_reader_next(&reader, &line, &len, &too_long);
+		if (rc <= 0) {
+			break;
+		}
+		r.lines++;
+		if (too_long) {
+			r.malformed++;
+			fprintf(stderr, "%s:%llu: %s\n", a.log_name,
+				(unsigned long long)reader.line_no,
+				candump_strerror(CANDUMP_ERR_TOO_LONG));
+			continue;
+		}
+		switch (candump_parse_line(line, len, &f, &err, &col)) {
+		case CANDUMP_LINE_FRAME:
+			r.frames++;
+			on_frame(&r, &f, &a, reader.line_no);
+			break;
+		case CANDUMP_LINE_BLANK:
+			r.blanks++;
+			break;
+		case CANDUMP_LINE_COMMENT:
+			r.comments++;
+			break;
+		case CANDUMP_LINE_DROPCOUNT:
+			r.dropcount_lines++;
+			r.dropped += f.dropped;
+			break;
+		default:
+			r.malformed++;
+			fprintf(stderr, "%s:%llu: %s (column %zu)\n", a.log_name,
+				(unsigned long long)reader.line_no, candump_strerror(err), col + 1U);
+			break;
+		}
+	}
+	if (rc < 0) {
+		fprintf(stderr, "squeal-sim replay: %s: read error\n", a.log_name);
+	}
+	if (in != stdin) {
+		(void)fclose(in);
+	}
+	if (r.started) {
+		run_until(&r, r.now_us + a.tail_us);
+	}
+	if ((fflush(stdout) != 0) || r.out_error) {
+		fprintf(stderr, "squeal-sim replay: error writing the output\n");
+		summary(&r, &a);
+		return 1;
+	}
+	summary(&r, &a);
+	return (rc < 0) ? 1 : 0;
+}
