@@ -48,3 +48,20 @@ TEST_PROGS += tests/sim/test_oscsim_scipy.py
 ALL_TARGETS += build/host-fixed/oscsim
 tests/sim/bench_agreement.sh: build/host/oscsim build/host-fixed/oscsim
 BENCH_PROGS += tests/sim/bench_agreement.sh
+
+# Pictures for the README: `make plots` (PNG + SVG in build/plots/, the PNGs
+# copied to docs/img/). DRIVE_CSV=file.csv adds the drive over the map
+# (columns time_s,v0_mps,force_n,state,warning; tools/plots/plot_drive.py).
+PLOT_GRID ?= 100
+.PHONY: plots
+plots: build/host/oscsim
+	@mkdir -p build/plots docs/img
+	build/host/oscsim map --grid $(PLOT_GRID) --brake all --no-linear --csv build/plots/map.csv >build/plots/map-summary.txt
+	$(PYTHON) tools/plots/plot_map.py build/plots/map.csv --out build/plots
+	$(PYTHON) tools/plots/plot_phase.py --sim build/host/oscsim --out build/plots
+	$(if $(DRIVE_CSV),$(PYTHON) tools/plots/plot_drive.py $(DRIVE_CSV) --out build/plots)
+	cp build/plots/*.png docs/img/
+
+# Each picture made (small grids) and opened; the committed PNGs checked.
+tests/sim/test_plots.py: build/host/oscsim
+TEST_PROGS += tests/sim/test_plots.py

@@ -1,0 +1,159 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""A replayed drive over the stability map: the path of the operating
+point (v0, N) over the brake's map in the (v0, N) plane, coloured by the
+state the monitor reported, and a time plot of speed, force, state and
+warning level.
+
+input CSV columns: time_s,v0_mps,force_n,state,warning
+  state: a number (0 stable, 1 bistable, 2 unstable, 3 not sliding,
+  15 fault) or its name; warning: 0..3. Extra columns are ignored.
+The map background and borders come from the closed forms (model.md,
+exact criterion) for the brake given by the options (default: the
+paper's brake at a = 2 s/m).
+
+usage: plot_drive.py DRIVE.csv [--out DIR] [--name NAME] [--slope A]
+         [--damping D] [--omega0 W] [--mass M] [--delta-mu Y]
+writes DIR/NAME.{png,svg} (NAME default: drive)
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plotlib as P  # noqa: E402
+from plotlib import plt, np  # noqa: E402
+from matplotlib.colors import ListedColormap  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+
+NAMES = {0: "stable", 1: "bistable", 2: "unstable", 3: "not_sliding", 15: "fault"}
+PATH_COLORS = {"stable": "#1a9850", "bistable": "#d98e04", "unstable": "#b2182b",
+               "not_sliding": "#737373", "fault": "#542788"}
+
+
+def state_name(text):
+    text = text.strip()
+    try:
+        return NAMES.get(int(float(text)), "fault")
+    except ValueError:
+        return text if text in PATH_COLORS else "fault"
+
+
+def read_drive(path):
+    t, v, n, st, w = [], [], [], [], []
+    with open(path, newline="") as f:
+        rd = csv.DictReader(f)
+        need = {"time_s", "v0_mps", "force_n", "state", "warning"}
+        if not need.issubset(rd.fieldnames or []):
+            sys.exit(f"plot_drive: {path} needs columns {sorted(need)}")
+        for row in rd:
+            t.append(float(row["time_s"]))
+            v.append(float(row["v0_mps"]))
+            n.append(float(row["force_n"]))
+            st.append(state_name(row["state"]))
+            w.append(float(row["warning"]))
+    if not t:
+        sys.exit(f"plot_drive: {path} has no rows")
+    return np.array(t), np.array(v), np.array(n), st, np.array(w)
+
+
+def force_border(p, v0, kind):
+    """Pad force of a border at speed v0 (above it: more critical)."""
+    a, s = p["slope"], p["slope"] * v0
+    base = p["damping"] * p["omega0"] * p["mass"] / (a * p["delta_mu"])
+    if kind == "hopf":
+        lim = math.log(0.5)
+    elif kind == "exact":
+        lim = float(P.ln_i1_over_x(np.array([s]))[0])
+    else:
+        lim = math.log(0.5 + s * s / 16.0)
+    # ln Q = ln(base / N) + s = lim
+    return base * math.exp(s - lim)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("csv")
+    ap.add_argument("--out", default="build/plots")
+    ap.add_argument("--name", default="drive")
+    for opt, key in (("--slope", "slope"), ("--damping", "damping"), ("--omega0", "omega0"),
+                     ("--mass", "mass"), ("--delta-mu", "delta_mu")):
+        ap.add_argument(opt, type=float, default=P.DEFAULT[key], dest=key)
+    args = ap.parse_args()
+    p = dict(P.DEFAULT)
+    for key in ("slope", "damping", "omega0", "mass", "delta_mu"):
+        p[key] = getattr(args, key)
+    t, v, n, st, w = read_drive(args.csv)
+
+    fig = plt.figure(figsize=(14.0, 6.6))
+    gs = fig.add_gridspec(4, 2, width_ratios=(1.15, 1.0), hspace=0.15, wspace=0.22)
+    ax = fig.add_subplot(gs[:, 0])
+    v_max = max(1.1 * float(v.max()), 0.5)
+    n_max = max(1.15 * float(n.max()), 1000.0)
+    vv = np.linspace(v_max / 400, v_max, 300)
+    nn = np.linspace(n_max / 300, n_max, 240)
+    code = np.array([[P.STATE_CODE[P.classify(p, x, y)] for x in vv] for y in nn])
+    cmap = ListedColormap([P.STATE_COLORS["stable"], P.STATE_COLORS["bistable"],
+                           P.STATE_COLORS["unstable"]])
+    ax.pcolormesh(vv, nn / 1000.0, code, cmap=cmap, vmin=-0.5, vmax=2.5, shading="auto",
+                  rasterized=True)
+    for kind, style, lab in (("hopf", P.LINE_HOPF, "Hopf border N_H"),
+                             ("exact", P.LINE_EXACT, "exact limit"),
+                             ("cubic", P.LINE_CUBIC, "cubic limit (paper)")):
+        ax.plot(vv, [force_border(p, x, kind) / 1000.0 for x in vv], label=lab, **style)
+    # the path, segment by segment in the reported state's colour
+    for i in range(len(t) - 1):
+        ax.plot(v[i:i + 2], n[i:i + 2] / 1000.0, color=PATH_COLORS[st[i]], lw=2.4,
+                solid_capstyle="round")
+    ax.plot(v[0], n[0] / 1000.0, "o", color="k", ms=6)
+    ax.annotate("start", (v[0], n[0] / 1000.0), textcoords="offset points", xytext=(6, 6),
+                fontsize=8)
+    ax.plot(v[-1], n[-1] / 1000.0, "s", color="k", ms=6)
+    ax.annotate("end", (v[-1], n[-1] / 1000.0), textcoords="offset points", xytext=(6, -12),
+                fontsize=8)
+    ax.set_xlim(0, v_max)
+    ax.set_ylim(0, n_max / 1000.0)
+    ax.set_xlabel("disc surface speed v0 [m/s]")
+    ax.set_ylabel("pad force N [kN]")
+    ax.set_title(f"Operating point over the map (a = {p['slope']:g} s/m, D = {p['damping']:g})",
+                 fontsize=10)
+    handles, labels = ax.get_legend_handles_labels()
+    for name in ("stable", "bistable", "unstable", "not_sliding", "fault"):
+        if name in st:
+            handles.append(Line2D([], [], color=PATH_COLORS[name], lw=2.4))
+            labels.append(f"path: {name}")
+    ax.legend(handles, labels, fontsize=8, loc="upper right", framealpha=0.92)
+
+    axs = [fig.add_subplot(gs[i, 1]) for i in range(4)]
+    axs[0].plot(t, v, color="#2166ac")
+    axs[0].set_ylabel("v0 [m/s]")
+    axs[1].plot(t, n / 1000.0, color="#4d4d4d")
+    axs[1].set_ylabel("N [kN]")
+    codes = [{"stable": 0, "bistable": 1, "unstable": 2, "not_sliding": 3, "fault": 4}[s]
+             for s in st]
+    axs[2].step(t, codes, where="post", color="k", lw=1.0)
+    for i in range(len(t) - 1):
+        axs[2].axvspan(t[i], t[i + 1], color=PATH_COLORS[st[i]], alpha=0.35, lw=0)
+    axs[2].set_yticks([0, 1, 2, 3, 4])
+    axs[2].set_yticklabels(["stable", "bistable", "unstable", "not sl.", "fault"], fontsize=7)
+    axs[2].set_ylabel("state")
+    axs[3].step(t, w, where="post", color="#b2182b")
+    axs[3].set_yticks([0, 1, 2, 3])
+    axs[3].set_ylim(-0.3, 3.3)
+    axs[3].set_ylabel("warning")
+    axs[3].set_xlabel("time [s]")
+    for a in axs:
+        a.grid(alpha=0.3)
+        a.set_xlim(t[0], t[-1] if t[-1] > t[0] else t[0] + 1.0)
+    for a in axs[:-1]:
+        a.tick_params(labelbottom=False)
+    fig.suptitle("Replayed drive: where the brake operated, and what the monitor said",
+                 fontsize=11)
+    for path in P.save(fig, args.out, args.name):
+        print(path)
+
+
+if __name__ == "__main__":
+    main()
