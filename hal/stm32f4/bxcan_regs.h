@@ -1,0 +1,105 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * bxCAN registers (RM0090 section 32.9; identical on the STM32F1, RM0008
+ * section 24.9). Only what the driver uses; names as in the manual.
+ */
+#ifndef BXCAN_REGS_H
+#define BXCAN_REGS_H
+
+#include "cortex_m.h"
+
+#define CAN_MCR(b)   REG32((b) + 0x000UL)
+#define CAN_MSR(b)   REG32((b) + 0x004UL)
+#define CAN_TSR(b)   REG32((b) + 0x008UL)
+#define CAN_RF0R(b)  REG32((b) + 0x00CUL)
+#define CAN_RF1R(b)  REG32((b) + 0x010UL)
+#define CAN_IER(b)   REG32((b) + 0x014UL)
+#define CAN_ESR(b)   REG32((b) + 0x018UL)
+#define CAN_BTR(b)   REG32((b) + 0x01CUL)
+#define CAN_TIR(b, n)  REG32((b) + 0x180UL + 0x10UL * (n))
+#define CAN_TDTR(b, n) REG32((b) + 0x184UL + 0x10UL * (n))
+#define CAN_TDLR(b, n) REG32((b) + 0x188UL + 0x10UL * (n))
+#define CAN_TDHR(b, n) REG32((b) + 0x18CUL + 0x10UL * (n))
+#define CAN_RIR(b, n)  REG32((b) + 0x1B0UL + 0x10UL * (n))
+#define CAN_RDTR(b, n) REG32((b) + 0x1B4UL + 0x10UL * (n))
+#define CAN_RDLR(b, n) REG32((b) + 0x1B8UL + 0x10UL * (n))
+#define CAN_RDHR(b, n) REG32((b) + 0x1BCUL + 0x10UL * (n))
+#define CAN_FMR(b)   REG32((b) + 0x200UL)
+#define CAN_FM1R(b)  REG32((b) + 0x204UL)
+#define CAN_FS1R(b)  REG32((b) + 0x20CUL)
+#define CAN_FFA1R(b) REG32((b) + 0x214UL)
+#define CAN_FA1R(b)  REG32((b) + 0x21CUL)
+#define CAN_FR1(b, i) REG32((b) + 0x240UL + 8UL * (i))
+#define CAN_FR2(b, i) REG32((b) + 0x244UL + 8UL * (i))
+
+#define CAN_MCR_INRQ  (1UL << 0)
+#define CAN_MCR_SLEEP (1UL << 1)
+#define CAN_MCR_TXFP  (1UL << 2)
+#define CAN_MCR_RFLM  (1UL << 3)
+#define CAN_MCR_NART  (1UL << 4)
+#define CAN_MCR_AWUM  (1UL << 5)
+#define CAN_MCR_ABOM  (1UL << 6)
+#define CAN_MCR_TTCM  (1UL << 7)
+#define CAN_MCR_RESET (1UL << 15)
+#define CAN_MCR_DBF   (1UL << 16)
+
+#define CAN_MSR_INAK  (1UL << 0)
+#define CAN_MSR_SLAK  (1UL << 1)
+#define CAN_MSR_ERRI  (1UL << 2)
+
+#define CAN_TSR_RQCP0 (1UL << 0)
+#define CAN_TSR_TXOK0 (1UL << 1)
+#define CAN_TSR_ALST0 (1UL << 2)
+#define CAN_TSR_TERR0 (1UL << 3)
+#define CAN_TSR_RQCP(n) (1UL << (8U * (n)))
+#define CAN_TSR_TERR(n) (1UL << (8U * (n) + 3U))
+#define CAN_TSR_ALST(n) (1UL << (8U * (n) + 2U))
+#define CAN_TSR_CODE_SHIFT 24U
+#define CAN_TSR_CODE_MSK (3UL << 24)
+#define CAN_TSR_TME0  (1UL << 26)
+#define CAN_TSR_TME(n) (1UL << (26U + (n)))
+#define CAN_TSR_TME_ALL (7UL << 26)
+
+#define CAN_RF0R_FMP0_MSK 3UL
+#define CAN_RF0R_FULL0 (1UL << 3)
+#define CAN_RF0R_FOVR0 (1UL << 4)
+#define CAN_RF0R_RFOM0 (1UL << 5)
+
+#define CAN_IER_TMEIE  (1UL << 0)
+#define CAN_IER_FMPIE0 (1UL << 1)
+#define CAN_IER_FFIE0  (1UL << 2)
+#define CAN_IER_FOVIE0 (1UL << 3)
+#define CAN_IER_EWGIE  (1UL << 8)
+#define CAN_IER_EPVIE  (1UL << 9)
+#define CAN_IER_BOFIE  (1UL << 10)
+#define CAN_IER_LECIE  (1UL << 11)
+#define CAN_IER_ERRIE  (1UL << 15)
+
+#define CAN_ESR_EWGF (1UL << 0)
+#define CAN_ESR_EPVF (1UL << 1)
+#define CAN_ESR_BOFF (1UL << 2)
+#define CAN_ESR_LEC_SHIFT 4U
+#define CAN_ESR_LEC_MSK (7UL << 4)
+#define CAN_ESR_LEC_USER 7UL /* "set by software": marks "no new code" */
+#define CAN_ESR_TEC_SHIFT 16U
+#define CAN_ESR_REC_SHIFT 24U
+
+#define CAN_BTR_BRP_SHIFT 0U
+#define CAN_BTR_TS1_SHIFT 16U
+#define CAN_BTR_TS2_SHIFT 20U
+#define CAN_BTR_SJW_SHIFT 24U
+#define CAN_BTR_LBKM (1UL << 30)
+#define CAN_BTR_SILM (1UL << 31)
+
+#define CAN_TIR_TXRQ (1UL << 0)
+#define CAN_TIR_RTR  (1UL << 1)
+#define CAN_TIR_IDE  (1UL << 2)
+#define CAN_TIR_EXID_SHIFT 3U
+#define CAN_TIR_STID_SHIFT 21U
+#define CAN_RIR_RTR  (1UL << 1)
+#define CAN_RIR_IDE  (1UL << 2)
+#define CAN_RDTR_DLC_MSK 0xFUL
+
+#define CAN_FMR_FINIT (1UL << 0)
+
+#endif /* BXCAN_REGS_H */

@@ -1,0 +1,192 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Calibration storage: two slots in flash that the image never uses
+ * (linker: __calib_start, two slots of __calib_slot_size bytes). A write
+ * goes to the slot NOT holding the newest valid block: erase, program the
+ * payload and the header, the header's magic word last. A reset at any
+ * moment leaves the previous block intact in the other slot; a half-written
+ * slot fails its magic or its CRC and is ignored. hal_calib_read() returns
+ * the valid block with the highest sequence number.
+ *
+ * Slot layout: magic, seq, len, crc32(seq, len, payload), payload.
+ *
+ * Erasing stalls the CPU (single flash bank; code runs from it) for up to
+ * ~0.5 s on the F4, and the IWDG keeps counting: write calibration before
+ * starting the watchdog or with a watchdog timeout above 1 s; a watchdog
+ * reset in the middle is harmless (old block stays).
+ */
+#include <stddef.h>
+
+#include "chip.h"
+#include "hal_stm32.h"
+
+#define CALIB_MAGIC 0x4C435153UL /* "SQCL" */
+#define CALIB_HDR_LEN 16U
+
+extern const uint8_t __calib_start[];
+extern const uint8_t __calib_slot_size[];
+extern const uint8_t __calib_slot_count[];
+
+typedef struct {
+	uint32_t magic;
+	uint32_t seq;
+	uint32_t len;
+	uint32_t crc;
+} calib_hdr_t;
+
+_Static_assert(sizeof(calib_hdr_t) == CALIB_HDR_LEN, "header layout");
+
+static uint32_t slot_size(void)
+{
+	return (uint32_t)(uintptr_t)__calib_slot_size;
+}
+
+static uint32_t slot_addr(uint32_t slot)
+{
+	return (uint32_t)(uintptr_t)__calib_start + slot * slot_size();
+}
+
+static uint32_t crc32_update(uint32_t crc, const uint8_t *p, uint32_t n)
+{
+	uint32_t i;
+	uint32_t k;
+
+	for (i = 0; i < n; i++) {
+		crc ^= p[i];
+		for (k = 0; k < 8U; k++) {
+			crc = (crc >> 1) ^ (0xEDB88320UL & (0U - (crc & 1U)));
+		}
+	}
+	return crc;
+}
+
+static uint32_t block_crc(uint32_t seq, uint32_t len, const uint8_t *payload)
+{
+	uint8_t meta[8];
+	uint32_t crc = 0xFFFFFFFFUL;
+	uint32_t i;
+
+	for (i = 0; i < 4U; i++) {
+		meta[i] = (uint8_t)((seq >> (8U * i)) & 0xFFU);
+		meta[4U + i] = (uint8_t)((len >> (8U * i)) & 0xFFU);
+	}
+	crc = crc32_update(crc, meta, sizeof(meta));
+	crc = crc32_update(crc, payload, len);
+	return ~crc;
+}
+
+static void read_hdr(uint32_t slot, calib_hdr_t *h)
+{
+	const volatile uint32_t *w = (const volatile uint32_t *)(uintptr_t)slot_addr(slot);
+
+	h->magic = w[0];
+	h->seq = w[1];
+	h->len = w[2];
+	h->crc = w[3];
+}
+
+static bool slot_valid(uint32_t slot, calib_hdr_t *h)
+{
+	read_hdr(slot, h);
+	if (h->magic != CALIB_MAGIC || h->len > HAL_CALIB_MAX_LEN ||
+	    h->len > slot_size() - CALIB_HDR_LEN) {
+		return false;
+	}
+	return block_crc(h->seq, h->len,
+			 (const uint8_t *)(uintptr_t)(slot_addr(slot) + CALIB_HDR_LEN)) == h->crc;
+}
+
+/* The newest valid slot, or -1. Sequence numbers compare modulo 2^32. */
+static int newest_slot(calib_hdr_t *out)
+{
+	calib_hdr_t h[2];
+	bool ok0 = slot_valid(0U, &h[0]);
+	bool ok1 = slot_valid(1U, &h[1]);
+	int best;
+
+	if (ok0 && ok1) {
+		best = (int32_t)(h[1].seq - h[0].seq) > 0 ? 1 : 0;
+	} else if (ok0) {
+		best = 0;
+	} else if (ok1) {
+		best = 1;
+	} else {
+		return -1;
+	}
+	*out = h[best];
+	return best;
+}
+
+int hal_calib_read(uint8_t *buf, uint32_t len)
+{
+	calib_hdr_t h;
+	int slot;
+	const uint8_t *src;
+	uint32_t i;
+
+	if (buf == NULL || len > HAL_CALIB_MAX_LEN) {
+		return SQ_EINVAL;
+	}
+	slot = newest_slot(&h);
+	if (slot < 0) {
+		return SQ_ENOENT;
+	}
+	src = (const uint8_t *)(uintptr_t)(slot_addr((uint32_t)slot) + CALIB_HDR_LEN);
+	/* Shorter stored block: the rest reads as erased flash (0xFF); the
+	 * block's own CRC (firmware/monitor) decides whether it is usable. */
+	for (i = 0; i < len; i++) {
+		buf[i] = i < h.len ? src[i] : 0xFFU;
+	}
+	return SQ_OK;
+}
+
+int hal_calib_write(const uint8_t *buf, uint32_t len)
+{
+	calib_hdr_t cur;
+	calib_hdr_t hdr;
+	calib_hdr_t check;
+	int newest;
+	uint32_t target;
+	uint32_t addr;
+	const volatile uint8_t *p;
+	uint32_t i;
+
+	if (buf == NULL || len > HAL_CALIB_MAX_LEN || (uint32_t)(uintptr_t)__calib_slot_count != 2U ||
+	    len > slot_size() - CALIB_HDR_LEN) {
+		return SQ_EINVAL;
+	}
+	newest = newest_slot(&cur);
+	target = newest == 0 ? 1U : 0U;
+	hdr.magic = CALIB_MAGIC;
+	hdr.seq = newest < 0 ? 1U : cur.seq + 1U;
+	hdr.len = len;
+	hdr.crc = block_crc(hdr.seq, len, buf);
+	addr = slot_addr(target);
+
+	hal_watchdog_kick();
+	if (chip_flash_erase_slot(target) != SQ_OK) {
+		stm32_fault_raise(HAL_FAULT_CALIB_STORAGE);
+		return SQ_EIO;
+	}
+	hal_watchdog_kick();
+	/* Blank check of what we are about to program. */
+	p = (const volatile uint8_t *)(uintptr_t)addr;
+	for (i = 0; i < CALIB_HDR_LEN + len; i++) {
+		if (p[i] != 0xFFU) {
+			stm32_fault_raise(HAL_FAULT_CALIB_STORAGE);
+			return SQ_EIO;
+		}
+	}
+	/* Payload, then seq/len/crc, then the magic that makes it count. */
+	if (chip_flash_program(addr + CALIB_HDR_LEN, buf, len) != SQ_OK ||
+	    chip_flash_program(addr + 4U, (const uint8_t *)&hdr.seq, 12U) != SQ_OK ||
+	    chip_flash_program(addr, (const uint8_t *)&hdr.magic, 4U) != SQ_OK) {
+		stm32_fault_raise(HAL_FAULT_CALIB_STORAGE);
+		return SQ_EIO;
+	}
+	if (!slot_valid(target, &check) || check.seq != hdr.seq) {
+		stm32_fault_raise(HAL_FAULT_CALIB_STORAGE);
+		return SQ_EIO;
+	}
+	return SQ_OK;
+}

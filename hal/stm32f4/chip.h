@@ -1,0 +1,145 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * STM32F405/407 (RM0090): addresses, bits and interrupt numbers of the
+ * peripherals this HAL touches, and the chip's clock plan. The F103 port has
+ * its own chip.h with the same names (hal/stm32f103/chip.h).
+ */
+#ifndef CHIP_H
+#define CHIP_H
+
+#include "cortex_m.h"
+
+#define CHIP_NAME "STM32F405"
+#define CHIP_IRQ_COUNT 82U /* vector table: 16 system + 82 device entries */
+#define CHIP_HAS_CCM 1     /* 64 KiB core-coupled data RAM at 0x10000000 */
+
+/* Interrupt numbers (RM0090 table 61) */
+#define CHIP_IRQ_CAN1_TX  19U
+#define CHIP_IRQ_CAN1_RX0 20U
+#define CHIP_IRQ_CAN1_RX1 21U
+#define CHIP_IRQ_CAN1_SCE 22U
+
+/* Clock plan: HSE 8 MHz -> PLL (M 8, N 336, P 2, Q 7) -> 168 MHz SYSCLK,
+ * AHB 168 MHz, APB1 42 MHz (bxCAN), APB2 84 MHz, USB/SDIO 48 MHz. */
+#define CHIP_HSI_HZ      16000000UL
+#define CHIP_HSE_HZ       8000000UL
+#define CHIP_SYSCLK_HZ  168000000UL
+#define CHIP_APB1_HZ     42000000UL
+
+/* Peripheral bases */
+#define CAN1_BASE  0x40006400UL
+#define IWDG_BASE  0x40003000UL
+#define PWR_BASE   0x40007000UL
+#define GPIOB_BASE 0x40020400UL
+#define RCC_BASE   0x40023800UL
+#define FLASH_R_BASE 0x40023C00UL
+
+/* RCC (RM0090 section 7.3) */
+#define RCC_CR       REG32(RCC_BASE + 0x00UL)
+#define RCC_PLLCFGR  REG32(RCC_BASE + 0x04UL)
+#define RCC_CFGR     REG32(RCC_BASE + 0x08UL)
+#define RCC_CIR      REG32(RCC_BASE + 0x0CUL)
+#define RCC_AHB1ENR  REG32(RCC_BASE + 0x30UL)
+#define RCC_APB1RSTR REG32(RCC_BASE + 0x20UL)
+#define RCC_APB1ENR  REG32(RCC_BASE + 0x40UL)
+#define RCC_CSR      REG32(RCC_BASE + 0x74UL)
+
+#define RCC_CR_HSION  (1UL << 0)
+#define RCC_CR_HSIRDY (1UL << 1)
+#define RCC_CR_HSEON  (1UL << 16)
+#define RCC_CR_HSERDY (1UL << 17)
+#define RCC_CR_HSEBYP (1UL << 18)
+#define RCC_CR_CSSON  (1UL << 19)
+#define RCC_CR_PLLON  (1UL << 24)
+#define RCC_CR_PLLRDY (1UL << 25)
+
+#define RCC_PLLCFGR_PLLM_SHIFT 0U
+#define RCC_PLLCFGR_PLLN_SHIFT 6U
+#define RCC_PLLCFGR_PLLP_SHIFT 16U /* 0: /2 */
+#define RCC_PLLCFGR_PLLSRC_HSE (1UL << 22)
+#define RCC_PLLCFGR_PLLQ_SHIFT 24U
+
+#define RCC_CFGR_SW_MSK    3UL
+#define RCC_CFGR_SW_HSI    0UL
+#define RCC_CFGR_SW_PLL    2UL
+#define RCC_CFGR_SWS_MSK   (3UL << 2)
+#define RCC_CFGR_SWS_PLL   (2UL << 2)
+#define RCC_CFGR_HPRE_MSK  (0xFUL << 4)
+#define RCC_CFGR_PPRE1_MSK (7UL << 10)
+#define RCC_CFGR_PPRE1_DIV4 (5UL << 10)
+#define RCC_CFGR_PPRE2_MSK (7UL << 13)
+#define RCC_CFGR_PPRE2_DIV2 (4UL << 13)
+
+#define RCC_AHB1ENR_GPIOBEN (1UL << 1)
+#define RCC_APB1ENR_CAN1EN  (1UL << 25)
+#define RCC_APB1ENR_PWREN   (1UL << 28)
+#define RCC_APB1RSTR_CAN1RST (1UL << 25)
+
+#define RCC_CSR_LSION    (1UL << 0)
+#define RCC_CSR_RMVF     (1UL << 24)
+#define RCC_CSR_BORRSTF  (1UL << 25)
+#define RCC_CSR_PINRSTF  (1UL << 26)
+#define RCC_CSR_PORRSTF  (1UL << 27)
+#define RCC_CSR_SFTRSTF  (1UL << 28)
+#define RCC_CSR_IWDGRSTF (1UL << 29)
+#define RCC_CSR_WWDGRSTF (1UL << 30)
+#define RCC_CSR_LPWRRSTF (1UL << 31)
+
+/* PWR: regulator scale 1 is needed above 144 MHz */
+#define PWR_CR     REG32(PWR_BASE + 0x00UL)
+#define PWR_CR_VOS (1UL << 14)
+
+/* Embedded flash interface (RM0090 section 3.9) */
+#define FLASH_ACR  REG32(FLASH_R_BASE + 0x00UL)
+#define FLASH_KEYR REG32(FLASH_R_BASE + 0x04UL)
+#define FLASH_SR   REG32(FLASH_R_BASE + 0x0CUL)
+#define FLASH_CR   REG32(FLASH_R_BASE + 0x10UL)
+#define FLASH_ACR_LATENCY_MSK 7UL
+#define FLASH_ACR_LATENCY_5WS 5UL /* 150..168 MHz at 2.7..3.6 V */
+#define FLASH_ACR_PRFTEN (1UL << 8)
+#define FLASH_ACR_ICEN   (1UL << 9)
+#define FLASH_ACR_DCEN   (1UL << 10)
+#define FLASH_ACR_ICRST  (1UL << 11)
+#define FLASH_ACR_DCRST  (1UL << 12)
+#define FLASH_KEY1 0x45670123UL
+#define FLASH_KEY2 0xCDEF89ABUL
+#define FLASH_SR_EOP    (1UL << 0)
+#define FLASH_SR_OPERR  (1UL << 1)
+#define FLASH_SR_WRPERR (1UL << 4)
+#define FLASH_SR_PGAERR (1UL << 5)
+#define FLASH_SR_PGPERR (1UL << 6)
+#define FLASH_SR_PGSERR (1UL << 7)
+#define FLASH_SR_BSY    (1UL << 16)
+#define FLASH_SR_ERRORS (FLASH_SR_OPERR | FLASH_SR_WRPERR | FLASH_SR_PGAERR | \
+			 FLASH_SR_PGPERR | FLASH_SR_PGSERR)
+#define FLASH_CR_PG   (1UL << 0)
+#define FLASH_CR_SER  (1UL << 1)
+#define FLASH_CR_SNB_SHIFT 3U
+#define FLASH_CR_SNB_MSK (0xFUL << 3)
+#define FLASH_CR_PSIZE_X32 (2UL << 8)
+#define FLASH_CR_PSIZE_MSK (3UL << 8)
+#define FLASH_CR_STRT (1UL << 16)
+#define FLASH_CR_LOCK (1UL << 31)
+
+/* GPIO (RM0090 section 8.4) */
+#define GPIO_MODER(b)   REG32((b) + 0x00UL)
+#define GPIO_OTYPER(b)  REG32((b) + 0x04UL)
+#define GPIO_OSPEEDR(b) REG32((b) + 0x08UL)
+#define GPIO_PUPDR(b)   REG32((b) + 0x0CUL)
+#define GPIO_AFRH(b)    REG32((b) + 0x24UL)
+#define GPIO_MODE_AF 2UL
+#define GPIO_PUPD_UP 1UL
+#define GPIO_SPEED_HIGH 2UL
+#define GPIO_AF9_CAN1 9UL
+
+/* Chip-specific parts of the HAL (clock.c, flash.c of each chip). */
+#include <stdbool.h>
+#include <stdint.h>
+int chip_clock_init(void);            /* SQ_OK or SQ_EAGAIN (fell back to HSI) */
+uint32_t chip_core_hz(void);
+uint32_t chip_apb1_hz(void);
+void chip_can_pins_init(void);        /* GPIO + RCC clock of CAN1 */
+int chip_flash_erase_slot(uint32_t slot);
+int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
+
+#endif /* CHIP_H */

@@ -1,0 +1,94 @@
+# SPDX-License-Identifier: MIT
+# The ECU images (bare metal, arm-none-eabi) and their target-in-the-loop tests.
+#
+#   make firmware                               build/stm32f4/squeal-monitor.{elf,bin,hex,map}
+#   make firmware NUMERIC=fixed TARGET=stm32f103  build/stm32f103/... (Cortex-M3, no FPU,
+#                                               checked free of floating point)
+#   make flash [DRY_RUN=1] [TARGET=...]         OpenOCD + ST-LINK (tools/flash.sh)
+#   make stack-usage                            worst-case stack per entry point
+#
+# Every configuration compiles firmware/, hal/ and tests with its own flags
+# into build/<config>/fw/, so the host variants are never mixed in.
+
+ARM_CC := arm-none-eabi-gcc
+ARM_OBJCOPY := arm-none-eabi-objcopy
+ARM_SIZE := arm-none-eabi-size
+ARM_NM := arm-none-eabi-nm
+QEMU_ARM := qemu-system-arm
+
+TARGET ?= stm32f4
+
+CPU_stm32f4 := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
+CPU_stm32f103 := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
+LDS_stm32f4 := linker/stm32f405xg.ld
+LDS_stm32f103 := linker/stm32f103xb.ld
+# chip.h comes from the first directory; the F103 port reuses the generic parts.
+HAL_INC_stm32f4 := -Ihal/stm32f4
+HAL_INC_stm32f103 := -Ihal/stm32f103 -Ihal/stm32f4
+HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c semihost.c libc_min.c
+HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c flash.c)
+HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c))
+
+# The firmware's entry point; a stand-in until firmware/app/ has its C files.
+APP_SRCS := $(sort $(wildcard firmware/app/*.c))
+ifeq ($(APP_SRCS),)
+APP_SRCS := hal/stm32f4/placeholder_app.c
+endif
+FW_TARGET_SRCS := $(sort $(FW_SRCS) $(APP_SRCS))
+
+# -ffp-contract=off: no fused multiply-add, so float results are the host's
+# bit for bit. -fstack-usage/-fcallgraph-info feed tools/stack_usage.py.
+ARM_CFLAGS := $(WARN) -ffreestanding -fno-common -ffunction-sections -fdata-sections \
+	-ffp-contract=off -fstack-usage -fcallgraph-info=su -Os -g
+ARM_LDFLAGS := -nostdlib -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments
+
+# arm_config: name, target chip, numeric, extra flags, sources, linker script
+define arm_config
+$(1)_OBJS := $$(patsubst %.c,build/$(1)/fw/%.o,$(5))
+build/$(1)/fw/%.o: %.c
+	@mkdir -p $$(@D)
+	$$(ARM_CC) $$(ARM_CFLAGS) $$(CPU_$(2)) $$(DEF_$(3)) $(4) $$(FW_INC) $$(HAL_INC_$(2)) \
+		-Itests/target -Ibuild/$(1) -MMD -MP -c $$< -o $$@
+.SECONDARY: $$($(1)_OBJS)
+build/$(1)/%.elf: $$($(1)_OBJS) $(6)
+	@mkdir -p $$(@D)
+	$$(ARM_CC) $$(CPU_$(2)) $$(ARM_LDFLAGS) -T $(6) -Wl,-Map=$$(@:.elf=.map) \
+		$$($(1)_OBJS) -lgcc -o $$@
+build/$(1)/%.bin: build/$(1)/%.elf
+	$$(ARM_OBJCOPY) -O binary --gap-fill 0xff $$< $$@
+build/$(1)/%.hex: build/$(1)/%.elf
+	$$(ARM_OBJCOPY) -O ihex $$< $$@
+endef
+
+# The ECU images
+$(eval $(call arm_config,stm32f4,stm32f4,float,,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,stm32f103,stm32f103,fixed,,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f103),$(LDS_stm32f103)))
+# Other numeric modes on request (make firmware NUMERIC=fixed): build/stm32f4-fixed/ ...
+$(eval $(call arm_config,stm32f4-fixed,stm32f4,fixed,,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,stm32f103-float,stm32f103,float,,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f103),$(LDS_stm32f103)))
+
+NATIVE_NUM_stm32f4 := float
+NATIVE_NUM_stm32f103 := fixed
+FW_CONFIG := $(TARGET)$(if $(filter $(NATIVE_NUM_$(TARGET)),$(NUMERIC)),,-$(NUMERIC))
+FW_IMAGE := build/$(FW_CONFIG)/squeal-monitor
+
+.PHONY: firmware flash stack-usage
+firmware: $(FW_IMAGE).elf $(FW_IMAGE).bin $(FW_IMAGE).hex
+	@echo "== $(FW_IMAGE).elf ($(TARGET), $(NUMERIC))"
+	@$(ARM_SIZE) $(FW_IMAGE).elf
+	@tests/target/size-report.sh $(FW_IMAGE).elf
+	$(if $(filter fixed,$(NUMERIC)),tests/target/check-no-float.sh $(FW_IMAGE).elf)
+
+stack-usage: $(FW_IMAGE).elf
+	$(PYTHON) tools/stack_usage.py build/$(FW_CONFIG)/fw
+
+flash: $(FW_IMAGE).elf
+	tools/flash.sh $(if $(DRY_RUN),--dry-run) --target $(TARGET) $(FW_IMAGE).elf
+
+ALL_TARGETS += build/stm32f4/squeal-monitor.elf build/stm32f4/squeal-monitor.bin \
+	build/stm32f4/squeal-monitor.hex
+
+# ---- target-in-the-loop test images ---------------------------------------
+
+# The ECU image with semihosting events (boot, faults, watchdog, summary).
+$(eval $(call arm_config,stm32f4-ecutest,stm32f4,float,-DSQ_TARGET_TEST,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
