@@ -1,0 +1,78 @@
+# SPDX-License-Identifier: MIT
+# libFuzzer targets (tests/fuzz/), built with clang and ASan+UBSan:
+#   build/fuzz/bin/fuzz_model_float  model, float build: any bit pattern
+#   build/fuzz/bin/fuzz_model_fixed  model, fixed build: any int32
+#   build/fuzz/bin/fuzz_msgs         every unpack, E2E P01 check, receive
+#   build/fuzz/bin/fuzz_calib_block  calibration block decode/encode
+#   build/fuzz/bin/fuzz_monitor      monitor under arbitrary frames and time
+#   (fuzz_candump, fuzz_calib_text when host-sim's parsers exist)
+#
+#   make fuzz                 each target FUZZ_SECONDS (300) on its corpus,
+#                             prints execs/s and coverage (cov/ft)
+#   make test                 runs tests/fuzz/run-fuzz.sh: each target
+#                             FUZZ_TEST_SECONDS (10); any crash, timeout,
+#                             leak or sanitizer report fails
+#   make fuzz-seeds           regenerate tests/fuzz/corpus/ (gen-seeds.sh)
+# Firmware objects get their own clang variants build/fuzz{,-fixed}/ so the
+# gcc builds are not touched.
+
+FUZZ_CC ?= clang-14
+FUZZ_SECONDS ?= 300
+FUZZ_TEST_SECONDS ?= 10
+export FUZZ_SECONDS FUZZ_TEST_SECONDS
+FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_CFLAGS := -O1 -g $(FUZZ_SAN) -fsanitize=fuzzer-no-link
+FUZZ_LDFLAGS := -g $(FUZZ_SAN) -fsanitize=fuzzer
+FUZZ_BIN := build/fuzz/bin
+
+FUZZ_VARIANTS := fuzz fuzz-fixed
+NUM_fuzz := float
+NUM_fuzz-fixed := fixed
+
+define fuzz_variant_rules
+build/$(1)/fw/%.o: %.c
+	@mkdir -p $$(@D)
+	$$(FUZZ_CC) $$(WARN) $$(FW_FLAGS) $$(FUZZ_CFLAGS) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -MMD -MP -c $$< -o $$@
+build/$(1)/app/%.o: %.c
+	@mkdir -p $$(@D)
+	$$(FUZZ_CC) $$(WARN) -D_GNU_SOURCE $$(FUZZ_CFLAGS) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -Itests/fuzz -MMD -MP -c $$< -o $$@
+build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS))
+	@rm -f $$@
+	ar rcs $$@ $$^
+endef
+$(foreach v,$(FUZZ_VARIANTS),$(eval $(call fuzz_variant_rules,$(v))))
+
+# name, variant, harness source, extra objects
+define fuzz_target
+$(FUZZ_BIN)/$(1): build/$(2)/app/$(3:.c=.o) $(4) build/$(2)/libfirmware.a
+	@mkdir -p $$(@D)
+	$$(FUZZ_CC) $$(FUZZ_LDFLAGS) -o $$@ $$^ -lm
+FUZZ_TARGETS += $(FUZZ_BIN)/$(1)
+endef
+
+FUZZ_TARGETS :=
+$(eval $(call fuzz_target,fuzz_model_float,fuzz,tests/fuzz/fuzz_model.c))
+$(eval $(call fuzz_target,fuzz_model_fixed,fuzz-fixed,tests/fuzz/fuzz_model.c))
+$(eval $(call fuzz_target,fuzz_msgs,fuzz,tests/fuzz/fuzz_msgs.c))
+$(eval $(call fuzz_target,fuzz_calib_block,fuzz,tests/fuzz/fuzz_calib_block.c))
+$(eval $(call fuzz_target,fuzz_monitor,fuzz,tests/fuzz/fuzz_monitor.c))
+
+export FUZZ_TARGETS
+
+.PHONY: fuzz fuzz-build fuzz-seeds
+fuzz-build: $(FUZZ_TARGETS)
+fuzz: $(FUZZ_TARGETS)
+	tests/fuzz/run-fuzz.sh --mode fuzz --seconds $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
+# Seed corpora: written by a small C program through the firmware's own
+# encoders (valid frames and blocks are the interesting starting points).
+FUZZ_SEEDGEN := build/host/tests/fuzz/gen_seeds
+$(FUZZ_SEEDGEN): build/host/app/tests/fuzz/gen_seeds.o build/host/libfirmware.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_host) -o $@ $^ -lm
+fuzz-seeds: $(FUZZ_SEEDGEN)
+	tests/fuzz/gen-seeds.sh $(FUZZ_SEEDGEN)
+
+# make test: every target for a short, bounded time.
+tests/fuzz/run-fuzz.sh: $(FUZZ_TARGETS)
+TEST_PROGS += tests/fuzz/run-fuzz.sh

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Regenerates the committed seed corpora tests/fuzz/corpus/<target>/ with
+# build/host/tests/fuzz/gen_seeds (make fuzz-seeds builds it and runs this).
+# Only the seed-NNN files are replaced; a corpus directory may also hold
+# hand-made seeds (other names), which are kept.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+gen=${1:-build/host/tests/fuzz/gen_seeds}
+for t in fuzz_model_float fuzz_model_fixed fuzz_msgs fuzz_calib_block fuzz_monitor; do
+	mkdir -p "tests/fuzz/corpus/$t"
+	rm -f "tests/fuzz/corpus/$t"/seed-*
+done
+"$gen" tests/fuzz/corpus
+for d in tests/fuzz/corpus/*/; do
+	echo "$(basename "$d"): $(ls "$d" | wc -l) files"
+done
