@@ -22,8 +22,9 @@ CPU_stm32f4 := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 CPU_stm32f103 := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
 LDS_stm32f4 := linker/stm32f405xg.ld
 LDS_stm32f103 := linker/stm32f103xb.ld
-# chip.h comes from the first directory; the F103 port reuses the generic parts.
-HAL_INC_stm32f4 := -Ihal/stm32f4
+# chip.h comes from the chip directory (never next to the shared files, where
+# #include "..." would find it first); the F103 port reuses the generic parts.
+HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
 HAL_INC_stm32f103 := -Ihal/stm32f103 -Ihal/stm32f4
 HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c semihost.c libc_min.c
 HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c flash.c)
@@ -85,7 +86,7 @@ stack-usage: $(FW_IMAGE).elf
 flash: $(FW_IMAGE).elf
 	tools/flash.sh $(if $(DRY_RUN),--dry-run) --target $(TARGET) $(FW_IMAGE).elf
 
-ALL_TARGETS += build/stm32f4/squeal-monitor.elf build/stm32f4/squeal-monitor.bin \
+ALL_TARGETS += build/stm32f4/squeal-monitor.elf build/stm32f4/squeal-monitor.bin build/stm32f103/squeal-monitor.elf \
 	build/stm32f4/squeal-monitor.hex
 
 # ---- target-in-the-loop test images ---------------------------------------

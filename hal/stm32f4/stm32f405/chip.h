@@ -2,7 +2,8 @@
 /*
  * STM32F405/407 (RM0090): addresses, bits and interrupt numbers of the
  * peripherals this HAL touches, and the chip's clock plan. The F103 port has
- * its own chip.h with the same names (hal/stm32f103/chip.h).
+ * its own chip.h with the same names (hal/stm32f103/chip.h). Kept in its own
+ * directory so that the -I order picks the chip.
  */
 #ifndef CHIP_H
 #define CHIP_H

@@ -1,0 +1,167 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * STM32F103 specifics for the shared bare-metal HAL: clocks (HSE 8 MHz x 9
+ * = 72 MHz, HSI 8 MHz fallback reported by the caller), CAN pins (remapped
+ * to PB8 RX / PB9 TX, like the F4 board), and calibration flash: 1 KiB page
+ * erase and half-word programming (RM0008 / PM0075), every wait bounded.
+ */
+#include "chip.h"
+#include "hal_stm32.h"
+
+#define HSE_TIMEOUT_US    100000UL
+#define PLL_TIMEOUT_US      5000UL
+#define SWITCH_TIMEOUT_US   5000UL
+#define ERASE_TIMEOUT_US   100000UL /* page erase max 40 ms */
+#define PROGRAM_TIMEOUT_US   1000UL /* half-word max 70 us  */
+#define IDLE_TIMEOUT_US     10000UL
+
+extern const uint8_t __calib_start[];
+extern const uint8_t __calib_slot_size[];
+
+static uint32_t core_hz = CHIP_HSI_HZ;
+static uint32_t apb1_hz = CHIP_HSI_HZ;
+
+static void clock_back_to_hsi(void)
+{
+	RCC_CFGR &= ~(RCC_CFGR_SW_MSK | RCC_CFGR_HPRE_MSK | RCC_CFGR_PPRE1_MSK | RCC_CFGR_PPRE2_MSK);
+	(void)stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, 0U, SWITCH_TIMEOUT_US);
+	RCC_CR &= ~(RCC_CR_PLLON | RCC_CR_HSEON);
+	FLASH_ACR = FLASH_ACR_PRFTBE; /* 0 WS at 8 MHz */
+	core_hz = CHIP_HSI_HZ;
+	apb1_hz = CHIP_HSI_HZ;
+}
+
+int chip_clock_init(void)
+{
+	core_hz = CHIP_HSI_HZ;
+	apb1_hz = CHIP_HSI_HZ;
+	stm32_time_early_init(CHIP_HSI_HZ);
+
+	RCC_CR |= RCC_CR_HSEON;
+	if (stm32_wait_reg(&RCC_CR, RCC_CR_HSERDY, RCC_CR_HSERDY, HSE_TIMEOUT_US) != SQ_OK) {
+		clock_back_to_hsi();
+		return SQ_EAGAIN;
+	}
+	RCC_CFGR = (RCC_CFGR & ~(RCC_CFGR_PLLMUL_MSK | RCC_CFGR_PLLXTPRE)) |
+		   RCC_CFGR_PLLSRC_HSE | RCC_CFGR_PLLMUL9;
+	RCC_CR |= RCC_CR_PLLON;
+	if (stm32_wait_reg(&RCC_CR, RCC_CR_PLLRDY, RCC_CR_PLLRDY, PLL_TIMEOUT_US) != SQ_OK) {
+		clock_back_to_hsi();
+		return SQ_EAGAIN;
+	}
+	FLASH_ACR = FLASH_ACR_PRFTBE | FLASH_ACR_LATENCY_2WS;
+	if ((FLASH_ACR & FLASH_ACR_LATENCY_MSK) != FLASH_ACR_LATENCY_2WS) {
+		clock_back_to_hsi();
+		return SQ_EAGAIN;
+	}
+	RCC_CFGR = (RCC_CFGR & ~(RCC_CFGR_HPRE_MSK | RCC_CFGR_PPRE1_MSK | RCC_CFGR_PPRE2_MSK)) |
+		   RCC_CFGR_PPRE1_DIV2;
+	RCC_CFGR = (RCC_CFGR & ~RCC_CFGR_SW_MSK) | RCC_CFGR_SW_PLL;
+	if (stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, RCC_CFGR_SWS_PLL, SWITCH_TIMEOUT_US) != SQ_OK) {
+		clock_back_to_hsi();
+		return SQ_EAGAIN;
+	}
+	core_hz = CHIP_SYSCLK_HZ;
+	apb1_hz = CHIP_APB1_HZ;
+	return SQ_OK;
+}
+
+uint32_t chip_core_hz(void)
+{
+	return core_hz;
+}
+
+uint32_t chip_apb1_hz(void)
+{
+	return apb1_hz;
+}
+
+void chip_can_pins_init(void)
+{
+	uint32_t v;
+
+	RCC_APB2ENR |= RCC_APB2ENR_AFIOEN | RCC_APB2ENR_IOPBEN;
+	RCC_APB1ENR |= RCC_APB1ENR_CAN1EN;
+	(void)RCC_APB1ENR;
+	AFIO_MAPR = (AFIO_MAPR & ~AFIO_MAPR_CAN_REMAP_MSK) | AFIO_MAPR_CAN_REMAP_PB89;
+	/* PB8: input with pull-up (CNF 10, MODE 00); PB9: AF push-pull 50 MHz
+	 * (CNF 10, MODE 11) */
+	v = GPIO_CRH(GPIOB_BASE) & ~0xFFUL;
+	GPIO_CRH(GPIOB_BASE) = v | 0x8UL | (0xBUL << 4);
+	GPIO_ODR(GPIOB_BASE) |= 1UL << 8;
+}
+
+static int flash_unlock(void)
+{
+	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, IDLE_TIMEOUT_US) != SQ_OK) {
+		return SQ_EIO;
+	}
+	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
+		FLASH_KEYR = FLASH_KEY1;
+		FLASH_KEYR = FLASH_KEY2;
+	}
+	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
+		return SQ_EIO;
+	}
+	FLASH_SR = FLASH_SR_PGERR | FLASH_SR_WRPRTERR | FLASH_SR_EOP; /* write 1 to clear */
+	return SQ_OK;
+}
+
+static int flash_wait_done(uint32_t timeout_us)
+{
+	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, timeout_us) != SQ_OK) {
+		return SQ_EIO;
+	}
+	if ((FLASH_SR & (FLASH_SR_PGERR | FLASH_SR_WRPRTERR)) != 0U) {
+		return SQ_EIO;
+	}
+	FLASH_SR = FLASH_SR_EOP;
+	return SQ_OK;
+}
+
+int chip_flash_erase_slot(uint32_t slot)
+{
+	uint32_t addr = (uint32_t)(uintptr_t)__calib_start + slot * (uint32_t)(uintptr_t)__calib_slot_size;
+	int rc;
+
+	if (slot > 1U) {
+		return SQ_EINVAL;
+	}
+	if (flash_unlock() != SQ_OK) {
+		FLASH_CR = FLASH_CR_LOCK;
+		return SQ_EIO;
+	}
+	FLASH_CR = FLASH_CR_PER;
+	FLASH_AR = addr;
+	FLASH_CR = FLASH_CR_PER | FLASH_CR_STRT;
+	rc = flash_wait_done(ERASE_TIMEOUT_US);
+	FLASH_CR = FLASH_CR_LOCK;
+	return rc;
+}
+
+/* addr half-word aligned; an odd tail is padded with 0xFF. */
+int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
+{
+	uint32_t off;
+	int rc = SQ_OK;
+
+	if ((addr & 1U) != 0U || data == NULL) {
+		return SQ_EINVAL;
+	}
+	if (flash_unlock() != SQ_OK) {
+		FLASH_CR = FLASH_CR_LOCK;
+		return SQ_EIO;
+	}
+	FLASH_CR = FLASH_CR_PG;
+	for (off = 0; off < len && rc == SQ_OK; off += 2U) {
+		uint16_t hw = (uint16_t)(data[off] | (off + 1U < len ? (uint32_t)data[off + 1U] << 8 : 0xFF00UL));
+
+		*(volatile uint16_t *)(uintptr_t)(addr + off) = hw;
+		rc = flash_wait_done(PROGRAM_TIMEOUT_US);
+		if (rc == SQ_OK && *(volatile const uint16_t *)(uintptr_t)(addr + off) != hw) {
+			rc = SQ_EIO;
+		}
+	}
+	FLASH_CR = FLASH_CR_LOCK;
+	return rc;
+}
