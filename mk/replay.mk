@@ -21,4 +21,4 @@ build/test/test_candump_log: build/test/app/tests/unit/test_candump_log.o build/
 # and the release build for the long determinism run.
 tests/replay/test_replay.py: build/test/squeal-sim build/host/squeal-sim
 
-TEST_PROGS += build/test/test_candump_log
+TEST_PROGS += build/test/test_candump_log tests/replay/test_replay.py
