@@ -30,3 +30,17 @@ endef
 $(foreach v,$(MONITOR_TEST_VARIANTS),$(foreach t,$(MONITOR_TESTS),$(eval $(call monitor_test_rules,$(v),$(t)))))
 
 TEST_PROGS += $(foreach v,$(MONITOR_TEST_VARIANTS),$(foreach t,$(MONITOR_TESTS),build/$(v)/$(t)))
+
+# Cost of the 1 ms task (callgrind), figures for `make bench`.
+MONITOR_COST_VARIANTS := host host-fixed
+define monitor_cost_rules
+build/$(1)/monitor_step_cost: build/$(1)/app/tests/monitor/monitor_step_cost.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lm
+endef
+$(foreach v,$(MONITOR_COST_VARIANTS),$(eval $(call monitor_cost_rules,$(v))))
+tests/monitor/monitor-cost.sh: $(foreach v,$(MONITOR_COST_VARIANTS),build/$(v)/monitor_step_cost)
+BENCH_PROGS += tests/monitor/monitor-cost.sh
+.PHONY: monitor-cost
+monitor-cost: tests/monitor/monitor-cost.sh
+	tests/monitor/monitor-cost.sh
+BENCH_PROGS += tests/monitor/monitor-ram.sh
