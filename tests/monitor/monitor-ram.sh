@@ -23,7 +23,7 @@ printf '#include "monitor.h"\nchar monitor_t_size[sizeof(monitor_t)];\n' >"$tmp/
 # shellcheck disable=SC2086
 (cd "$tmp" && $ARM_CC $flags -I"$OLDPWD"/firmware/common -I"$OLDPWD"/firmware/model \
 	-I"$OLDPWD"/firmware/protocol -I"$OLDPWD"/firmware/monitor -I"$OLDPWD"/hal -c s.c -o s.o)
-arm-none-eabi-size "$tmp"/*.o | sed "s|$tmp/||" | grep -v ' s\.o$'
+arm-none-eabi-size "$tmp"/*.o | sed "s|$tmp/||" | grep -vP '\ts\.o$'
 hex=$(arm-none-eabi-nm -S "$tmp/s.o" | awk '/monitor_t_size/ {print $2}')
 echo "sizeof(monitor_t) on Cortex-M4: $((16#$hex)) bytes"
 echo "stack per function (bytes):"
