@@ -284,8 +284,8 @@ static void test_out_of_range_field_with_good_crc_rejected(void **state)
 	(void)state;
 	memset(&sentinel, 0x5A, sizeof(sentinel));
 	for (uint32_t i = 0; i < NFIELDS; i++) {
-		const int64_t full = (fields[i].size == 4U) ? 0xFFFFFFFFLL :
-			((1LL << (8U * fields[i].size)) - 1);
+		const int64_t full = (fields[i].size == 4U) ? (int64_t)0xFFFFFFFFLL :
+			(((int64_t)1 << (8U * fields[i].size)) - 1);
 		const int64_t lo = fields[i].is_signed ? INT32_MIN : 0;
 		const int64_t hi = fields[i].is_signed ? INT32_MAX : full;
 		const int64_t cand[2] = { fields[i].min - 1, fields[i].max + 1 };
