@@ -24,8 +24,10 @@ static int32_t q_to_int(int32_t v, int64_t mul, uint32_t q)
 static void point_from_int(int32_t v0_umps, int32_t force_mn, squeal_point_t *pt)
 {
 	/* um/s -> Q20 m/s and mN -> Q12 N, rounded; inputs are >= 0 */
-	pt->v0_mps = (int32_t)((((int64_t)v0_umps << SQUEAL_Q_V0) + 500000) / 1000000);
-	pt->force_n = (int32_t)((((int64_t)force_mn << SQUEAL_Q_FORCE) + 500) / 1000);
+	pt->v0_mps = (int32_t)((((int64_t)v0_umps * ((int64_t)1 << SQUEAL_Q_V0)) + 500000) /
+			       1000000);
+	pt->force_n = (int32_t)((((int64_t)force_mn * ((int64_t)1 << SQUEAL_Q_FORCE)) + 500) /
+				1000);
 }
 
 #define TO_INT(val, mul, q) q_to_int((val), (mul), (q))
