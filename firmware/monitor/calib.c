@@ -304,7 +304,7 @@ uint32_t calib_crc32(uint32_t crc, const uint8_t *data, uint32_t len)
 	for (i = 0U; i < len; i++) {
 		crc ^= data[i];
 		for (b = 0U; b < 8U; b++) {
-			crc = (crc >> 1) ^ (0xEDB88320UL & (0U - (crc & 1U)));
+			crc = (crc >> 1) ^ (0xEDB88320U & (0U - (crc & 1U)));
 		}
 	}
 	return ~crc;
