@@ -331,7 +331,8 @@ static uint32_t abs32(int32_t v)
 /* Is the new classification far enough beyond the border it crossed? */
 static bool beyond_band(const monitor_t *me, uint8_t from, uint8_t to)
 {
-	const bool hopf = (from == SQUEAL_STATE_UNSTABLE) || (to == SQUEAL_STATE_UNSTABLE);
+	const bool hopf = (from == (uint8_t)SQUEAL_STATE_UNSTABLE) ||
+			  (to == (uint8_t)SQUEAL_STATE_UNSTABLE);
 
 	if (hopf) {
 		return ((me->eval.has & MODEL_EVAL_HAS_LNQ) != 0U) &&
@@ -362,8 +363,9 @@ static void debounce(monitor_t *me, uint8_t cls)
 	}
 	/* immediate: out of FAULT, into "not sliding" (v0 or N fell below
 	 * its threshold: certain), or a point clearly beyond the border */
-	if ((me->state == MONITOR_STATE_FAULT) || (cls == SQUEAL_STATE_NOT_SLIDING) ||
-	    ((me->state != SQUEAL_STATE_NOT_SLIDING) && beyond_band(me, me->state, cls))) {
+	if ((me->state == MONITOR_STATE_FAULT) || (cls == (uint8_t)SQUEAL_STATE_NOT_SLIDING) ||
+	    ((me->state != (uint8_t)SQUEAL_STATE_NOT_SLIDING) &&
+	     beyond_band(me, me->state, cls))) {
 		set_state(me, cls);
 		return;
 	}
@@ -458,7 +460,7 @@ static void tx_protected(monitor_t *me, uint16_t id, uint16_t data_id,
 static bool classified(const monitor_t *me)
 {
 	return me->have_eval && (me->state != MONITOR_STATE_FAULT) &&
-	       (me->state != SQUEAL_STATE_NOT_SLIDING);
+	       (me->state != (uint8_t)SQUEAL_STATE_NOT_SLIDING);
 }
 
 /* um/s -> 0.01 m/s, rounded, clamped to [0, max] */
@@ -469,7 +471,7 @@ static uint16_t umps_to_cmps(int32_t umps, uint16_t max)
 	if (v < 0) {
 		v = 0;
 	}
-	return (v > max) ? max : (uint16_t)v;
+	return (v > (int64_t)max) ? max : (uint16_t)v;
 }
 
 static void send_status(monitor_t *me)
