@@ -22,3 +22,7 @@ build/test/test_candump_log: build/test/app/tests/unit/test_candump_log.o build/
 tests/replay/test_replay.py: build/test/squeal-sim build/host/squeal-sim
 
 TEST_PROGS += build/test/test_candump_log tests/replay/test_replay.py
+
+# make bench: replay/decode throughput vs python-can + canmatrix, peak RSS
+tests/replay/bench-replay.sh: build/host/squeal-sim
+BENCH_PROGS += tests/replay/bench-replay.sh
