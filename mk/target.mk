@@ -93,3 +93,38 @@ ALL_TARGETS += build/stm32f4/squeal-monitor.elf build/stm32f4/squeal-monitor.bin
 
 # The ECU image with semihosting events (boot, faults, watchdog, summary).
 $(eval $(call arm_config,stm32f4-ecutest,stm32f4,float,-DSQ_TARGET_TEST,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+
+# The model over the golden vectors: Cortex-M4F float on netduinoplus2,
+# Cortex-M3 fixed on netduino2 (STM32F205: the F4's memory map and
+# peripherals without FPU, so it runs the F4 HAL built for the M3), and the
+# same tv_run.c on the host builds; tests/target/run-golden.sh compares.
+CPU_stm32f2 := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
+HAL_INC_stm32f2 := $(HAL_INC_stm32f4)
+FW_LIB_SRCS := $(filter-out firmware/app/%,$(FW_SRCS))
+TV_SRCS := tests/target/tv_run.c tests/target/tv_target.c
+
+build/tv/model_vectors_%.c: tests/golden/model_vectors.csv tests/target/gen_vectors.py
+	@mkdir -p $(@D)
+	$(PYTHON) tests/target/gen_vectors.py --numeric $* $< $@
+
+$(eval $(call arm_config,tv-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(TV_SRCS) build/tv/model_vectors_float.c,$(LDS_stm32f4)))
+$(eval $(call arm_config,tv-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(TV_SRCS) build/tv/model_vectors_fixed.c,$(LDS_stm32f4)))
+
+build/host/tv-digest: build/host/app/tests/target/tv_run.o build/host/app/tests/target/tv_host.o \
+		build/host/app/build/tv/model_vectors_float.o build/host/libfirmware.a
+	$(CC) -o $@ $^ -lm
+build/host-fixed/tv-digest: build/host-fixed/app/tests/target/tv_run.o build/host-fixed/app/tests/target/tv_host.o \
+		build/host-fixed/app/build/tv/model_vectors_fixed.o build/host-fixed/libfirmware.a
+	$(CC) -o $@ $^ -lm
+
+# bxCAN bit timing: pure arithmetic, tested on the host (cmocka)
+build/host/test_bxcan_timing: tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/hal_stm32.h
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -o $@ tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
+
+# Target-in-the-loop tests: the scripts run QEMU on images make builds first.
+tests/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
+	build/host/tv-digest build/host-fixed/tv-digest build/stm32f4/squeal-monitor.elf \
+	build/stm32f103/squeal-monitor.elf build/stm32f103-float/squeal-monitor.elf
+tests/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf
+TEST_PROGS += build/host/test_bxcan_timing tests/target/run-golden.sh tests/target/run-ecu-boot.sh
