@@ -194,6 +194,8 @@ static sq_xf_t xf_norm(float m, int32_t e)
 	} else if (r.m < 1.0f) {
 		r.m *= 2.0f;
 		r.e -= 1;
+	} else {
+		/* already in [1, 2) */
 	}
 	return r;
 }

@@ -351,6 +351,8 @@ int squeal_model_classify(const squeal_params_t *params,
 		out->basin_ratio = 1;
 	} else if (stable && (out->basin_ratio < RATIO_ONE)) {
 		out->basin_ratio = RATIO_ONE;
+	} else {
+		/* rho already on the side of its class */
 	}
 	return SQ_OK;
 }

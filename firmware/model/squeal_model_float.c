@@ -313,6 +313,8 @@ int squeal_model_classify(const squeal_params_t *params,
 			out->basin_ratio = FLT_TRUE_MIN;
 		} else if (stable && (out->basin_ratio < 1.0f)) {
 			out->basin_ratio = 1.0f;
+		} else {
+			/* rho already on the side of its class */
 		}
 	}
 	return SQ_OK;

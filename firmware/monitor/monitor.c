@@ -700,6 +700,8 @@ void monitor_step(monitor_t *me, uint64_t now_us)
 		me->speed.fresh = false;
 		me->force.fresh = false;
 		debounce(me, classify_pair(me));
+	} else {
+		/* no fault and no new input pair: nothing to classify */
 	}
 	warning = warning_level(me);
 	if (warning != me->warning) {
