@@ -17,9 +17,9 @@ $(foreach v,$(VARIANTS),$(eval build/$(v)/squeal-sim: $(patsubst %.c,build/$(v)/
 build/test/test_candump_log: build/test/app/tests/unit/test_candump_log.o build/test/app/host-sim/candump_log.o
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
 
-# The end-to-end test runs the sanitizer build of squeal-sim (test variant)
+# The end-to-end test runs the sanitizer builds of squeal-sim (float, fixed)
 # and the release build for the long determinism run.
-tests/replay/test_replay.py: build/test/squeal-sim build/host/squeal-sim
+tests/replay/test_replay.py: build/test/squeal-sim build/test-fixed/squeal-sim build/host/squeal-sim
 
 TEST_PROGS += build/test/test_candump_log tests/replay/test_replay.py
 

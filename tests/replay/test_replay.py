@@ -38,6 +38,7 @@ import squeal_reference as ref  # noqa: E402
 
 SIM_TEST = os.path.join(ROOT, "build", "test", "squeal-sim")
 SIM_HOST = os.path.join(ROOT, "build", "host", "squeal-sim")
+SIM_FIXED = os.path.join(ROOT, "build", "test-fixed", "squeal-sim")
 
 # Monitor calibration defaults (calib.h): below these it is "not sliding".
 V0_MIN_MPS = 0.01
@@ -96,12 +97,12 @@ def ref_state(v0, force):
 
 # ---------------------------------------------------------------------------
 
-def test_model_agreement(r, tmp, db):
+def test_model_agreement(r, tmp, db, sim=None):
     enc = gen_inputs.InputEncoder(db)
     frames = gen_inputs.braking_frames(enc)
     log = os.path.join(tmp, "brake.log")
     gen_inputs.write_python_can(log, frames)
-    rc, out, err = run(SIM_TEST, ["replay", log])
+    rc, out, err = run(sim or SIM_TEST, ["replay", log])
     r.check(rc == 0, "replay exits 0 (%d): %s" % (rc, err[-500:]))
     r.check(summary_value(err, "frames_read") == str(len(frames)), "all frames read")
     r.check(summary_value(err, "frames_used") == str(len(frames)), "all frames used")
@@ -433,6 +434,7 @@ def main():
     db = gen_inputs.load_dbc()
     with tempfile.TemporaryDirectory() as tmp:
         log, out = test_model_agreement(r, tmp, db)
+        test_model_agreement(r, tmp, db, SIM_FIXED)  # fixed-point build
         test_determinism(r, tmp, log, out)
         test_malformed_lines(r, tmp, log, out)
         test_rejections_and_time(r, tmp, db)
