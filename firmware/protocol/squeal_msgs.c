@@ -604,7 +604,6 @@ int msg_sig_get_raw(const msg_sig_desc_t *sig, const uint8_t *data,
 		    uint8_t dlc, int32_t *raw)
 {
 	const msg_desc_t *m;
-	unsigned int i;
 
 	if (sig == NULL || data == NULL || raw == NULL) {
 		return SQ_EINVAL;
@@ -617,6 +616,8 @@ int msg_sig_get_raw(const msg_sig_desc_t *sig, const uint8_t *data,
 		return SQ_EBADMSG;
 	}
 	if ((sig->flags & MSG_SIG_MUXED) != 0U) {
+		unsigned int i;
+
 		for (i = 0U; i < m->sig_count; i++) {
 			const msg_sig_desc_t *mux = &msg_sig_table[m->sig_first + i];
 
