@@ -10,3 +10,8 @@ $(CALIB_TEXT_TEST): build/test/app/tests/unit/test_calib_text.o build/test/app/h
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
 
 TEST_PROGS += $(CALIB_TEXT_TEST)
+
+# plant -> ecu -> candump on vcan0 in the QEMU guest, checked on the host
+# (tests/integration/check_vcan.py): about 60-90 s with the guest's boot.
+tests/integration/run-vcan.sh: build/host/squeal-sim
+TEST_PROGS += tests/integration/run-vcan.sh
