@@ -68,6 +68,13 @@ ALL_TARGETS :=
 
 include $(sort $(wildcard mk/*.mk))
 
+# squeal-sim: defined after every fragment has added to SIM_SRCS/SIM_LIBS_*
+define sim_program
+build/$(1)/squeal-sim: $$(patsubst %.c,build/$(1)/app/%.o,$$(sort $$(SIM_SRCS))) $$(SIM_LIBS_$(1)) build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$(patsubst %.c,build/$(1)/app/%.o,$$(sort $$(SIM_SRCS))) $$(SIM_LIBS_$(1)) build/$(1)/libfirmware.a -lm
+endef
+$(foreach v,$(VARIANTS),$(eval $(call sim_program,$(v))))
+
 .PHONY: all test bench demo clean
 all: $(ALL_TARGETS)
 

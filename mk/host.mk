@@ -11,11 +11,8 @@ SIM_LIBS_host-fixed += build/host-fixed/libhal_linux.a
 SIM_LIBS_test += build/test/libhal_linux.a
 SIM_LIBS_test-fixed += build/test-fixed/libhal_linux.a
 
-define sim_program
-build/$(1)/squeal-sim: $$(patsubst %.c,build/$(1)/app/%.o,$$(SIM_SRCS)) $$(SIM_LIBS_$(1)) build/$(1)/libfirmware.a
-	$$(CC) $$(OPT_$(1)) -o $$@ $$(patsubst %.c,build/$(1)/app/%.o,$$(SIM_SRCS)) $$(SIM_LIBS_$(1)) build/$(1)/libfirmware.a -lm
-endef
-$(foreach v,$(VARIANTS),$(eval $(call sim_program,$(v))))
+# (the link rule is in the top-level Makefile, after every fragment has
+# added its sources)
 
 ALL_TARGETS += build/host/squeal-sim build/host-fixed/squeal-sim
 
