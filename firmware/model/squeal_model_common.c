@@ -2,6 +2,8 @@
 /* Parts of the model API that are the same in both numeric builds. */
 #include "squeal_model.h"
 
+#include <stddef.h>
+
 /*
  * The paper's disc brake (model.md section 8). Fixed-build values are the
  * nearest raw integers: D = 0.023 * 2^30 = 24696061.95, dmu = 0.15 * 2^30 =
@@ -9,7 +11,7 @@
  */
 void squeal_model_default_params(squeal_params_t *params)
 {
-	if (params == 0) {
+	if (params == NULL) {
 		return;
 	}
 #if defined(SQUEAL_NUMERIC_FIXED)

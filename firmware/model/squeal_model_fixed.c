@@ -14,6 +14,7 @@
 #if defined(SQUEAL_NUMERIC_FIXED)
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "bessel_table.h"
@@ -46,7 +47,7 @@ static bool in_range(int32_t x, int32_t lo, int32_t hi)
 
 int squeal_model_params_check(const squeal_params_t *params)
 {
-	if (params == 0) {
+	if (params == NULL) {
 		return SQ_EINVAL;
 	}
 	if (!in_range(params->mass_kg, 1, MASS_MAX_RAW) ||
@@ -258,7 +259,7 @@ int squeal_model_classify(const squeal_params_t *params,
 	bool stable;
 	bool sat;
 
-	if ((params == 0) || (point == 0) || (out == 0)) {
+	if ((params == NULL) || (point == NULL) || (out == NULL)) {
 		return SQ_EINVAL;
 	}
 	if ((squeal_model_params_check(params) != SQ_OK) ||

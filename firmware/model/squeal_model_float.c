@@ -17,6 +17,7 @@
 
 #include <float.h>
 #include <stdbool.h>
+#include <stddef.h>
 
 #include "sq_mathf.h"
 #include "squeal_model.h"
@@ -46,7 +47,7 @@ static bool in_range(float x, float lo, float hi)
 
 int squeal_model_params_check(const squeal_params_t *params)
 {
-	if (params == 0) {
+	if (params == NULL) {
 		return SQ_EINVAL;
 	}
 	if (!in_range(params->mass_kg, FLT_TRUE_MIN, MASS_MAX_KG) ||
@@ -103,7 +104,7 @@ static void bessel_g(float x, float *g_out, float *dg_out, float *h_out)
 		}
 		*g_out = sq_log1pf(sm1);
 		*dg_out = 0.5f * x * ds / (1.0f + sm1);
-		if (h_out != 0) {
+		if (h_out != NULL) {
 			*h_out = *g_out - x;
 		}
 	} else {
@@ -118,7 +119,7 @@ static void bessel_g(float x, float *g_out, float *dg_out, float *h_out)
 
 		*g_out = x + h;
 		*dg_out = 1.0f - 1.5f * r + dp / p;
-		if (h_out != 0) {
+		if (h_out != NULL) {
 			*h_out = h;
 		}
 	}
@@ -151,7 +152,7 @@ static float solve_exact_cycle(float lq2)
 		float f;
 		float next;
 
-		bessel_g(x, &g, &dg, 0);
+		bessel_g(x, &g, &dg, NULL);
 		f = g - lq2;
 		if (f == 0.0f) {
 			break;
@@ -244,7 +245,7 @@ int squeal_model_classify(const squeal_params_t *params,
 	float lq2;
 	bool stable;
 
-	if ((params == 0) || (point == 0) || (out == 0)) {
+	if ((params == NULL) || (point == NULL) || (out == NULL)) {
 		return SQ_EINVAL;
 	}
 	if ((squeal_model_params_check(params) != SQ_OK) ||
