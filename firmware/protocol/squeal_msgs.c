@@ -45,7 +45,6 @@ _Static_assert(SIG_END == MSG_SIG_COUNT, "MSG_SIG_COUNT out of date");
 #define N_DT (SIG_DG_CRC - SIG_DT_CRC)
 #define N_DG (SIG_D2_CRC - SIG_DG_CRC)
 #define N_D2 (SIG_END - SIG_D2_CRC)
-#define N_MAX N_DG
 
 _Static_assert(MSG_FAULT_ALL == (1U << (SIG_DG_UPTIME - SIG_DG_FAULT0)) - 1U,
 	       "one fault signal per MSG_FAULT_* bit");
