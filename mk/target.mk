@@ -78,10 +78,11 @@ firmware: $(FW_IMAGE).elf $(FW_IMAGE).bin $(FW_IMAGE).hex
 	@echo "== $(FW_IMAGE).elf ($(TARGET), $(NUMERIC))"
 	@$(ARM_SIZE) $(FW_IMAGE).elf
 	@tests/target/size-report.sh $(FW_IMAGE).elf
+	@$(PYTHON) tools/stack_usage.py $(FW_IMAGE).elf build/$(FW_CONFIG)/fw | tail -1
 	$(if $(filter fixed,$(NUMERIC)),tests/target/check-no-float.sh $(FW_IMAGE).elf)
 
 stack-usage: $(FW_IMAGE).elf
-	$(PYTHON) tools/stack_usage.py build/$(FW_CONFIG)/fw
+	$(PYTHON) tools/stack_usage.py $(FW_IMAGE).elf build/$(FW_CONFIG)/fw
 
 flash: $(FW_IMAGE).elf
 	tools/flash.sh $(if $(DRY_RUN),--dry-run) --target $(TARGET) $(FW_IMAGE).elf
@@ -124,7 +125,9 @@ build/host/test_bxcan_timing: tests/target/test_bxcan_timing.c hal/stm32f4/bxcan
 
 # Target-in-the-loop tests: the scripts run QEMU on images make builds first.
 tests/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
-	build/host/tv-digest build/host-fixed/tv-digest build/stm32f4/squeal-monitor.elf \
-	build/stm32f103/squeal-monitor.elf build/stm32f103-float/squeal-monitor.elf
+	build/host/tv-digest build/host-fixed/tv-digest
 tests/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf
-TEST_PROGS += build/host/test_bxcan_timing tests/target/run-golden.sh tests/target/run-ecu-boot.sh
+tests/target/check-images.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
+	build/stm32f103-float/squeal-monitor.elf
+TEST_PROGS += build/host/test_bxcan_timing tests/target/check-images.sh tests/target/run-golden.sh \
+	tests/target/run-ecu-boot.sh
