@@ -9,7 +9,7 @@
 
 OSCSIM_SRCS := host-sim/oscsim/oscsim.c host-sim/oscsim/oscsim_map.c \
 	host-sim/oscsim/oscsim_cmd.c
-OSCSIM_VARIANTS := host host-fixed test
+OSCSIM_VARIANTS := host host-fixed test test-fixed
 OSCSIM_NUM_SRC := host-sim/sim_num.c
 
 define oscsim_rules

@@ -423,6 +423,13 @@ int oscsim_dp5_advance(oscsim_dp5_t *me, double t_end, oscsim_watch_t *watch)
 	}
 	for (k = 0; k < n_ev; k++) {
 		g_old[k] = watch->ev[k].fn(me->t, me->y, watch->ev[k].ctx);
+		if (g_old[k] == 0.0 && watch->ev[k].dir != 0) {
+			/* starting on the surface of a one-way event (a mode
+			 * just switched there): we leave it to the side the
+			 * event comes back from, so an excursion that returns
+			 * within the first sub-step is still a crossing */
+			g_old[k] = -(double)watch->ev[k].dir * DBL_MIN;
+		}
 	}
 	while ((double)dir * (t_end - me->t) > 0.0) {
 		double t_stop;

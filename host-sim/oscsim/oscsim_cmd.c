@@ -389,7 +389,7 @@ static void map_usage(FILE *f)
 	fprintf(f,
 		"usage: squeal-sim map [--brake NAME|all] [--grid N] [--na N] [--nv N]\n"
 		"         [--a-max A] [--v-max V] [--margin M] [--no-linear] [--csv FILE|-]\n"
-		"         [--check] [--list]\n\n"
+		"         [--basin K] [--check] [--list]\n\n"
 		"Classifies every point of an (a, v0) grid by simulation of the oscillator\n"
 		"(backward-time search for the unstable sliding cycle) and by the firmware\n"
 		"model with the exact and the cubic criterion, and reports how they agree.\n\n"
@@ -400,6 +400,9 @@ static void map_usage(FILE *f)
 		"  --v-max V     largest disc speed [m/s] (default 3)\n"
 		"  --margin M    'near a border' = within M in ln Q (default 0.01)\n"
 		"  --no-linear   skip the per-point simulation of the linear test\n"
+		"  --basin K     basin test at every K-th bistable point (farther than 0.05\n"
+		"                in ln Q from a border): the full oscillator started at 0.8\n"
+		"                and 1.2 x the exact model's cycle must decay / stick-slip\n"
 		"  --csv FILE    every point as CSV ('-' = stdout, the summary then goes\n"
 		"                to stderr)\n"
 		"  --check       exit 1 unless the exact criterion agrees at every point\n"
@@ -412,13 +415,15 @@ static void csv_point(void *ctx, const oscsim_variation_t *var,
 {
 	FILE *f = ctx;
 
-	fprintf(f, "%s,%.6f,%.6f,%.9f,%.9f,%s,%.9f,%d,%s,%.9f,%s,%.9f,%.9f,%.9f\n",
+	fprintf(f, "%s,%.6f,%.6f,%.9f,%.9f,%s,%.9f,%d,%s,%.9f,%s,%.9f,%.9f,%.9f,%s,%s\n",
 		var->name, pt->a_spm, pt->v0_mps, pt->ln_q, pt->s,
 		oscsim_truth_name(pt->truth), pt->sim_x, pt->linear_grows,
 		squeal_model_state_name((squeal_state_t)pt->exact_state),
 		pt->exact_x,
 		squeal_model_state_name((squeal_state_t)pt->cubic_state),
-		pt->cubic_x, pt->ln_q_border, pt->border_dist);
+		pt->cubic_x, pt->ln_q_border, pt->border_dist,
+		pt->basin_in < 0 ? "" : oscsim_basin_name((oscsim_basin_outcome_t)pt->basin_in),
+		pt->basin_out < 0 ? "" : oscsim_basin_name((oscsim_basin_outcome_t)pt->basin_out));
 }
 
 static double pct(uint32_t num, uint32_t den)
@@ -447,6 +452,13 @@ static void map_report(FILE *f, const oscsim_variation_t *var,
 		st->cubic_under, st->cubic_over, st->cubic_far_disagree,
 		st->cubic_worst_dist, 100.0 * st->cubic_amp_err,
 		st->cubic_amp_err_at_q, 100.0 * st->cubic_amp_err_far);
+	if (st->basin_tested > 0U) {
+		fprintf(f, "  basin test at %u bistable points (full oscillator from 0.8 / 1.2 x the exact cycle): %u decay inside and stick-slip outside, %u wrong, %u undecided\n",
+			st->basin_tested, st->basin_ok, st->basin_wrong,
+			st->basin_undecided);
+		fprintf(f, "  the same from 0.8 x the cubic cycle: %u of %u end in stick-slip (its cycle is too large)\n",
+			st->basin_cubic_captured, st->basin_cubic_tested);
+	}
 	if (st->linear_checked > 0U) {
 		fprintf(f, "  linear test simulated at %u points: %u disagree with Q <= 1/2 away from the Hopf border\n",
 			st->linear_checked, st->linear_mismatch);
@@ -457,7 +469,7 @@ int oscsim_cmd_map(int argc, char **argv)
 {
 	enum {
 		O_BRAKE = 256, O_GRID, O_NA, O_NV, O_AMAX, O_VMAX, O_MARGIN,
-		O_NOLIN, O_CSV, O_CHECK, O_LIST
+		O_NOLIN, O_CSV, O_CHECK, O_LIST, O_BASIN
 	};
 	static const struct option options[] = {
 		{ "brake", required_argument, NULL, O_BRAKE },
@@ -471,6 +483,7 @@ int oscsim_cmd_map(int argc, char **argv)
 		{ "csv", required_argument, NULL, O_CSV },
 		{ "check", no_argument, NULL, O_CHECK },
 		{ "list", no_argument, NULL, O_LIST },
+		{ "basin", required_argument, NULL, O_BASIN },
 		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 }
 	};
@@ -523,6 +536,10 @@ int oscsim_cmd_map(int argc, char **argv)
 		case O_CSV:
 			csv = optarg;
 			break;
+		case O_BASIN:
+			bad = parse_count("map", "--basin", optarg, 1000000U,
+					  &o.basin_every);
+			break;
 		case O_CHECK:
 			check = 1;
 			break;
@@ -564,7 +581,7 @@ int oscsim_cmd_map(int argc, char **argv)
 				return 1;
 			}
 		}
-		fprintf(csv_f, "brake,a_spm,v0_mps,ln_q,s,truth,sim_x,linear_grows,exact,exact_x,cubic,cubic_x,ln_q_border,border_dist\n");
+		fprintf(csv_f, "brake,a_spm,v0_mps,ln_q,s,truth,sim_x,linear_grows,exact,exact_x,cubic,cubic_x,ln_q_border,border_dist,basin_in,basin_out\n");
 	}
 	fprintf(rep, "model build: %s; grid %u x %u, a in (0, %g] s/m, v0 in (0, %g] m/s\n",
 		SQUEAL_NUMERIC_NAME, o.n_a, o.n_v, o.a_max_spm, o.v_max_mps);
@@ -587,7 +604,7 @@ int oscsim_cmd_map(int argc, char **argv)
 		map_report(rep, v, &o, &st);
 		if (check) {
 			int ok = st.exact_far_disagree == 0U &&
-				 st.linear_mismatch == 0U;
+				 st.linear_mismatch == 0U && st.basin_wrong == 0U;
 
 			fprintf(rep, "  check %s: %s\n", v->name, ok ? "PASS" : "FAIL");
 			if (!ok) {

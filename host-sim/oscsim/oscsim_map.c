@@ -68,6 +68,9 @@ void oscsim_map_default_opts(oscsim_map_opts_t *o)
 	o->v_max_mps = 3.0;
 	o->border_margin = 0.01;
 	o->check_linear = 1;
+	o->basin_every = 0U;
+	o->basin_min_dist = 0.05;
+	o->basin_periods = 3000U;
 	oscsim_cycle_default_opts(&o->cyc);
 	/* a classification needs far less than the table's 1e-10 */
 	o->cyc.rtol = 1e-9;
@@ -277,6 +280,24 @@ static void tally(oscsim_map_stats_t *st, const oscsim_map_opts_t *o,
 			}
 		}
 	}
+	if (pt->basin_in >= 0) {
+		st->basin_tested++;
+		if (pt->basin_in == OSCSIM_BASIN_DECAYED &&
+		    pt->basin_out == OSCSIM_BASIN_CAPTURED) {
+			st->basin_ok++;
+		} else if (pt->basin_in == OSCSIM_BASIN_CAPTURED ||
+			   pt->basin_out == OSCSIM_BASIN_DECAYED) {
+			st->basin_wrong++;
+		} else {
+			st->basin_undecided++;
+		}
+	}
+	if (pt->basin_cubic_in >= 0) {
+		st->basin_cubic_tested++;
+		if (pt->basin_cubic_in == OSCSIM_BASIN_CAPTURED) {
+			st->basin_cubic_captured++;
+		}
+	}
 	if (pt->linear_grows >= 0) {
 		st->linear_checked++;
 		if (fabs(pt->ln_q - LN_HALF) > o->border_margin &&
@@ -286,6 +307,37 @@ static void tally(oscsim_map_stats_t *st, const oscsim_map_opts_t *o,
 	}
 }
 
+/* The physical check of a predicted cycle: inside it the full oscillator
+ * (with sticking) must settle, outside it must end in stick-slip. */
+static int basin_pair(const oscsim_params_t *p, double model_x,
+		      uint32_t periods, oscsim_map_point_t *pt)
+{
+	oscsim_basin_outcome_t in, out, cubic_in;
+	int rc;
+
+	/* the paper's cubic cycle, for contrast: it is too large, so a
+	 * start "safely inside" it can already be outside the real one */
+	if (isfinite(pt->cubic_x)) {
+		rc = oscsim_basin(p, pt->cubic_x, 0.8, periods, &cubic_in, NULL);
+		if (rc != SQ_OK) {
+			return rc;
+		}
+		pt->basin_cubic_in = (int)cubic_in;
+	}
+	rc = oscsim_basin(p, model_x, 0.8, periods, &in, NULL);
+
+	if (rc != SQ_OK) {
+		return rc;
+	}
+	rc = oscsim_basin(p, model_x, 1.2, periods, &out, NULL);
+	if (rc != SQ_OK) {
+		return rc;
+	}
+	pt->basin_in = (int)in;
+	pt->basin_out = (int)out;
+	return SQ_OK;
+}
+
 int oscsim_map_run(const oscsim_variation_t *var, const oscsim_map_opts_t *o,
 		   oscsim_map_point_fn fn, void *ctx, oscsim_map_stats_t *st)
 {
@@ -293,6 +345,7 @@ int oscsim_map_run(const oscsim_variation_t *var, const oscsim_map_opts_t *o,
 	 * frame, and the sweep is single-threaded */
 	static oscsim_border_t border;
 	oscsim_cycle_opts_t tab_opts;
+	uint32_t basin_candidates = 0;
 	double t0 = now_s();
 	uint32_t i, j;
 	int rc;
@@ -346,6 +399,22 @@ int oscsim_map_run(const oscsim_variation_t *var, const oscsim_map_opts_t *o,
 			if (isfinite(pt.ln_q_border)) {
 				pt.border_dist = fmin(pt.border_dist,
 						      fabs(pt.ln_q - pt.ln_q_border));
+			}
+			pt.basin_in = -1;
+			pt.basin_out = -1;
+			pt.basin_cubic_in = -1;
+			if (o->basin_every > 0U &&
+			    pt.truth == OSCSIM_TRUTH_BISTABLE &&
+			    pt.border_dist > o->basin_min_dist &&
+			    isfinite(pt.exact_x)) {
+				if (basin_candidates % o->basin_every == 0U) {
+					rc = basin_pair(&p, pt.exact_x,
+							o->basin_periods, &pt);
+					if (rc != SQ_OK) {
+						return rc;
+					}
+				}
+				basin_candidates++;
 			}
 			tally(st, o, &pt);
 			if (fn != NULL) {

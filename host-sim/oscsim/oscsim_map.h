@@ -39,6 +39,11 @@ typedef struct {
 	double v_max_mps;
 	double border_margin;    /* |d ln Q| counted as "near a border"  */
 	int check_linear;        /* simulate the linear test per point   */
+	uint32_t basin_every;    /* basin-test every n-th bistable point
+				  * farther than basin_min_dist from a
+				  * border (0: none)                     */
+	double basin_min_dist;
+	uint32_t basin_periods;  /* budget per start, natural periods    */
 	oscsim_cycle_opts_t cyc;
 } oscsim_map_opts_t;
 
@@ -60,6 +65,11 @@ typedef struct {
 	double cubic_x;
 	double ln_q_border;   /* simulated bistable/stable border at this s  */
 	double border_dist;   /* min |ln Q - border| over both borders       */
+	int basin_in;         /* oscsim_basin_outcome_t of the full stick-slip
+			       * oscillator started at 0.8 x the exact model's
+			       * predicted cycle, -1 when not tested          */
+	int basin_out;        /* the same at 1.2 x                           */
+	int basin_cubic_in;   /* started at 0.8 x the cubic cycle            */
 } oscsim_map_point_t;
 
 typedef struct {
@@ -85,6 +95,12 @@ typedef struct {
 	uint32_t amp_points;
 	uint32_t linear_checked;
 	uint32_t linear_mismatch;     /* simulated growth vs Q <= 1/2, far */
+	uint32_t basin_tested;        /* points basin-tested               */
+	uint32_t basin_ok;            /* 0.8 decayed and 1.2 captured      */
+	uint32_t basin_undecided;     /* a start undecided within budget   */
+	uint32_t basin_wrong;         /* a start went the other way        */
+	uint32_t basin_cubic_tested;  /* 0.8 x the cubic cycle ...         */
+	uint32_t basin_cubic_captured; /* ... ended in stick-slip anyway   */
 	uint32_t cycle_evals;
 	uint64_t cycle_steps;
 	double seconds;

@@ -9,7 +9,7 @@ cd "$(dirname "$0")/../.."
 grid=${OSCSIM_BENCH_GRID:-100}
 for build in host host-fixed; do
 	start=$(date +%s.%N)
-	build/$build/oscsim map --grid "$grid" --brake all --check || true
+	build/$build/oscsim map --grid "$grid" --brake all --basin 20 --check || true
 	end=$(date +%s.%N)
 	printf 'oscsim map (%s, %s x %s, 7 brakes): %.1f s wall\n\n' "$build" "$grid" "$grid" \
 		"$(echo "$end - $start" | bc)"

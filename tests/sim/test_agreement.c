@@ -35,13 +35,16 @@ static void run_brake(const char *name, oscsim_map_stats_t *st)
 	o.n_a = GRID;
 	o.n_v = GRID;
 	o.border_margin = 0.01;
+	o.basin_every = 8U;
 	assert_int_equal(oscsim_map_run(v, &o, NULL, NULL, st), SQ_OK);
 	printf("  %-8s exact %.2f %% agree (%u far), cubic %.2f %% (%u far), "
-	       "cycle error exact %.3f %% cubic %.1f %% (off Hopf), %.2f s\n",
+	       "cycle error exact %.3f %% cubic %.1f %% (off Hopf), basin %u/%u "
+	       "(cubic 0.8 x captured %u/%u), %.2f s\n",
 	       name, 100.0 * st->exact_agree / st->points, st->exact_far_disagree,
 	       100.0 * st->cubic_agree / st->points, st->cubic_far_disagree,
 	       100.0 * st->exact_amp_err_far, 100.0 * st->cubic_amp_err_far,
-	       st->seconds);
+	       st->basin_ok, st->basin_tested, st->basin_cubic_captured,
+	       st->basin_cubic_tested, st->seconds);
 	assert_int_equal(st->points, GRID * GRID);
 	/* every class occurs, or the test would prove little */
 	assert_true(st->truth_count[OSCSIM_TRUTH_UNSTABLE] > 0U);
@@ -58,6 +61,13 @@ static void run_brake(const char *name, oscsim_map_stats_t *st)
 	 * at D = 0.023, 0.7 % at D = 0.1) away from the Hopf point, where the
 	 * cycle shrinks to nothing */
 	assert_true(st->exact_amp_err_far < 0.01);
+	/* and physically: the full oscillator with sticking, started inside
+	 * the exact model's cycle (0.8 x), settles; outside (1.2 x) it ends
+	 * in stick-slip */
+	assert_true(st->basin_tested > 0U);
+	assert_int_equal(st->basin_wrong, 0);
+	assert_int_equal(st->basin_undecided, 0);
+	assert_int_equal(st->basin_ok, st->basin_tested);
 }
 
 static void test_default_brake(void **state)

@@ -346,6 +346,79 @@ static void test_sim_stick_and_release_with_constant_friction(void **state)
 	assert_true(r.v_max_mps <= p.v0_mps * (1.0 + 1e-9));
 }
 
+typedef struct {
+	double v0;
+	uint32_t n;
+	uint32_t bad;
+	uint32_t neg;
+} mode_check_t;
+
+static void check_mode(void *ctx, double t, double x, double v,
+		       oscsim_mode_t mode)
+{
+	mode_check_t *c = ctx;
+	double tol = 1e-6 * c->v0;
+
+	(void)t;
+	(void)x;
+	c->n++;
+	if ((mode == OSCSIM_SLIP_POS && v > c->v0 + tol) ||
+	    (mode == OSCSIM_SLIP_NEG && v < c->v0 - tol) ||
+	    (mode == OSCSIM_STICK && v != c->v0)) {
+		c->bad++;
+	}
+}
+
+static void count_neg(void *ctx, double t, double x, double v,
+		      oscsim_mode_t mode)
+{
+	mode_check_t *c = ctx;
+
+	(void)t;
+	(void)x;
+	(void)v;
+	if (mode == OSCSIM_SLIP_NEG) {
+		c->neg++;
+	}
+}
+
+/* A violent start (pad pulled 1.5 mm off and released): the pad
+ * overtakes the disc for a moment (w < 0) before it sticks. Every sample
+ * must be in the mode its relative velocity says; a missed return through
+ * w = 0 used to run on in the wrong branch until the step size died. */
+static void test_sim_modes_match_relative_velocity(void **state)
+{
+	/* 0.68266 mm grazes: there F_req is -mu_0 N at w = 0 */
+	const double dx[] = { 6.8266e-4, 7e-4, 8e-4 };
+	oscsim_params_t p;
+	oscsim_sim_opts_t o;
+	oscsim_sim_result_t r;
+	mode_check_t c = { 0.0, 0U, 0U, 0U };
+	size_t i;
+
+	(void)state;
+	oscsim_default_params(&p);
+	p.force_n = 20000.0;
+	p.slope_spm = 4.65;
+	p.v0_mps = 1.725;
+	c.v0 = p.v0_mps;
+	for (i = 0; i < sizeof(dx) / sizeof(dx[0]); i++) {
+		oscsim_sim_default_opts(&o, 0.005);
+		o.sample_dt_s = 2e-7;
+		o.on_sample = check_mode;
+		o.on_switch = count_neg;
+		o.cb_ctx = &c;
+		assert_int_equal(oscsim_simulate(&p, oscsim_steady_x(&p) + dx[i],
+						 0.0, &o, &r),
+				 SQ_OK);
+		assert_true(r.stick_entries > 0U);
+		assert_true(r.switches < 100U);
+	}
+	assert_true(c.n > 3U * 20000U);
+	assert_int_equal(c.bad, 0);
+	assert_true(c.neg >= 3U);
+}
+
 /* ---- the sliding cycle -------------------------------------------------- */
 
 /* model.md section 6: max u' of the unstable cycle, simulated there. */
@@ -531,6 +604,7 @@ int main(void)
 		cmocka_unit_test(test_dp5_budget_and_bad_arguments),
 		cmocka_unit_test(test_sim_constant_friction_is_the_damped_oscillator),
 		cmocka_unit_test(test_sim_stick_and_release_with_constant_friction),
+		cmocka_unit_test(test_sim_modes_match_relative_velocity),
 		cmocka_unit_test(test_cycle_reproduces_model_md_table),
 		cmocka_unit_test(test_cycle_respects_the_stick_line),
 		cmocka_unit_test(test_linear_growth_matches_linearisation),
