@@ -51,6 +51,7 @@ static void input_init(input_t *in, uint64_t now_us)
 	in->value = 0;
 	in->filtered_q8 = 0;
 	in->last_used_us = now_us;
+	in->last_seen_us = now_us;
 	in->fresh = false;
 	in->count = (input_counters_t){ 0 };
 }
@@ -143,6 +144,14 @@ static bool input_plausible(input_t *in, uint16_t raw, uint16_t na_raw,
 	return ok;
 }
 
+static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
+{
+	/* HAL timestamps share hal_time_us()'s clock; a frame stamped in
+	 * the future (clock glitch) is taken as received now */
+	return ((f->timestamp_us != 0U) && (f->timestamp_us <= me->now_us)) ?
+		f->timestamp_us : me->now_us;
+}
+
 /*
  * The E2E part shared by both inputs. Returns true when the frame may be
  * used; a frame that failed marks the input (fault) and is counted.
@@ -169,13 +178,16 @@ static bool input_e2e(monitor_t *me, input_t *in, const e2e_p01_config_t *cfg,
 	switch (st) {
 	case E2E_P01_STATUS_OK:
 	case E2E_P01_STATUS_INITIAL:
+		in->last_seen_us = frame_time(me, f);
 		return true;
 	case E2E_P01_STATUS_OKSOMELOST:
 		sat_add(&in->count.e2e_lost, in->e2e.lost_data);
+		in->last_seen_us = frame_time(me, f);
 		return true;
 	case E2E_P01_STATUS_REPEATED:
 		/* no new data, not an error: a frozen sender goes stale */
 		sat_inc(&in->count.e2e_repeated);
+		in->last_seen_us = frame_time(me, f);
 		return false;
 	case E2E_P01_STATUS_WRONGSEQUENCE:
 		sat_inc(&in->count.e2e_wrong_sequence);
@@ -200,13 +212,6 @@ static void plain_copy(const hal_can_frame_t *f, uint8_t data[8])
 	data[1] &= 0xF0U;
 }
 
-static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
-{
-	/* HAL timestamps share hal_time_us()'s clock; a frame stamped in
-	 * the future (clock glitch) is taken as received now */
-	return ((f->timestamp_us != 0U) && (f->timestamp_us <= me->now_us)) ?
-		f->timestamp_us : me->now_us;
-}
 
 static void speed_frame(monitor_t *me, const hal_can_frame_t *f)
 {
@@ -311,11 +316,18 @@ static void input_tick(monitor_t *me, input_t *in)
 		(me->now_us - in->last_used_us) : 0U;
 
 	if ((age > timeout_us) && ((in->faults & INPUT_FAULT_STALE) == 0U)) {
+		const uint64_t silent = (me->now_us > in->last_seen_us) ?
+			(me->now_us - in->last_seen_us) : 0U;
+
 		in->faults |= INPUT_FAULT_STALE;
 		sat_inc(&in->count.stale_events);
-		/* after an outage the E2E receiver starts over (P01: the next
-		 * good frame is INITIAL, whatever its counter) */
-		e2e_p01_rx_reset(&in->e2e);
+		/* after a real outage the E2E receiver starts over (P01: the
+		 * next good frame is INITIAL, whatever its counter); but a
+		 * sender that kept sending its last frame is frozen: keep the
+		 * reference so its repeats stay REPEATED and the input FAULT */
+		if (silent > timeout_us) {
+			e2e_p01_rx_reset(&in->e2e);
+		}
 		in->has_prev_raw = false;
 		in->fresh = false;
 	}

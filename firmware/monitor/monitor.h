@@ -69,6 +69,7 @@ typedef struct {
 	int32_t value;             /* conditioned: v0 [um/s] or force [mN]        */
 	int64_t filtered_q8;       /* low-pass state, value x 256 (needs 64 bit) */
 	uint64_t last_used_us;     /* time of the last used frame                 */
+	uint64_t last_seen_us;     /* last frame with a good CRC, even repeated   */
 	bool fresh;                /* a new value since the last classification   */
 	input_counters_t count;
 } input_t;
