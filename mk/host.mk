@@ -18,7 +18,11 @@ ALL_TARGETS += build/host/squeal-sim build/host-fixed/squeal-sim
 
 .PHONY: demo
 demo: deps-demo build/host/squeal-sim
-	build/host/squeal-sim sweep
+	@tools/demo.sh
 
 # firmware/ builds for both MCUs; the fixed build has no floating point
 TEST_PROGS += tests/firmware/check_portable.sh
+
+# the README's main job (tools/demo.sh) end to end
+TEST_PROGS += tests/demo/test_demo.sh
+tests/demo/test_demo.sh: build/host/squeal-sim

@@ -1,0 +1,100 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Readable timeline of a monitored drive, from `squeal-sim decode --csv`.
+
+Walks the bus log in time order with a progress bar, prints every change of
+the monitor's SquealState / WarningLevel with the vehicle speed, pad force
+and margins at that moment, compares each border crossing with the model's
+closed-form prediction for the measured force, and writes the drive CSV
+(time_s,v0_mps,force_n,state,warning) that tools/plots/plot_drive.py draws.
+"""
+import argparse
+import csv
+import math
+import sys
+
+R_P, R_W = 0.12, 0.30            # default calibration (model.md section 8)
+A, D, W0, M, DMU = 2.0, 0.023, 5000.0, 1.0, 0.15
+STATES = {0: "stable", 1: "bistable", 2: "unstable", 3: "not sliding", 15: "FAULT"}
+LEVELS = {0: "none", 1: "advisory", 2: "WARNING", 3: "CRITICAL"}
+
+
+def hopf_speed(force_n):
+    """v_H = (1/a) ln(a N dmu / (2 D w0 m)), model.md section 2."""
+    arg = A * force_n * DMU / (2 * D * W0 * M)
+    return math.log(arg) / A if arg > 1 else None
+
+
+def bar(frac, width=30):
+    n = int(round(frac * width))
+    return "[" + "#" * n + "." * (width - n) + "]"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("frames_csv")
+    ap.add_argument("--drive-csv", required=True)
+    args = ap.parse_args()
+    with open(args.frames_csv, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit("demo_timeline: no frames")
+    t_end = float(rows[-1]["time_s"]) or 1.0
+    tty = sys.stdout.isatty()
+    v0 = force = None
+    last = None
+    next_mark = 0.0
+    drive = []
+    print("   time    vehicle   v0 (disc)   force     state         warning    note")
+    for r in rows:
+        t = float(r["time_s"])
+        if t >= next_mark:
+            line = "%s %3.0f%%  t = %5.2f s" % (bar(t / t_end), 100 * t / t_end, t)
+            if tty:
+                sys.stderr.write("\r" + line)
+                sys.stderr.flush()
+            next_mark += t_end / 10
+        msg = r["message"]
+        if msg == "DiscSpeed" and r["e2e"] in ("ok", "initial") or msg == "DiscSpeed" and r["e2e"].startswith("lost"):
+            v0 = float(r["DiscSpeed_radps"]) * R_P
+        elif msg == "PadForce" and (r["e2e"] in ("ok", "initial") or r["e2e"].startswith("lost")):
+            force = float(r["PadForce_N"])
+        elif msg == "SquealStatus":
+            st, lvl = int(r["SquealState"]), int(r["WarningLevel"])
+            if v0 is not None and force is not None:
+                drive.append((t, v0, force, st, lvl))
+            if (st, lvl) != last:
+                if tty:
+                    sys.stderr.write("\r" + " " * 60 + "\r")
+                note = ""
+                if v0 is not None and force is not None:
+                    vh = hopf_speed(force)
+                    if st == 2 and vh is not None:
+                        note = "model: Hopf border v_H = %.3f m/s at %.0f N" % (vh, force)
+                    elif st == 1 and r["BasinRatio"] not in ("NA", ""):
+                        note = "basin ratio %.2f: a disturbance > trigger velocity starts stick-slip" % float(r["BasinRatio"])
+                    elif st == 0 and r["HopfMargin_mps"] not in ("NA", ""):
+                        note = "Hopf margin %+.2f m/s" % float(r["HopfMargin_mps"])
+                    elif st == 3:
+                        note = "disc stopped: nothing slides"
+                if st == 15:
+                    note = "no inputs yet" if not drive else "inputs stale: the senders stopped"
+                vtxt = "%5.1f km/h" % (v0 * R_W / R_P * 3.6) if v0 is not None else "    -    "
+                v0txt = "%6.3f m/s" % v0 if v0 is not None else "     -    "
+                ftxt = "%6.0f N" % force if force is not None else "    -   "
+                print("%7.3f s  %s  %s  %s   %-12s  %-9s  %s" % (
+                    t, vtxt, v0txt, ftxt, STATES.get(st, str(st)), LEVELS.get(lvl, str(lvl)), note))
+                last = (st, lvl)
+    if tty:
+        sys.stderr.write("\r%s 100%%  t = %5.2f s\n" % (bar(1.0), t_end))
+    else:
+        print("   (%d bus frames analysed, %.2f s of driving)" % (len(rows), t_end))
+    with open(args.drive_csv, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["time_s", "v0_mps", "force_n", "state", "warning"])
+        for row in drive:
+            w.writerow(["%.6f" % row[0], "%.6f" % row[1], "%.3f" % row[2], row[3], row[4]])
+
+
+if __name__ == "__main__":
+    main()
