@@ -12,7 +12,7 @@ DEMO_OUT=$out tools/demo.sh >"$out.txt" 2>&1
 rc=$?
 cat "$out.txt"
 check "demo exits 0" '[ $rc = 0 ]'
-order=$(awk '/ s  /{print $6}' "$out.txt" | tr '\n' ' ')
+order=$(grep -E '^ *[0-9]+\.[0-9]+ s ' "$out.txt" | grep -oE ' (stable|bistable|unstable|not sliding|FAULT) ' | tr -s ' \n' ' ')
 check "states in order (got: $order)" '[[ "$order" == *"stable bistable bistable unstable not"* ]]'
 check "critical warning at the Hopf border" 'grep -q "unstable *CRITICAL" "$out.txt"'
 check "picture written" '[ -s "$out/drive_map.png" ]'
