@@ -131,3 +131,12 @@ tests/target/check-images.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/s
 	build/stm32f103-float/squeal-monitor.elf
 TEST_PROGS += build/host/test_bxcan_timing tests/target/check-images.sh tests/target/run-golden.sh \
 	tests/target/run-ecu-boot.sh
+
+# Bench images: the 1 ms monitor step on the M4F (float) and the M3 (fixed).
+BENCH_STEP_SRCS := $(FW_LIB_SRCS) tests/target/bench_step.c
+$(eval $(call arm_config,bench-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,bench-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+tests/target/bench-target.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
+	build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
+	build/bench-m4f/bench-step.elf build/bench-m3/bench-step.elf
+BENCH_PROGS += tests/target/bench-target.sh

@@ -142,7 +142,8 @@ void hal_idle_until(uint64_t deadline_us)
 {
 	uint32_t primask = cm_irq_save();
 
-	if (hal_time_us() < deadline_us) {
+	/* A frame already waiting needs the caller now, not after a tick. */
+	if (!stm32_can_rx_pending() && hal_time_us() < deadline_us) {
 		cm_dsb();
 		cm_wfi();
 	}

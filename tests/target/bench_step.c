@@ -1,0 +1,154 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Cost of the 1 ms task on the target, for `make bench` under
+ * "qemu-system-arm -icount shift=0": the monitor (firmware/monitor) with the
+ * default calibration, fed E2E-protected DiscSpeed/PadForce frames every
+ * 10 ms through a braking manoeuvre (disc 100 -> 0 rad/s at 9000 N, the
+ * same ramp as tests/monitor/monitor_step_cost.c), then 1 s dwells at three
+ * speeds. One step = the frames of that millisecond (monitor_on_frame) +
+ * monitor_step() + draining its TX queue, as squeal_app_poll does, without
+ * the HAL calls. Timing as tv_target.c: hal_cycles() and a calibration loop.
+ */
+#include <string.h>
+
+#include "calib.h"
+#include "e2e_p01.h"
+#include "hal.h"
+#include "hal_stm32.h"
+#include "monitor.h"
+#include "squeal_app.h"
+#include "squeal_msgs.h"
+
+#define CAL_LOOPS 100000UL
+#define FORCE_RAW 18000U /* 9000 N */
+
+static monitor_t mon;
+
+int squeal_app_init(void)
+{
+	return SQ_OK;
+}
+
+uint64_t squeal_app_poll(void)
+{
+	return hal_time_us();
+}
+
+/* The layout comes from the protocol's own pack functions (the DBC's). */
+static hal_can_frame_t make_frame(uint32_t id, uint16_t data_id, e2e_p01_tx_t *tx, uint16_t raw)
+{
+	hal_can_frame_t f;
+	int rc;
+
+	memset(&f, 0, sizeof(f));
+	f.id = id;
+	if (id == MSG_DISC_SPEED_ID) {
+		const msg_disc_speed_t m = { 0U, 0U, raw };
+
+		rc = msg_disc_speed_pack(&m, f.data, &f.dlc);
+	} else {
+		const msg_pad_force_t m = { 0U, 0U, raw };
+
+		rc = msg_pad_force_pack(&m, f.data, &f.dlc);
+	}
+	if (rc == SQ_OK) {
+		const e2e_p01_config_t cfg = { data_id, f.dlc, 1U };
+
+		rc = e2e_p01_protect(&cfg, tx, f.data, f.dlc);
+	}
+	if (rc != SQ_OK) {
+		f.dlc = 0U;
+	}
+	return f;
+}
+
+static uint32_t speed_raw_at(uint32_t frame_no)
+{
+	static const uint16_t dwell[3] = { 2500U, 1250U, 900U };
+
+	if (frame_no <= 400U) {
+		return 10000U - 25U * frame_no; /* 100 rad/s down to 0 */
+	}
+	frame_no -= 401U;
+	return dwell[(frame_no / 100U) % 3U];
+}
+
+int squeal_main(volatile const bool *stop)
+{
+	calib_t cal;
+	e2e_p01_tx_t tx_speed = { 0U };
+	e2e_p01_tx_t tx_force = { 0U };
+	uint64_t now_us = 1000000U;
+	uint64_t total = 0U;
+	uint64_t total_frames = 0U;
+	uint32_t steps_frames = 0U;
+	uint32_t worst = 0U;
+	uint32_t n = 0U;
+	uint32_t ms;
+	uint32_t t0;
+	uint32_t cal_ticks;
+	uint32_t overhead;
+	uint32_t frames_sent = 0U;
+
+	(void)stop;
+	calib_default(&cal);
+	if (monitor_init(&mon, &cal, false, 0U, now_us) != SQ_OK) {
+		semihost_write0("BENCH monitor_init failed\n");
+		semihost_exit(1U);
+	}
+	t0 = hal_cycles();
+	overhead = hal_cycles() - t0;
+	t0 = hal_cycles();
+	{
+		uint32_t k = CAL_LOOPS;
+
+		__asm__ volatile("1: subs %0, %0, #1\n\t"
+				 "bne 1b\n\t"
+				 : "+r"(k)::"cc");
+	}
+	cal_ticks = hal_cycles() - t0;
+
+	for (ms = 0; ms < 7000U; ms++) {
+		hal_can_frame_t f;
+		uint32_t dt;
+		uint32_t k;
+		bool frames = (ms % 10U) == 0U;
+
+		now_us += 1000U;
+		t0 = hal_cycles();
+		if (frames) {
+			uint32_t raw = speed_raw_at(frames_sent++);
+
+			f = make_frame(MSG_DISC_SPEED_ID, MSG_DISC_SPEED_DATA_ID, &tx_speed, (uint16_t)raw);
+			f.timestamp_us = now_us;
+			monitor_on_frame(&mon, &f);
+			f = make_frame(MSG_PAD_FORCE_ID, MSG_PAD_FORCE_DATA_ID, &tx_force, FORCE_RAW);
+			f.timestamp_us = now_us;
+			monitor_on_frame(&mon, &f);
+		}
+		monitor_step(&mon, now_us);
+		for (k = 0; k < 16U && monitor_peek_tx(&mon, &f) == SQ_OK; k++) {
+			monitor_tx_done(&mon, SQ_OK);
+		}
+		dt = hal_cycles() - t0;
+		total += dt;
+		if (frames) {
+			total_frames += dt;
+			steps_frames++;
+		}
+		if (dt > worst) {
+			worst = dt;
+		}
+		n++;
+	}
+	semihost_print_u32("BENCH steps=", n, NULL);
+	semihost_print_u32(" ticks_total=", (uint32_t)total, NULL);
+	semihost_print_u32(" steps_with_frames=", steps_frames, NULL);
+	semihost_print_u32(" ticks_frames=", (uint32_t)total_frames, NULL);
+	semihost_print_u32(" ticks_max=", worst, NULL);
+	semihost_print_u32(" overhead_ticks=", overhead, NULL);
+	semihost_print_u32(" cal_ticks=", cal_ticks, NULL);
+	semihost_print_u32(" cal_insns=", 2U * CAL_LOOPS, NULL);
+	semihost_print_u32(" classifications=", mon.count.classifications, "\n");
+	semihost_exit(0U);
+}
