@@ -158,36 +158,43 @@ const msg_desc_t msg_table[MSG_COUNT] = {
 /* Intel layout: bit k of the value goes to frame bit start+k, frame bit b
  * being bit (b % 8) of byte b / 8. Bitwise on purpose: obviously right,
  * and at most 64 steps per frame. */
+/*
+ * Intel (little-endian) signal access, whole bytes at a time: a signal of
+ * len <= 31 bits starting at bit `start` touches at most 5 bytes, which are
+ * gathered into one 64-bit word, masked and scattered back.
+ */
 static void put_bits(uint8_t data[MSG_MAX_DLC], uint8_t start, uint8_t len,
 		     uint32_t value)
 {
-	uint8_t k;
+	const unsigned int first = (unsigned int)start / 8U;
+	const unsigned int last = ((unsigned int)start + len - 1U) / 8U;
+	const unsigned int sh = (unsigned int)start % 8U;
+	const uint64_t mask = (((uint64_t)1U << len) - 1U) << sh;
+	uint64_t w = 0U;
+	unsigned int b;
 
-	for (k = 0U; k < len; k++) {
-		unsigned int bit = (unsigned int)start + k;
-		uint8_t mask = (uint8_t)(1U << (bit % 8U));
-
-		if (((value >> k) & 1U) != 0U) {
-			data[bit / 8U] = (uint8_t)(data[bit / 8U] | mask);
-		} else {
-			data[bit / 8U] = (uint8_t)(data[bit / 8U] & (uint8_t)~mask);
-		}
+	for (b = last + 1U; b > first; b--) {
+		w = (w << 8) | data[b - 1U];
+	}
+	w = (w & ~mask) | (((uint64_t)value << sh) & mask);
+	for (b = first; b <= last; b++) {
+		data[b] = (uint8_t)(w & 0xFFU);
+		w >>= 8;
 	}
 }
 
 static uint32_t get_bits(const uint8_t *data, uint8_t start, uint8_t len)
 {
-	uint32_t value = 0U;
-	uint8_t k;
+	const unsigned int first = (unsigned int)start / 8U;
+	const unsigned int last = ((unsigned int)start + len - 1U) / 8U;
+	uint64_t w = 0U;
+	unsigned int b;
 
-	for (k = 0U; k < len; k++) {
-		unsigned int bit = (unsigned int)start + k;
-
-		if ((((unsigned int)data[bit / 8U] >> (bit % 8U)) & 1U) != 0U) {
-			value |= (uint32_t)1U << k;
-		}
+	for (b = last + 1U; b > first; b--) {
+		w = (w << 8) | data[b - 1U];
 	}
-	return value;
+	return (uint32_t)((w >> ((unsigned int)start % 8U)) &
+			  (((uint64_t)1U << len) - 1U));
 }
 
 static int32_t sig_read(const msg_sig_desc_t *s, const uint8_t *data)
