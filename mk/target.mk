@@ -123,6 +123,16 @@ build/host/test_bxcan_timing: tests/target/test_bxcan_timing.c hal/stm32f4/bxcan
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -o $@ tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
 
+# Two-slot calibration storage over a simulated NOR flash (power cut at every
+# byte); the slot geometry comes from the link, as on the target. No PIE:
+# the slot size is an absolute linker symbol.
+build/test/test_calib_flash: tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/hal_stm32.h
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -o $@ \
+		tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \
+		-Wl,--defsym,__calib_start=calib_flash_sim,--defsym,__calib_slot_size=1024,--defsym,__calib_slot_count=2
+TEST_PROGS += build/test/test_calib_flash
+
 # Target-in-the-loop tests: the scripts run QEMU on images make builds first.
 tests/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
 	build/host/tv-digest build/host-fixed/tv-digest

@@ -1,0 +1,309 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The two-slot calibration storage (hal/stm32f4/calib_flash.c) on the host,
+ * over a simulated NOR flash: erase sets a slot to 0xFF, programming can
+ * only clear bits, and a "power cut" stops any erase or program after a
+ * chosen number of bytes. The claim of hal.h is checked exhaustively: a
+ * write interrupted at ANY byte leaves the old block or the new one
+ * readable, never a mix, never nothing (once a block was stored).
+ * The slot geometry comes from the link (--defsym), as on the target.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "chip.h"
+#include "hal_stm32.h"
+
+#define SLOT 1024U
+uint8_t calib_flash_sim[2U * SLOT] __attribute__((aligned(4)));
+
+static long budget = -1; /* bytes the "power" still allows; -1: unlimited */
+static uint32_t faults;
+
+static bool spend(void)
+{
+	if (budget == 0) {
+		return false;
+	}
+	if (budget > 0) {
+		budget--;
+	}
+	return true;
+}
+
+int chip_flash_erase_slot(uint32_t slot)
+{
+	uint32_t i;
+
+	if (slot > 1U) {
+		return SQ_EINVAL;
+	}
+	for (i = 0; i < SLOT; i++) {
+		if (!spend()) {
+			return SQ_EIO; /* power gone half-way through the erase */
+		}
+		calib_flash_sim[slot * SLOT + i] = 0xFFU;
+	}
+	return SQ_OK;
+}
+
+int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
+{
+	uint8_t *p = (uint8_t *)(uintptr_t)addr;
+	uint32_t i;
+
+	for (i = 0; i < len; i++) {
+		if (!spend()) {
+			return SQ_EIO;
+		}
+		p[i] &= data[i]; /* NOR: bits only go from 1 to 0 */
+	}
+	return SQ_OK;
+}
+
+void hal_watchdog_kick(void)
+{
+}
+
+void stm32_fault_raise(uint32_t hal_fault_bits)
+{
+	faults |= hal_fault_bits;
+}
+
+static void fill(uint8_t *b, uint32_t len, uint8_t seed)
+{
+	uint32_t i;
+
+	for (i = 0; i < len; i++) {
+		b[i] = (uint8_t)(seed + 7U * i);
+	}
+}
+
+static int setup(void **state)
+{
+	(void)state;
+	memset(calib_flash_sim, 0x00, sizeof(calib_flash_sim)); /* garbage, not erased */
+	budget = -1;
+	faults = 0U;
+	return 0;
+}
+
+static void test_empty_reads_enoent(void **state)
+{
+	uint8_t buf[64];
+
+	(void)state;
+	assert_int_equal(hal_calib_read(buf, sizeof(buf)), SQ_ENOENT);
+	memset(calib_flash_sim, 0xFF, sizeof(calib_flash_sim));
+	assert_int_equal(hal_calib_read(buf, sizeof(buf)), SQ_ENOENT);
+}
+
+static void test_write_then_read_round_trip(void **state)
+{
+	uint8_t a[HAL_CALIB_MAX_LEN];
+	uint8_t out[HAL_CALIB_MAX_LEN];
+
+	(void)state;
+	fill(a, sizeof(a), 1U);
+	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(a, out, sizeof(a));
+	assert_int_equal(faults, 0U);
+}
+
+static void test_writes_alternate_slots_and_keep_the_old(void **state)
+{
+	uint8_t a[100], b[100], c[100], out[100];
+
+	(void)state;
+	fill(a, sizeof(a), 1U);
+	fill(b, sizeof(b), 2U);
+	fill(c, sizeof(c), 3U);
+	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
+	assert_int_equal(hal_calib_write(b, sizeof(b)), SQ_OK);
+	/* a is still in the other slot, untouched */
+	assert_memory_equal(&calib_flash_sim[16], a, sizeof(a));
+	assert_memory_equal(&calib_flash_sim[SLOT + 16U], b, sizeof(b));
+	assert_int_equal(hal_calib_write(c, sizeof(c)), SQ_OK);
+	assert_memory_equal(&calib_flash_sim[16], c, sizeof(c));
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(out, c, sizeof(c));
+}
+
+/* The heart of it: cut the power after every possible number of bytes. */
+static void test_interrupted_write_leaves_old_or_new(void **state)
+{
+	uint8_t a[200], b[200], out[200];
+	long cut;
+	long total = -1;
+	uint32_t saw_old = 0U, saw_new = 0U;
+
+	(void)state;
+	fill(a, sizeof(a), 10U);
+	fill(b, sizeof(b), 20U);
+	for (cut = 0;; cut++) {
+		int rc;
+
+		setup(NULL);
+		assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
+		budget = cut;
+		rc = hal_calib_write(b, sizeof(b));
+		budget = -1;
+		assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+		if (memcmp(out, a, sizeof(a)) == 0) {
+			saw_old++;
+			assert_int_not_equal(rc, SQ_OK);
+		} else {
+			assert_memory_equal(out, b, sizeof(b)); /* never a mix */
+			saw_new++;
+		}
+		if (rc == SQ_OK) {
+			total = cut;
+			break;
+		}
+		assert_int_equal(rc, SQ_EIO);
+	}
+	/* erase (1024) + payload + 12 header bytes + 4 magic bytes */
+	assert_int_equal(total, (long)(SLOT + sizeof(b) + 16U));
+	assert_int_equal(saw_new, 1U); /* only the complete write counts */
+	assert_true(saw_old > SLOT);
+}
+
+static void test_corrupt_newest_falls_back_to_older(void **state)
+{
+	uint8_t a[64], b[64], out[64];
+
+	(void)state;
+	fill(a, sizeof(a), 4U);
+	fill(b, sizeof(b), 5U);
+	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
+	assert_int_equal(hal_calib_write(b, sizeof(b)), SQ_OK);
+	calib_flash_sim[SLOT + 16U + 10U] ^= 0x01U; /* one bit of b */
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(out, a, sizeof(a));
+	calib_flash_sim[16U + 63U] ^= 0x80U; /* and one of a */
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_ENOENT);
+}
+
+static void put32(uint8_t *p, uint32_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+	p[2] = (uint8_t)(v >> 16);
+	p[3] = (uint8_t)(v >> 24);
+}
+
+/* Standard CRC-32 (IEEE 802.3, reflected), written here independently. */
+static uint32_t crc32_ref(const uint8_t *p, uint32_t n, uint32_t crc)
+{
+	uint32_t i, k;
+
+	for (i = 0; i < n; i++) {
+		crc ^= p[i];
+		for (k = 0; k < 8U; k++) {
+			crc = (crc & 1U) ? (crc >> 1) ^ 0xEDB88320U : crc >> 1;
+		}
+	}
+	return crc;
+}
+
+/* A slot as the format says: magic "SQCL", seq, len, crc32(seq, len,
+ * payload), payload; all little endian. */
+static void forge_slot(uint32_t slot, uint32_t seq, const uint8_t *payload, uint32_t len)
+{
+	uint8_t *p = &calib_flash_sim[slot * SLOT];
+	uint8_t meta[8];
+	uint32_t crc;
+
+	memset(p, 0xFF, SLOT);
+	put32(&meta[0], seq);
+	put32(&meta[4], len);
+	crc = ~crc32_ref(payload, len, crc32_ref(meta, 8U, 0xFFFFFFFFU));
+	put32(&p[0], 0x4C435153U);
+	put32(&p[4], seq);
+	put32(&p[8], len);
+	put32(&p[12], crc);
+	memcpy(&p[16], payload, len);
+}
+
+static void test_crc_reference_check_value(void **state)
+{
+	(void)state;
+	assert_int_equal(~crc32_ref((const uint8_t *)"123456789", 9U, 0xFFFFFFFFU), 0xCBF43926U);
+}
+
+/* Sequence numbers compare modulo 2^32: after 0xFFFFFFFF comes 0. */
+static void test_sequence_wraps(void **state)
+{
+	uint8_t a[32], b[32], c[32], out[32];
+
+	(void)state;
+	fill(a, sizeof(a), 6U);
+	fill(b, sizeof(b), 7U);
+	fill(c, sizeof(c), 8U);
+	forge_slot(0U, 0xFFFFFFFFU, a, sizeof(a));
+	forge_slot(1U, 0U, b, sizeof(b));
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(out, b, sizeof(b));
+	/* the next write replaces the older slot 0 and gets seq 1 */
+	assert_int_equal(hal_calib_write(c, sizeof(c)), SQ_OK);
+	assert_memory_equal(&calib_flash_sim[SLOT + 16U], b, sizeof(b));
+	assert_int_equal(calib_flash_sim[4], 1U);
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(out, c, sizeof(c));
+	/* a forged slot with the wrong CRC is ignored */
+	put32(&calib_flash_sim[4], 0x7FFFFFFFU);
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(out, b, sizeof(b));
+}
+
+static void test_short_block_pads_and_bad_args(void **state)
+{
+	uint8_t a[8] = { 1, 2, 3, 4, 5, 6, 7, 8 };
+	uint8_t out[12];
+	static const uint8_t want[12] = { 1, 2, 3, 4, 5, 6, 7, 8, 0xFF, 0xFF, 0xFF, 0xFF };
+	uint8_t big[HAL_CALIB_MAX_LEN + 1U];
+
+	(void)state;
+	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(out, want, sizeof(want));
+	memset(big, 0, sizeof(big));
+	assert_int_equal(hal_calib_write(big, sizeof(big)), SQ_EINVAL);
+	assert_int_equal(hal_calib_write(NULL, 4U), SQ_EINVAL);
+	assert_int_equal(hal_calib_read(NULL, 4U), SQ_EINVAL);
+	assert_int_equal(hal_calib_read(big, sizeof(big)), SQ_EINVAL);
+}
+
+static void test_failed_erase_reports_storage_fault(void **state)
+{
+	uint8_t a[16];
+
+	(void)state;
+	fill(a, sizeof(a), 8U);
+	budget = 5;
+	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_EIO);
+	assert_int_equal(faults & HAL_FAULT_CALIB_STORAGE, HAL_FAULT_CALIB_STORAGE);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test_setup(test_empty_reads_enoent, setup),
+		cmocka_unit_test_setup(test_write_then_read_round_trip, setup),
+		cmocka_unit_test_setup(test_writes_alternate_slots_and_keep_the_old, setup),
+		cmocka_unit_test_setup(test_interrupted_write_leaves_old_or_new, setup),
+		cmocka_unit_test_setup(test_corrupt_newest_falls_back_to_older, setup),
+		cmocka_unit_test(test_crc_reference_check_value),
+		cmocka_unit_test_setup(test_sequence_wraps, setup),
+		cmocka_unit_test_setup(test_short_block_pads_and_bad_args, setup),
+		cmocka_unit_test_setup(test_failed_erase_reports_storage_fault, setup),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
