@@ -136,7 +136,7 @@ TEST_PROGS += build/test/test_calib_flash
 # Target-in-the-loop tests: the scripts run QEMU on images make builds first.
 tests/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
 	build/host/tv-digest build/host-fixed/tv-digest
-tests/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf
+tests/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
 tests/target/check-images.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
 	build/stm32f103-float/squeal-monitor.elf
 TEST_PROGS += build/host/test_bxcan_timing tests/target/check-images.sh tests/target/run-golden.sh \
@@ -150,3 +150,5 @@ tests/target/bench-target.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/s
 	build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
 	build/bench-m4f/bench-step.elf build/bench-m3/bench-step.elf
 BENCH_PROGS += tests/target/bench-target.sh
+# ... and one that divides by zero once it runs, to test the fault path
+$(eval $(call arm_config,stm32f4-faulttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))

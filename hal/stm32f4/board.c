@@ -40,6 +40,20 @@ void stm32_board_init(void)
 	stm32_time_start(chip_core_hz());
 	cm_irq_enable();
 	STM32_TEST_EVENT("boot", chip_core_hz());
+#if defined(SQ_TARGET_TEST)
+	{
+		const stm32_fault_record_t *f = stm32_last_fault();
+
+		semihost_print_u32("EVT reset_reason value=", (uint32_t)hal_reset_reason(), NULL);
+		if (f != NULL) {
+			semihost_print_u32(" fault_vector=", f->vector, NULL);
+			semihost_print_hex(" fault_pc=0x", f->pc, NULL);
+			semihost_print_hex(" fault_cfsr=0x", f->cfsr, NULL);
+			semihost_print_u32(" fault_count=", f->count, NULL);
+		}
+		semihost_write0("\n");
+	}
+#endif
 	/* Failure is recorded as HAL_FAULT_CAN_INIT; the firmware runs on
 	 * and reports it (SquealDiag cannot go out then, but the ECU still
 	 * kicks its watchdog and keeps its state). */
@@ -84,6 +98,18 @@ void stm32_test_event(const char *what, uint32_t value)
 		if (!main_loop_seen) {
 			main_loop_seen = true;
 			semihost_print_u32("EVT main_loop uptime_ms=", now, "\n");
+#if defined(SQ_TARGET_TEST_FAULT)
+			/* Fault-path test: divide by zero (trapped: DIV_0_TRP) on
+			 * the first boot; the handler records it and resets, and
+			 * the second boot must report HAL_RESET_FAULT. */
+			if (hal_reset_reason() != HAL_RESET_FAULT) {
+				uint32_t q;
+
+				/* in assembly: in C the compiler may assume it away */
+				__asm__ volatile("udiv %0, %1, %2" : "=r"(q) : "r"(1U), "r"(0U));
+				(void)q;
+			}
+#endif
 		}
 		if (now < SQ_TARGET_TEST_RUN_MS) {
 			return;

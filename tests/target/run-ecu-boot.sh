@@ -8,7 +8,9 @@
 #   - reaches the main loop,
 #   - reports HAL_FAULT_CLOCK_FALLBACK (bit 0) and HAL_FAULT_CAN_INIT (bit 1),
 #   - runs on the 16 MHz HSI, CAN state STOPPED (4),
-#   - starts the watchdog and keeps kicking it until the end.
+#   - starts the watchdog and keeps kicking it until the end;
+# and a fault (divide by zero) is recorded, resets the core, and the next
+# boot reports it as the reset reason.
 # Prints "RESULT: N passed, M failed".
 set -u
 cd "$(dirname "$0")/../.."
@@ -42,5 +44,30 @@ check "watchdog kicked at least every other ms of the loop (${kicks:-?} kicks in
 	[ -n "$kicks" ] && [ "$kicks" -ge $(( (${up:-0} - ${loop_start:-0}) / 2 )) ]
 check "still kicking at the end (last kick ${last:-?} ms, end ${up:-?} ms)" \
 	[ -n "$last" ] && [ $(( up - last )) -le 10 ]
+
+# The fault path: an image that divides by zero once its main loop runs
+# (trapped: the start-up code sets CCR.DIV_0_TRP). The handler must record
+# the cause in no-init RAM and reset; the second boot must find the record,
+# report HAL_RESET_FAULT (4) and run normally.
+felf=build/stm32f4-faulttest/squeal-monitor.elf
+flog=build/test-logs/target-ecu-fault.txt
+timeout 60 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
+	-semihosting-config enable=on,target=native -kernel "$felf" >"$flog" 2>&1
+rc=$?
+sed 's/^/  | /' "$flog"
+check "fault image: ends by itself after the reset (exit 0)" [ "$rc" = 0 ]
+fline=$(grep -m1 '^EVT fault vector=' "$flog" || true)
+check "UsageFault (vector 6) taken" [ -n "$fline" ] && echo "$fline" | grep -q 'vector=6 '
+cfsr=$(echo "$fline" | sed -nE 's/.*cfsr=0x([0-9a-f]+).*/\1/p')
+check "CFSR says DIVBYZERO (bit 25)" [ -n "$cfsr" ] && [ $(( (16#${cfsr:-0} >> 25) & 1 )) = 1 ]
+boot2=$(grep '^EVT reset_reason value=4' "$flog" || true)
+check "second boot reports HAL_RESET_FAULT with the recorded vector" \
+	[ -n "$boot2" ] && echo "$boot2" | grep -q 'fault_vector=6 '
+pc=$(echo "$boot2" | sed -nE 's/.*fault_pc=0x([0-9a-f]+).*/\1/p')
+func=$(arm-none-eabi-addr2line -f -e "$felf" "0x${pc:-0}" | head -1)
+check "recorded PC is the faulting instruction's function (stm32_test_event, got ${func:-?})" \
+	[ "$func" = stm32_test_event ]
+check "second boot runs its main loop to the end" grep -q '^EVT summary.* reset_reason=4 ' "$flog"
+
 echo "RESULT: $pass passed, $fail failed"
 [ "$fail" = 0 ]
