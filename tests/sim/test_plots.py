@@ -108,6 +108,27 @@ def synthetic_drive(path):
     return p
 
 
+def decode_style(drive_csv, path):
+    """The drive as decode --csv writes it: one row per frame, a signal's
+    cell empty in frames that do not carry it."""
+    cols = ["time_s", "id", "message", "counter", "e2e", "DiscSpeed_radps", "PadForce_N",
+            "SquealState", "WarningLevel", "V0_mps", "Force_N", "raw"]
+    with open(drive_csv, newline="") as f, open(path, "w", newline="") as g:
+        wr = csv.DictWriter(g, fieldnames=cols)
+        wr.writeheader()
+        for i, row in enumerate(csv.DictReader(f)):
+            t = float(row["time_s"])
+            wr.writerow({"time_s": f"{t:.6f}", "id": "110", "message": "DiscSpeed",
+                         "DiscSpeed_radps": f"{float(row['v0_mps']) / 0.12:.3f}"})
+            if i % 3 == 0:
+                wr.writerow({"time_s": f"{t + 0.001:.6f}", "id": "400", "message": "SquealDetail",
+                             "V0_mps": row["v0_mps"]})
+                wr.writerow({"time_s": f"{t + 0.002:.6f}", "id": "401",
+                             "message": "SquealDetail2", "Force_N": row["force_n"]})
+            wr.writerow({"time_s": f"{t + 0.003:.6f}", "id": "300", "message": "SquealStatus",
+                         "SquealState": row["state"], "WarningLevel": row["warning"]})
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         try:
@@ -134,6 +155,12 @@ def main():
                  "--name", "drive_synthetic"])
             check_png(os.path.join(tmp, "drive_synthetic.png"), min_w=1000)
             check_svg(os.path.join(tmp, "drive_synthetic.svg"))
+            # the same drive as `squeal-sim decode --csv` rows (frames)
+            dec = os.path.join(tmp, "decode.csv")
+            decode_style(drive, dec)
+            run([PY, os.path.join(PLOTS, "plot_drive.py"), dec, "--out", tmp,
+                 "--name", "drive_decoded"])
+            check_png(os.path.join(tmp, "drive_decoded.png"), min_w=1000)
             # a wrong input is refused, not drawn
             bad = os.path.join(tmp, "bad.csv")
             with open(bad, "w") as f:

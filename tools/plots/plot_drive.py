@@ -8,6 +8,14 @@ warning level.
 input CSV columns: time_s,v0_mps,force_n,state,warning
   state: a number (0 stable, 1 bistable, 2 unstable, 3 not sliding,
   15 fault) or its name; warning: 0..3. Extra columns are ignored.
+or the output of `squeal-sim decode --csv` (one row per frame, recognised
+  by its message and SquealState columns): the monitor's V0_mps, Force_N,
+  SquealState and WarningLevel are forward-filled and one point is taken
+  per SquealStatus frame (before the first SquealDetail frames: the inputs
+  DiscSpeed_radps x --pad-radius and PadForce_N). E.g.
+    squeal-sim plant --log in.log --scenario sweep
+    squeal-sim replay in.log > out.log
+    sort -s -k1,1 in.log out.log | squeal-sim decode --csv > drive.csv
 The map background and borders come from the closed forms (model.md,
 exact criterion) for the brake given by the options (default: the
 paper's brake at a = 2 s/m).
@@ -41,10 +49,49 @@ def state_name(text):
         return text if text in PATH_COLORS else "fault"
 
 
-def read_drive(path):
+def _num(text):
+    try:
+        x = float(text)
+    except (TypeError, ValueError):
+        return None
+    return x if math.isfinite(x) else None
+
+
+def read_decode(rd, pad_radius):
+    """Rows of `squeal-sim decode --csv` to the drive's series."""
+    t, v, n, st, w = [], [], [], [], []
+    last = {}
+    for row in rd:
+        for key in ("V0_mps", "Force_N", "DiscSpeed_radps", "PadForce_N", "SquealState",
+                    "WarningLevel"):
+            x = _num(row.get(key))
+            if x is not None:
+                last[key] = x
+        if row.get("message") != "SquealStatus" or "SquealState" not in last:
+            continue
+        v0 = last.get("V0_mps")
+        if v0 is None and "DiscSpeed_radps" in last:
+            v0 = last["DiscSpeed_radps"] * pad_radius
+        force = last.get("Force_N", last.get("PadForce_N"))
+        if v0 is None or force is None:
+            continue
+        t.append(float(row["time_s"]))
+        v.append(v0)
+        n.append(force)
+        st.append(state_name(str(int(last["SquealState"]))))
+        w.append(last.get("WarningLevel", 0.0))
+    return t, v, n, st, w
+
+
+def read_drive(path, pad_radius=0.12):
     t, v, n, st, w = [], [], [], [], []
     with open(path, newline="") as f:
         rd = csv.DictReader(f)
+        if {"message", "SquealState"}.issubset(rd.fieldnames or []):
+            t, v, n, st, w = read_decode(rd, pad_radius)
+            if not t:
+                sys.exit(f"plot_drive: {path} has no SquealStatus frames with a known operating point")
+            return np.array(t), np.array(v), np.array(n), st, np.array(w)
         need = {"time_s", "v0_mps", "force_n", "state", "warning"}
         if not need.issubset(rd.fieldnames or []):
             sys.exit(f"plot_drive: {path} needs columns {sorted(need)}")
@@ -78,6 +125,8 @@ def main():
     ap.add_argument("csv")
     ap.add_argument("--out", default="build/plots")
     ap.add_argument("--name", default="drive")
+    ap.add_argument("--pad-radius", type=float, default=0.12,
+                    help="r_p [m] for v0 from DiscSpeed_radps (decode CSV only)")
     for opt, key in (("--slope", "slope"), ("--damping", "damping"), ("--omega0", "omega0"),
                      ("--mass", "mass"), ("--delta-mu", "delta_mu")):
         ap.add_argument(opt, type=float, default=P.DEFAULT[key], dest=key)
@@ -85,7 +134,7 @@ def main():
     p = dict(P.DEFAULT)
     for key in ("slope", "damping", "omega0", "mass", "delta_mu"):
         p[key] = getattr(args, key)
-    t, v, n, st, w = read_drive(args.csv)
+    t, v, n, st, w = read_drive(args.csv, args.pad_radius)
 
     fig = plt.figure(figsize=(14.0, 6.6))
     gs = fig.add_gridspec(4, 2, width_ratios=(1.15, 1.0), hspace=0.15, wspace=0.22)
