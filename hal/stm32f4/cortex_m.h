@@ -82,13 +82,13 @@ static inline void cm_irq_restore(uint32_t primask)
 static inline void cm_nvic_enable(uint32_t irq, uint8_t prio)
 {
 	*(volatile uint8_t *)(uintptr_t)(NVIC_IPR_BASE + irq) = prio;
-	NVIC_ICPR(irq >> 5) = 1UL << (irq & 31U);
-	NVIC_ISER(irq >> 5) = 1UL << (irq & 31U);
+	NVIC_ICPR(irq >> 5) = (uint32_t)1U << (irq & 31U);
+	NVIC_ISER(irq >> 5) = (uint32_t)1U << (irq & 31U);
 }
 
 static inline void cm_nvic_disable(uint32_t irq)
 {
-	NVIC_ICER(irq >> 5) = 1UL << (irq & 31U);
+	NVIC_ICER(irq >> 5) = (uint32_t)1U << (irq & 31U);
 	cm_dsb();
 	cm_isb();
 }

@@ -14,7 +14,11 @@ void *memmove(void *dst, const void *src, size_t n);
 void *memset(void *dst, int c, size_t n);
 int memcmp(const void *a, const void *b, size_t n);
 
+#if defined(__clang__)
+#define NO_LOOP_CALLS __attribute__((no_builtin))
+#else
 #define NO_LOOP_CALLS __attribute__((optimize("no-tree-loop-distribute-patterns")))
+#endif
 
 NO_LOOP_CALLS void *memcpy(void *restrict dst, const void *restrict src, size_t n)
 {

@@ -9,8 +9,6 @@
  * monitor_step() + draining its TX queue, as squeal_app_poll does, without
  * the HAL calls. Timing as tv_target.c: hal_cycles() and a calibration loop.
  */
-#include <string.h>
-
 #include "calib.h"
 #include "e2e_p01.h"
 #include "hal.h"
@@ -37,10 +35,9 @@ uint64_t squeal_app_poll(void)
 /* The layout comes from the protocol's own pack functions (the DBC's). */
 static hal_can_frame_t make_frame(uint32_t id, uint16_t data_id, e2e_p01_tx_t *tx, uint16_t raw)
 {
-	hal_can_frame_t f;
+	hal_can_frame_t f = { 0 };
 	int rc;
 
-	memset(&f, 0, sizeof(f));
 	f.id = id;
 	if (id == MSG_DISC_SPEED_ID) {
 		const msg_disc_speed_t m = { 0U, 0U, raw };
