@@ -39,6 +39,7 @@ typedef struct {
 	const char *calib_path;
 	bool verbose;
 	double duration_s; /* < 0: until SIGINT/SIGTERM */
+	int rcvbuf_bytes;  /* 0: the kernel's default */
 } ecu_args_t;
 
 static volatile bool ecu_stop;
@@ -47,7 +48,8 @@ static char ecu_calib_tmp[64];
 static void ecu_usage(FILE *f)
 {
 	fprintf(f,
-		"usage: squeal-sim ecu --iface IF [--calib FILE] [--duration S] [--verbose]\n\n"
+		"usage: squeal-sim ecu --iface IF [--calib FILE] [--duration S]\n"
+		"         [--rcvbuf BYTES] [--verbose]\n\n"
 		"Runs the monitor firmware on a SocketCAN interface (vcan0, can0, ...) in\n"
 		"real time: reads DiscSpeed/PadForce, sends SquealStatus, SquealDetail,\n"
 		"SquealDetail2 and SquealDiag, until SIGINT or SIGTERM. The interface must\n"
@@ -56,6 +58,8 @@ static void ecu_usage(FILE *f)
 		"  --calib FILE    calibration text file (docs/calib-example.txt lists\n"
 		"                  every key); a bad file is refused with its line number\n"
 		"  --duration S    stop by itself after S seconds\n"
+		"  --rcvbuf BYTES  socket receive buffer (SO_RCVBUF; the kernel caps it\n"
+		"                  at net.core.rmem_max): depth for input floods\n"
 		"  --verbose       print every state / warning level change on stderr\n\n"
 		"Exit status: 0 stopped by a signal or --duration, 1 interface or\n"
 		"calibration error, 2 bad usage. Watchdog expiries (a stalled loop) are\n"
@@ -65,12 +69,13 @@ static void ecu_usage(FILE *f)
 
 static int ecu_parse(int argc, char **argv, ecu_args_t *a)
 {
-	enum { OPT_IFACE = 256, OPT_CALIB, OPT_VERBOSE, OPT_DURATION, OPT_HELP };
+	enum { OPT_IFACE = 256, OPT_CALIB, OPT_VERBOSE, OPT_DURATION, OPT_RCVBUF, OPT_HELP };
 	static const struct option options[] = {
 		{ "iface", required_argument, NULL, OPT_IFACE },
 		{ "calib", required_argument, NULL, OPT_CALIB },
 		{ "verbose", no_argument, NULL, OPT_VERBOSE },
 		{ "duration", required_argument, NULL, OPT_DURATION },
+		{ "rcvbuf", required_argument, NULL, OPT_RCVBUF },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ NULL, 0, NULL, 0 }
 	};
@@ -101,6 +106,17 @@ static int ecu_parse(int argc, char **argv, ecu_args_t *a)
 				return -1;
 			}
 			break;
+		case OPT_RCVBUF: {
+			const long v = strtol(optarg, &end, 10);
+
+			if ((end == optarg) || (*end != '\0') || (v < 0) || (v > (1L << 28))) {
+				fprintf(stderr, "squeal-sim ecu: --rcvbuf needs bytes (0 .. 268435456), got '%s'\n",
+					optarg);
+				return -1;
+			}
+			a->rcvbuf_bytes = (int)v;
+			break;
+		}
 		case 'h':
 		case OPT_HELP:
 			ecu_usage(stdout);
@@ -252,6 +268,7 @@ static void ecu_summary(const uint64_t state_us[5], uint64_t run_us)
 int cmd_ecu(int argc, char **argv)
 {
 	ecu_args_t a;
+	hal_linux_can_opts_t opts;
 	uint64_t state_us[5] = { 0U, 0U, 0U, 0U, 0U };
 	uint64_t t_start;
 	uint64_t t_prev;
@@ -276,7 +293,9 @@ int cmd_ecu(int argc, char **argv)
 		/* no storage: the firmware's defaults, not a fault */
 		(void)hal_linux_set_calib_path(NULL);
 	}
-	if (hal_linux_open(a.iface, NULL) != SQ_OK) {
+	memset(&opts, 0, sizeof(opts));
+	opts.rcvbuf_bytes = a.rcvbuf_bytes;
+	if (hal_linux_open(a.iface, &opts) != SQ_OK) {
 		fprintf(stderr, "squeal-sim ecu: %s\n", hal_linux_strerror());
 		remove_calibration();
 		return 1;

@@ -553,7 +553,10 @@ static int run_live(plant_t *p)
 		if (n < 0) {
 			break;
 		}
-		sleep_until_ns(start_ns + p->s[n].pending_ns);
+		if (mono_ns() < start_ns + p->s[n].pending_ns) {
+			/* behind schedule (a flood): no sleep call at all */
+			sleep_until_ns(start_ns + p->s[n].pending_ns);
+		}
 		if (plant_stop) {
 			break;
 		}

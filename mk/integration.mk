@@ -15,3 +15,7 @@ TEST_PROGS += $(CALIB_TEXT_TEST)
 # (tests/integration/check_vcan.py): about 60-90 s with the guest's boot.
 tests/integration/run-vcan.sh: build/host/squeal-sim
 TEST_PROGS += tests/integration/run-vcan.sh
+
+# make bench: live latency and highest zero-loss input rate in the guest
+tests/integration/bench-live.sh: build/host/squeal-sim
+BENCH_PROGS += tests/integration/bench-live.sh
