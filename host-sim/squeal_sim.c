@@ -8,6 +8,7 @@
 
 #include "squeal_model.h"
 #include "sim_commands.h"
+#include "oscsim/oscsim_cmd.h"
 
 typedef struct {
 	const char *name;
@@ -22,6 +23,8 @@ static const command_t commands[] = {
 	{ "plant", cmd_plant, "send DiscSpeed/PadForce from a scenario (or write a log)" },
 	{ "replay", cmd_replay, "feed a candump log through the firmware in virtual time" },
 	{ "decode", cmd_decode, "print CAN frames as physical values (log or interface)" },
+	{ "map", oscsim_cmd_map, "stability map: model vs simulation (CSV)" },
+	{ "simulate", oscsim_cmd_simulate, "simulate the stick-slip oscillator at one point" },
 };
 
 static void usage(FILE *f)
