@@ -76,6 +76,8 @@ static bool main_loop_seen;
 static uint32_t kicks_seen;
 static uint32_t last_kick_ms;
 static uint32_t idle_calls;
+static uint64_t last_time_us;
+static uint32_t time_back; /* hal_time_us() smaller than the call before */
 
 /* Events arrive from thread mode only (boot, init, main loop). */
 void stm32_test_event(const char *what, uint32_t value)
@@ -94,7 +96,13 @@ void stm32_test_event(const char *what, uint32_t value)
 		uint32_t now = stm32_uptime_ms();
 		hal_can_status_t st;
 
+		uint64_t t_us = hal_time_us();
+
 		idle_calls++;
+		if (t_us < last_time_us) {
+			time_back++;
+		}
+		last_time_us = t_us;
 		if (!main_loop_seen) {
 			main_loop_seen = true;
 			semihost_print_u32("EVT main_loop uptime_ms=", now, "\n");
@@ -121,6 +129,8 @@ void stm32_test_event(const char *what, uint32_t value)
 		semihost_print_u32(" kicks=", kicks_seen, NULL);
 		semihost_print_u32(" last_kick_ms=", last_kick_ms, NULL);
 		semihost_print_u32(" idle_calls=", idle_calls, NULL);
+		semihost_print_u32(" time_back=", time_back, NULL);
+		semihost_print_u32(" time_ms=", (uint32_t)(t_us / 1000U), NULL);
 		semihost_print_hex(" faults=0x", platform_faults, NULL);
 		semihost_print_u32(" can_state=", (uint32_t)st.state, NULL);
 		semihost_print_u32(" reset_reason=", (uint32_t)hal_reset_reason(), NULL);

@@ -67,41 +67,49 @@ uint32_t stm32_uptime_ms(void)
 }
 
 /*
- * Milliseconds and the counter's position must belong together: if the
- * counter wrapped but the interrupt has not run yet (masked, or we are in
- * an interrupt of equal or higher priority), the pending bit says so.
+ * Milliseconds and the counter's position must belong together. Read with
+ * interrupts masked (a few instructions), so the millisecond count cannot
+ * change underneath; if the counter wrapped but the interrupt has not run
+ * yet, the pending bit says so and the count is one higher. Where the
+ * pending bit lags the counter's reload (QEMU's SysTick does), a position
+ * below the last one in the same millisecond is that wrap too; a last guard
+ * keeps the result monotonic whatever happens: never go back.
  * *ms_out gets the 64-bit millisecond count, *sub_out the ticks into it.
  */
+static uint64_t last_ms;
+static uint32_t last_sub;
+
 static void systick_read(uint64_t *ms_out, uint32_t *sub_out)
 {
-	uint32_t i;
+	uint32_t primask = cm_irq_save();
+	uint64_t ms = ((uint64_t)tick_ms_hi << 32) | tick_ms;
+	uint32_t val = SYST_CVR;
+	uint32_t pend = SCB_ICSR & SCB_ICSR_PENDSTSET;
+	uint32_t val2 = SYST_CVR;
+	uint32_t sub;
 
-	for (i = 0; i < 4U; i++) {
-		uint32_t hi = tick_ms_hi;
-		uint32_t ms = tick_ms;
-		uint32_t val = SYST_CVR;
-		uint32_t pend = SCB_ICSR & SCB_ICSR_PENDSTSET;
-		uint32_t val2 = SYST_CVR;
-		uint64_t ms64;
-
-		if (ms != tick_ms || hi != tick_ms_hi) {
-			continue; /* the interrupt ran in between: read again */
-		}
-		ms64 = ((uint64_t)hi << 32) | ms;
-		if (pend != 0U) {
-			/* wrapped before ICSR was read: val2 is after the wrap */
-			*ms_out = ms64 + 1U;
-			*sub_out = ticks_per_ms - 1U - val2;
-		} else {
-			*ms_out = ms64;
-			*sub_out = ticks_per_ms - 1U - val;
-		}
-		return;
+	if (pend != 0U) {
+		/* wrapped before ICSR was read: val2 is after the wrap */
+		ms++;
+		sub = ticks_per_ms - 1U - val2;
+	} else {
+		sub = ticks_per_ms - 1U - val;
 	}
-	/* Interrupts kept coming in between: the last ms value is good to a
-	 * millisecond. */
-	*ms_out = ((uint64_t)tick_ms_hi << 32) | tick_ms;
-	*sub_out = 0U;
+	if (ms == last_ms && sub < last_sub) {
+		/* The counter reloaded, but neither the interrupt nor its
+		 * pending bit shows it yet: count the wrap here. */
+		ms++;
+	}
+	if (ms < last_ms || (ms == last_ms && sub < last_sub)) {
+		ms = last_ms;
+		sub = last_sub;
+	} else {
+		last_ms = ms;
+		last_sub = sub;
+	}
+	cm_irq_restore(primask);
+	*ms_out = ms;
+	*sub_out = sub;
 }
 
 uint64_t hal_time_us(void)

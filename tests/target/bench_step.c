@@ -7,11 +7,12 @@
  * same ramp as tests/monitor/monitor_step_cost.c), then 1 s dwells at three
  * speeds. One step = the frames of that millisecond (monitor_on_frame) +
  * monitor_step() + draining its TX queue, as squeal_app_poll does, without
- * the HAL calls. Timing as tv_target.c: hal_cycles() and a calibration loop.
+ * the HAL calls. Timing as tv_target.c: bench_ticks() and a calibration loop.
  */
 #include "calib.h"
 #include "e2e_p01.h"
 #include "hal.h"
+#include "bench_ticks.h"
 #include "hal_stm32.h"
 #include "monitor.h"
 #include "squeal_app.h"
@@ -93,9 +94,10 @@ int squeal_main(volatile const bool *stop)
 		semihost_write0("BENCH monitor_init failed\n");
 		semihost_exit(1U);
 	}
-	t0 = hal_cycles();
-	overhead = hal_cycles() - t0;
-	t0 = hal_cycles();
+	bench_ticks_start();
+	t0 = bench_ticks();
+	overhead = bench_ticks() - t0;
+	t0 = bench_ticks();
 	{
 		uint32_t k = CAL_LOOPS;
 
@@ -103,7 +105,7 @@ int squeal_main(volatile const bool *stop)
 				 "bne 1b\n\t"
 				 : "+r"(k)::"cc");
 	}
-	cal_ticks = hal_cycles() - t0;
+	cal_ticks = bench_ticks() - t0;
 
 	for (ms = 0; ms < 7000U; ms++) {
 		hal_can_frame_t f;
@@ -112,7 +114,7 @@ int squeal_main(volatile const bool *stop)
 		bool frames = (ms % 10U) == 0U;
 
 		now_us += 1000U;
-		t0 = hal_cycles();
+		t0 = bench_ticks();
 		if (frames) {
 			uint32_t raw = speed_raw_at(frames_sent++);
 
@@ -127,7 +129,7 @@ int squeal_main(volatile const bool *stop)
 		for (k = 0; k < 16U && monitor_peek_tx(&mon, &f) == SQ_OK; k++) {
 			monitor_tx_done(&mon, SQ_OK);
 		}
-		dt = hal_cycles() - t0;
+		dt = bench_ticks() - t0;
 		total += dt;
 		if (frames) {
 			total_frames += dt;

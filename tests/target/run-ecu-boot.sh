@@ -38,6 +38,10 @@ check "CAN init wait timed out instead of hanging" grep -q '^EVT can_init_timeou
 check "runs on the HSI (16 MHz)" [ "$(field core_mhz)" = 16 ]
 check "CAN state STOPPED" [ "$(field can_state)" = 4 ]
 check "watchdog started" grep -qE '^EVT wdg_start value=[1-9]' "$log"
+check "hal_time_us() never went backwards over $(field idle_calls) idle calls" [ "$(field time_back)" = 0 ]
+check "hal_time_us() agrees with the millisecond tick ($(field time_ms) vs $(field uptime_ms) ms)" \
+	[ -n "$(field time_ms)" ] && [ $(( $(field time_ms) - $(field uptime_ms) )) -ge 0 ] && \
+	[ $(( $(field time_ms) - $(field uptime_ms) )) -le 1 ]
 up=$(field uptime_ms); kicks=$(field kicks); last=$(field last_kick_ms)
 loop_start=$(sed -nE 's/^EVT main_loop uptime_ms=([0-9]+).*/\1/p' "$log")
 check "watchdog kicked at least every other ms of the loop (${kicks:-?} kicks in $(( ${up:-0} - ${loop_start:-0} )) ms)" \

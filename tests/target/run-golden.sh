@@ -29,7 +29,8 @@ PY
 run_mode() { # numeric machine image host_prog
 	local num=$1 machine=$2 elf=$3 host=$4
 	local t="$out/$num-target.txt" h="$out/$num-host.txt"
-	timeout 300 qemu-system-arm -M "$machine" -nographic -monitor none -serial none \
+	# -icount shift=0: deterministic virtual time (1 ns per instruction)
+	timeout 300 qemu-system-arm -M "$machine" -icount shift=0 -nographic -monitor none -serial none \
 		-semihosting-config enable=on,target=native -kernel "$elf" >"$t" 2>&1
 	local rc=$?
 	"$host" >"$h" 2>&1 || ko "$num: host digest program failed"
@@ -48,6 +49,15 @@ run_mode() { # numeric machine image host_prog
 		local nd
 		nd=$(diff <(grep '^CHUNK' "$t") <(grep '^CHUNK' "$h") | grep -c '^<')
 		ko "$num: digests differ ($nd of $(grep -c '^CHUNK' "$h") chunks of 512 differ)"
+	fi
+	# Each classification is timed (bench_ticks.h); a backwards step of the
+	# timer would show up as a delta near 2^32.
+	local tmax
+	tmax=$(grep '^TIMING' "$t" | sed -nE 's/.* ticks_max=([0-9]+) .*/\1/p')
+	if [ -n "$tmax" ] && [ "$tmax" -lt 2147483648 ]; then
+		ok "$num: timer never went backwards over $(grep -c '^CHUNK' "$t") chunks (largest delta $tmax)"
+	else
+		ko "$num: timer went backwards (largest delta ${tmax:-?})"
 	fi
 	local want n
 	want=$(csv_count "$num")

@@ -4,12 +4,13 @@
  * calls squeal_main(), which here runs tv_run() instead of the monitor and
  * reports through semihosting, then ends QEMU.
  *
- * Timing: hal_cycles() (DWT, or SysTick ticks where QEMU has no DWT). A
+ * Timing: SysTick free-running without interrupts (bench_ticks.h). A
  * calibration loop of a known instruction count gives ticks per
  * instruction, so under "qemu-system-arm -icount shift=0" (one virtual ns
  * per instruction) the bench can print instructions per classification.
  */
 #include "hal.h"
+#include "bench_ticks.h"
 #include "hal_stm32.h"
 #include "squeal_app.h"
 #include "tv_vectors.h"
@@ -28,13 +29,13 @@ uint64_t squeal_app_poll(void)
 
 static uint32_t calib_ticks(void)
 {
-	uint32_t t0 = hal_cycles();
+	uint32_t t0 = bench_ticks();
 	uint32_t n = CAL_LOOPS;
 
 	__asm__ volatile("1: subs %0, %0, #1\n\t"
 			 "bne 1b\n\t"
 			 : "+r"(n)::"cc");
-	return hal_cycles() - t0;
+	return bench_ticks() - t0;
 }
 
 int squeal_main(volatile const bool *stop)
@@ -46,8 +47,9 @@ int squeal_main(volatile const bool *stop)
 
 	(void)stop;
 	semihost_write0("TV start\n");
+	bench_ticks_start();
 	cal = calib_ticks();
-	n = tv_run(semihost_write0, hal_cycles, &total, &worst);
+	n = tv_run(semihost_write0, bench_ticks, &total, &worst);
 	semihost_print_u32("TIMING n=", n, NULL);
 	semihost_print_u32(" ticks_total_hi=", (uint32_t)(total >> 32), NULL);
 	semihost_print_u32(" ticks_total_lo=", (uint32_t)total, NULL);
