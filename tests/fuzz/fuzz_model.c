@@ -123,7 +123,9 @@ static void check_result(int rc, const squeal_result_t *r, int params_ok,
 		FUZZ_REQUIRE(r->cycle_x >= 0);
 	}
 	if ((f & SQUEAL_HAS_HOPF_V0) != 0U) {
-		FUZZ_REQUIRE(r->hopf_v0_mps > 0);
+		/* >= 0: a border below one LSB (2^-20 m/s in the fixed build)
+		 * rounds to 0 */
+		FUZZ_REQUIRE(r->hopf_v0_mps >= 0);
 	}
 }
 
