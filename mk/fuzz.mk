@@ -76,3 +76,13 @@ fuzz-seeds: $(FUZZ_SEEDGEN)
 # make test: every target for a short, bounded time.
 tests/fuzz/run-fuzz.sh: $(FUZZ_TARGETS)
 TEST_PROGS += tests/fuzz/run-fuzz.sh
+
+# Calibration write protection (cmocka, the whole app on the test HAL under
+# a flood of random and spoofed frames), both numeric builds, ASan+UBSan.
+# --wrap counts every call of hal_calib_write.
+define calib_wp_rules
+build/$(1)/test_calib_write_protection: build/$(1)/app/tests/fuzz/test_calib_write_protection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -Wl,--wrap=hal_calib_write -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,test test-fixed,$(eval $(call calib_wp_rules,$(v))))
+TEST_PROGS += build/test/test_calib_write_protection build/test-fixed/test_calib_write_protection
