@@ -56,6 +56,13 @@ $(eval $(call fuzz_target,fuzz_model_fixed,fuzz-fixed,tests/fuzz/fuzz_model.c))
 $(eval $(call fuzz_target,fuzz_msgs,fuzz,tests/fuzz/fuzz_msgs.c))
 $(eval $(call fuzz_target,fuzz_calib_block,fuzz,tests/fuzz/fuzz_calib_block.c))
 $(eval $(call fuzz_target,fuzz_monitor,fuzz,tests/fuzz/fuzz_monitor.c))
+# host-sim's parsers (once they exist)
+ifeq ($(words $(wildcard host-sim/candump_log.c tests/fuzz/fuzz_candump.c)),2)
+$(eval $(call fuzz_target,fuzz_candump,fuzz,tests/fuzz/fuzz_candump.c,build/fuzz/app/host-sim/candump_log.o))
+endif
+ifeq ($(words $(wildcard host-sim/calib_text.c tests/fuzz/fuzz_calib_text.c)),2)
+$(eval $(call fuzz_target,fuzz_calib_text,fuzz,tests/fuzz/fuzz_calib_text.c,build/fuzz/app/host-sim/calib_text.o))
+endif
 
 export FUZZ_TARGETS
 
@@ -67,7 +74,8 @@ fuzz: $(FUZZ_TARGETS)
 # Seed corpora: written by a small C program through the firmware's own
 # encoders (valid frames and blocks are the interesting starting points).
 FUZZ_SEEDGEN := build/host/tests/fuzz/gen_seeds
-$(FUZZ_SEEDGEN): build/host/app/tests/fuzz/gen_seeds.o build/host/libfirmware.a
+$(FUZZ_SEEDGEN): build/host/app/tests/fuzz/gen_seeds.o build/host/app/host-sim/candump_log.o \
+		build/host/app/host-sim/calib_text.o build/host/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_host) -o $@ $^ -lm
 fuzz-seeds: $(FUZZ_SEEDGEN)

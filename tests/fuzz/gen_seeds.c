@@ -12,6 +12,8 @@
 #include <string.h>
 
 #include "calib.h"
+#include "calib_text.h"
+#include "candump_log.h"
 #include "e2e_p01.h"
 #include "sq_status.h"
 #include "squeal_msgs.h"
@@ -368,6 +370,105 @@ static void seeds_monitor(void)
 	}
 }
 
+/* ---- candump lines -------------------------------------------------------- */
+static const char *const candump_lines[] = {
+	"(1700000000.123456) can0 110#5A03E803",
+	"(0000000012.340000) vcan0 18FEF100#0102030405060708_C",
+	"(1700000000.123456789) can0 123#R8",
+	"(1700000000.123456) can0 123#R",
+	"(1700000000.123456) can0 123#R8_C",
+	"(1700000000.123456) can0 123##5112233",
+	"(1700000000.123456) can0 123##4",
+	"(1700000000.123456) can0 20000004#0004000000000000",
+	"(1700000000.123456) can0 00000123#",
+	"(1700000000.123456) can0 123#11.22.33.44 R",
+	"(1700000000.123456) can0 300#a1b2c3d4e5f60708 T",
+	"(1700000000.123456) can0 3AB12#C0:00:00000000#1122334455",
+	"# a comment",
+	"; another",
+	"DROPCOUNT: dropped 3 CAN frame on 'can0' socket (total drops 3)",
+	"   ",
+	"(1.000000) can0 7FF#0011223344556677\r",
+	"(1700000000.123456) can0 800#00",
+	"(1700000000.123456) can0 12#00",
+	"(1700000000.12345) can0 123#00",
+};
+
+static void seeds_candump(void)
+{
+	char text[65536];
+	size_t n = 0U;
+	unsigned int i;
+
+	for (i = 0U; i < sizeof(candump_lines) / sizeof(candump_lines[0]); i++) {
+		write_seed("fuzz_candump", i, (const uint8_t *)candump_lines[i],
+			   strlen(candump_lines[i]));
+	}
+	/* a whole log: DiscSpeed/PadForce frames as the plant sends them */
+	for (i = 0U; i < 40U; i++) {
+		candump_frame_t f;
+		int len;
+
+		memset(&f, 0, sizeof(f));
+		f.t_ns = 1700000000000000000ULL + 10000000ULL * i;
+		(void)snprintf(f.iface, sizeof(f.iface), "vcan0");
+		f.kind = CANDUMP_KIND_CLASSIC;
+		f.id = (i & 1U) ? 0x111U : 0x110U;
+		f.len = 4U;
+		f.data[0] = (uint8_t)(i * 37U);
+		f.data[1] = (uint8_t)(i % 15U);
+		f.data[2] = (uint8_t)i;
+		f.data[3] = 0x10U;
+		len = candump_format_frame(&f, true, &text[n], sizeof(text) - n);
+		if (len < 0) {
+			(void)fprintf(stderr, "gen_seeds: candump_format_frame failed\n");
+			exit(1);
+		}
+		n += (size_t)len;
+	}
+	write_seed("fuzz_candump", i, (const uint8_t *)text, n);
+}
+
+/* ---- calibration text files ----------------------------------------------- */
+static void seeds_calib_text(void)
+{
+	unsigned int v;
+
+	for (v = 0U; v < 4U; v++) {
+		calib_t cal;
+		char *text = NULL;
+		size_t len = 0U;
+		FILE *f;
+
+		calib_default(&cal);
+		if (v == 1U) {
+			cal.criterion = 1U;
+			cal.disc_speed_id = 0x7F0U;
+		} else if (v == 2U) {
+			cal.e2e_check_inputs = 0U;
+			cal.delta_mu_q30 = -(1 << 27);
+		} else if (v == 3U) {
+			cal.lowpass_alpha_q15 = 1000U;
+			cal.pad_radius_um = 10000U;
+		}
+		f = open_memstream(&text, &len);
+		if ((f == NULL) || (calib_text_write(f, &cal) != 0) || (fclose(f) != 0)) {
+			(void)fprintf(stderr, "gen_seeds: calib_text_write failed\n");
+			exit(1);
+		}
+		write_seed("fuzz_calib_text", v, (const uint8_t *)text, len);
+		free(text);
+	}
+	{
+		static const char small[] = "mass_kg = 1.5\ncriterion = cubic # c\n"
+					    "disc_speed_id = 0x120\n\n  pad_radius_m=0.1\n";
+		static const char bad[] = "mass_kg = 1.5\nmass_kg = 2\nnope = 3\n";
+
+		write_seed("fuzz_calib_text", 4U, (const uint8_t *)small, sizeof(small) - 1U);
+		write_seed("fuzz_calib_text", 5U, (const uint8_t *)bad, sizeof(bad) - 1U);
+	}
+}
+
 int main(int argc, char **argv)
 {
 	if (argc != 2) {
@@ -379,5 +480,7 @@ int main(int argc, char **argv)
 	seeds_msgs();
 	seeds_calib();
 	seeds_monitor();
+	seeds_candump();
+	seeds_calib_text();
 	return 0;
 }
