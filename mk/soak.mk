@@ -25,3 +25,22 @@ endef
 $(foreach v,$(SOAK_TEST_VARIANTS),$(eval $(call soak_test_rules,$(v))))
 
 TEST_PROGS += $(foreach v,$(SOAK_TEST_VARIANTS),build/$(v)/test_fault_injection)
+
+# The soak's independent reference: counts of a plant log (own CRC-8)
+build/host/soak_log_count: tests/soak/log_count.c build/monitor/monitor_expect.h
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -D_GNU_SOURCE -O2 -Ibuild/monitor -o $@ $<
+
+# make test: short memory check (~10 s)
+tests/soak/memcheck-short.sh: build/host/squeal-sim build/host-fixed/squeal-sim
+TEST_PROGS += tests/soak/memcheck-short.sh
+
+# make soak: the 10^7-frame soak, then the full memory check (10^5 frames
+# under valgrind, 10^7 streamed). A few minutes; figures in the output.
+# SOAK_FRAMES=... for another length (tests/soak/soak-replay.sh).
+.PHONY: soak soak-replay soak-memcheck
+soak: soak-replay soak-memcheck
+soak-replay: build/host/squeal-sim build/host/soak_log_count
+	tests/soak/soak-replay.sh
+soak-memcheck: build/host/squeal-sim build/host-fixed/squeal-sim
+	tests/soak/memcheck-replay.sh
