@@ -70,6 +70,17 @@ int hal_can_receive(hal_can_frame_t *frame);
 int hal_can_get_status(hal_can_status_t *status);
 
 /*
+ * Run the controller at this bit rate (kbit/s, from calibration). A no-op
+ * when it already runs at that rate; otherwise the controller restarts
+ * (pending TX frames are dropped, the RX filter is reset: set it after).
+ * Returns SQ_OK; SQ_EINVAL (the clock cannot make that rate exactly enough);
+ * SQ_EAGAIN (the controller did not start: HAL_FAULT_CAN_INIT is raised);
+ * SQ_ENOTSUP where the bit rate belongs to the OS (Linux: `ip link set can0
+ * type can bitrate ...`).
+ */
+int hal_can_set_bitrate(uint32_t bitrate_kbps);
+
+/*
  * Accept only these standard (11-bit) identifiers from now on (in hardware
  * where the controller can). count <= HAL_CAN_MAX_FILTERS.
  * Returns SQ_OK, SQ_EINVAL (too many / bad id), SQ_ENOTSUP.

@@ -58,6 +58,11 @@ int squeal_app_init(void)
 	if (calib_invalid && (first_error == SQ_OK)) {
 		first_error = SQ_EBADMSG;
 	}
+	/* bit rate first: a restart of the controller resets its filters */
+	rc = hal_can_set_bitrate(app_monitor.cal.bitrate_kbps);
+	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
+		first_error = rc;
+	}
 	ids[0] = app_monitor.cal.disc_speed_id;
 	ids[1] = app_monitor.cal.pad_force_id;
 	rc = hal_can_set_rx_filter(ids, 2U);

@@ -274,6 +274,16 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 	return SQ_OK;
 }
 
+int hal_can_set_bitrate(uint32_t bitrate_kbps)
+{
+	if (hal_vbus_active()) {
+		return (bitrate_kbps == 0U || bitrate_kbps > 1000U) ? SQ_EINVAL : SQ_OK;
+	}
+	/* the interface's bit rate is set by its administrator (ip link) */
+	(void)bitrate_kbps;
+	return SQ_ENOTSUP;
+}
+
 int hal_can_get_status(hal_can_status_t *status)
 {
 	if (hal_vbus_active()) {

@@ -31,6 +31,7 @@ _Static_assert(HAL_CAN_MAX_FILTERS <= 4U * CAN1_FILTER_BANKS, "more filters than
 
 static struct {
 	bool started;                 /* controller reached init mode       */
+	uint32_t bitrate_bps;         /* rate of the last start attempt     */
 	/* RX ring: rx_head written only by the ISR, rx_tail only by
 	 * hal_can_receive(); free-running indices, count = head - tail. */
 	volatile uint32_t rx_head;
@@ -119,6 +120,7 @@ int bxcan_start(uint32_t bitrate_bps)
 	if (rc != SQ_OK) {
 		return rc;
 	}
+	can.bitrate_bps = bitrate_bps;
 	chip_can_pins_init();
 
 	/* Leave sleep, request initialisation, wait for the acknowledge. */
@@ -160,6 +162,17 @@ int bxcan_start(uint32_t bitrate_bps)
 		return SQ_EAGAIN;
 	}
 	return SQ_OK;
+}
+
+int hal_can_set_bitrate(uint32_t bitrate_kbps)
+{
+	if ((bitrate_kbps == 0U) || (bitrate_kbps > 1000U)) {
+		return SQ_EINVAL;
+	}
+	if (can.started && (can.bitrate_bps == bitrate_kbps * 1000U)) {
+		return SQ_OK; /* already running at that rate */
+	}
+	return bxcan_start(bitrate_kbps * 1000U);
 }
 
 bool stm32_can_rx_pending(void)

@@ -171,6 +171,11 @@ int hal_can_receive(hal_can_frame_t *frame)
 	return SQ_EAGAIN;
 }
 
+int hal_can_set_bitrate(uint32_t bitrate_kbps)
+{
+	return (bitrate_kbps == 0U || bitrate_kbps > 1000U) ? SQ_EINVAL : SQ_OK;
+}
+
 int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
 {
 	uint32_t i;
