@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Parts of the model API that are the same in both numeric builds. */
 #include "squeal_model.h"
+#include "squeal_model_internal.h"
 
 #include <stddef.h>
 
@@ -47,4 +48,18 @@ const char *squeal_model_state_name(squeal_state_t state)
 	default:
 		return "?";
 	}
+}
+
+void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state)
+{
+	out->state = state;
+	out->flags = 0U;
+	out->ln_q = 0;
+	out->hopf_v0_mps = 0;
+	out->hopf_margin_mps = 0;
+	out->hopf_force_n = 0;
+	out->cycle_x = 0;
+	out->lc_amplitude_um = 0;
+	out->trigger_velocity_mps = 0;
+	out->basin_ratio = 0;
 }

@@ -20,6 +20,7 @@
 #include "bessel_table.h"
 #include "fixmath.h"
 #include "squeal_model.h"
+#include "squeal_model_internal.h"
 
 /* Domain limits in raw units of each field's Q-format (squeal_model.h). */
 #define MASS_MAX_RAW ((int32_t)10000 << SQUEAL_Q_MASS)
@@ -199,20 +200,6 @@ static int64_t solve_exact_cycle(int64_t lq2)
 	return x;
 }
 
-static void result_clear(squeal_result_t *out, squeal_state_t state)
-{
-	out->state = state;
-	out->flags = 0U;
-	out->ln_q = 0;
-	out->hopf_v0_mps = 0;
-	out->hopf_margin_mps = 0;
-	out->hopf_force_n = 0;
-	out->cycle_x = 0;
-	out->lc_amplitude_um = 0;
-	out->trigger_velocity_mps = 0;
-	out->basin_ratio = 0;
-}
-
 /* ln x of the selected criterion's cycle (Q32) and x itself (Q32, clamped). */
 static int64_t cycle_ln_x(int64_t lq2, squeal_criterion_t criterion,
 			  int64_t *x_q32)
@@ -266,14 +253,14 @@ int squeal_model_classify(const squeal_params_t *params,
 	    (point_check(point) != SQ_OK) ||
 	    ((criterion != SQUEAL_CRITERION_EXACT) &&
 	     (criterion != SQUEAL_CRITERION_CUBIC))) {
-		result_clear(out, SQUEAL_STATE_INVALID);
+		squeal_model_result_clear(out, SQUEAL_STATE_INVALID);
 		return SQ_EINVAL;
 	}
 	if ((point->v0_mps == 0) || (point->force_n == 0)) {
-		result_clear(out, SQUEAL_STATE_NOT_SLIDING);
+		squeal_model_result_clear(out, SQUEAL_STATE_NOT_SLIDING);
 		return SQ_OK;
 	}
-	result_clear(out, SQUEAL_STATE_STABLE);
+	squeal_model_result_clear(out, SQUEAL_STATE_STABLE);
 	if ((p->slope_spm == 0) || (p->delta_mu <= 0)) {
 		return SQ_OK; /* friction does not fall with speed */
 	}

@@ -21,6 +21,7 @@
 
 #include "sq_mathf.h"
 #include "squeal_model.h"
+#include "squeal_model_internal.h"
 
 /* Domain limits (see squeal_model.h). */
 #define MASS_MAX_KG 10000.0f
@@ -214,20 +215,6 @@ static float solve_exact_cycle(float lq2)
 	return x;
 }
 
-static void result_clear(squeal_result_t *out, squeal_state_t state)
-{
-	out->state = state;
-	out->flags = 0U;
-	out->ln_q = 0.0f;
-	out->hopf_v0_mps = 0.0f;
-	out->hopf_margin_mps = 0.0f;
-	out->hopf_force_n = 0.0f;
-	out->cycle_x = 0.0f;
-	out->lc_amplitude_um = 0.0f;
-	out->trigger_velocity_mps = 0.0f;
-	out->basin_ratio = 0.0f;
-}
-
 /* Store an extended-range value into a field, flagging it when it does not
  * fit a float. */
 static float put(sq_xf_t v, squeal_result_t *out, uint32_t sat_flag)
@@ -291,14 +278,14 @@ int squeal_model_classify(const squeal_params_t *params,
 	    (point_check(point) != SQ_OK) ||
 	    ((criterion != SQUEAL_CRITERION_EXACT) &&
 	     (criterion != SQUEAL_CRITERION_CUBIC))) {
-		result_clear(out, SQUEAL_STATE_INVALID);
+		squeal_model_result_clear(out, SQUEAL_STATE_INVALID);
 		return SQ_EINVAL;
 	}
 	if ((point->v0_mps == 0.0f) || (point->force_n == 0.0f)) {
-		result_clear(out, SQUEAL_STATE_NOT_SLIDING);
+		squeal_model_result_clear(out, SQUEAL_STATE_NOT_SLIDING);
 		return SQ_OK;
 	}
-	result_clear(out, SQUEAL_STATE_STABLE);
+	squeal_model_result_clear(out, SQUEAL_STATE_STABLE);
 	if ((p->slope_spm == 0.0f) || !(p->delta_mu > 0.0f)) {
 		/* friction does not fall with speed: no border, no cycle */
 		return SQ_OK;
