@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # SPDX-License-Identifier: MIT
 # Shared by the soak scripts (sourced): pass/fail counting and the memory
 # probe of a streaming replay.
