@@ -13,7 +13,8 @@
 # the addon runs without --rule-texts and reports rule numbers only
 # ("misra-c2012-15.5"). tests/static/misra.json is the addon configuration.
 #
-# Deviations live in docs/misra-deviations.md, in one table whose rows read
+# Deviations live in docs/misra-deviations.md, in the table under the heading
+# "## Deviations", whose rows read
 #   | 15.5 | `firmware/*` `hal/linux/*` | count | reason |
 # (a MISRA rule number or a cppcheck check id, then file globs in backticks).
 # This script turns every row into cppcheck suppressions "id:glob", so a new
@@ -54,7 +55,8 @@ supp=$out/misra-suppressions.txt
 : >"$supp"
 if [ "$mode" = check ]; then
 	awk -F'|' '
-	/^\|/ {
+	/^## / { in_dev = ($0 ~ /^## Deviations/) }
+	in_dev && /^\|/ {
 		rule = $2; gsub(/^[ \t]+|[ \t]+$/, "", rule)
 		if (rule ~ /^[0-9]+\.[0-9]+$/) id = "misra-c2012-" rule
 		else if (rule ~ /^[A-Za-z][A-Za-z0-9_]*$/ && rule != "Rule") id = rule
