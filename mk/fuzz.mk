@@ -5,6 +5,7 @@
 #   build/fuzz/bin/fuzz_msgs         every unpack, E2E P01 check, receive
 #   build/fuzz/bin/fuzz_calib_block  calibration block decode/encode
 #   build/fuzz/bin/fuzz_monitor      monitor under arbitrary frames and time
+#   build/fuzz/bin/fuzz_monitor_fixed  the same, fixed build (model adapter)
 #   (fuzz_candump, fuzz_calib_text when host-sim's parsers exist)
 #
 #   make fuzz                 each target FUZZ_SECONDS (300) on its corpus,
@@ -56,6 +57,7 @@ $(eval $(call fuzz_target,fuzz_model_fixed,fuzz-fixed,tests/fuzz/fuzz_model.c))
 $(eval $(call fuzz_target,fuzz_msgs,fuzz,tests/fuzz/fuzz_msgs.c))
 $(eval $(call fuzz_target,fuzz_calib_block,fuzz,tests/fuzz/fuzz_calib_block.c))
 $(eval $(call fuzz_target,fuzz_monitor,fuzz,tests/fuzz/fuzz_monitor.c))
+$(eval $(call fuzz_target,fuzz_monitor_fixed,fuzz-fixed,tests/fuzz/fuzz_monitor.c))
 # host-sim's parsers (once they exist)
 ifeq ($(words $(wildcard host-sim/candump_log.c tests/fuzz/fuzz_candump.c)),2)
 $(eval $(call fuzz_target,fuzz_candump,fuzz,tests/fuzz/fuzz_candump.c,build/fuzz/app/host-sim/candump_log.o))

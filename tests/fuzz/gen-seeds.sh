@@ -8,11 +8,13 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 gen=${1:-build/host/tests/fuzz/gen_seeds}
 for t in fuzz_model_float fuzz_model_fixed fuzz_msgs fuzz_calib_block fuzz_monitor \
-	fuzz_candump fuzz_calib_text; do
+	fuzz_monitor_fixed fuzz_candump fuzz_calib_text; do
 	mkdir -p "tests/fuzz/corpus/$t"
 	rm -f "tests/fuzz/corpus/$t"/seed-*
 done
 "$gen" tests/fuzz/corpus
+# the monitor's seeds mean the same in both numeric builds
+cp tests/fuzz/corpus/fuzz_monitor/seed-* tests/fuzz/corpus/fuzz_monitor_fixed/
 # the documented example calibration file as it is
 [ -f docs/calib-example.txt ] && cp docs/calib-example.txt tests/fuzz/corpus/fuzz_calib_text/seed-example
 for d in tests/fuzz/corpus/*/; do
