@@ -14,6 +14,7 @@
 #                             FUZZ_TEST_SECONDS (10); any crash, timeout,
 #                             leak or sanitizer report fails
 #   make fuzz-seeds           regenerate tests/fuzz/corpus/ (gen-seeds.sh)
+#   make fuzz-coverage        line coverage reached by the seeds + corpora
 # Firmware objects get their own clang variants build/fuzz{,-fixed}/ so the
 # gcc builds are not touched.
 
@@ -26,32 +27,47 @@ FUZZ_CFLAGS := -O1 -g $(FUZZ_SAN) -fsanitize=fuzzer-no-link
 FUZZ_LDFLAGS := -g $(FUZZ_SAN) -fsanitize=fuzzer
 FUZZ_BIN := build/fuzz/bin
 
-FUZZ_VARIANTS := fuzz fuzz-fixed
+# fuzzcov: the same harnesses with source coverage instead of sanitizers,
+# to replay a corpus and report line coverage (make fuzz-coverage)
+FUZZ_VARIANTS := fuzz fuzz-fixed fuzzcov fuzzcov-fixed
 NUM_fuzz := float
 NUM_fuzz-fixed := fixed
+NUM_fuzzcov := float
+NUM_fuzzcov-fixed := fixed
+FUZZ_COV_FLAGS := -fprofile-instr-generate -fcoverage-mapping
+CFLAGS_fuzz := $(FUZZ_CFLAGS)
+CFLAGS_fuzz-fixed := $(FUZZ_CFLAGS)
+CFLAGS_fuzzcov := -O1 -g $(FUZZ_COV_FLAGS) -fsanitize=fuzzer-no-link
+CFLAGS_fuzzcov-fixed := $(CFLAGS_fuzzcov)
 
 define fuzz_variant_rules
 build/$(1)/fw/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(FUZZ_CC) $$(WARN) $$(FW_FLAGS) $$(FUZZ_CFLAGS) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -MMD -MP -c $$< -o $$@
+	$$(FUZZ_CC) $$(WARN) $$(FW_FLAGS) $$(CFLAGS_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -MMD -MP -c $$< -o $$@
 build/$(1)/app/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(FUZZ_CC) $$(WARN) -D_GNU_SOURCE $$(FUZZ_CFLAGS) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -Itests/fuzz -MMD -MP -c $$< -o $$@
+	$$(FUZZ_CC) $$(WARN) -D_GNU_SOURCE $$(CFLAGS_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -Itests/fuzz -MMD -MP -c $$< -o $$@
 build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS))
 	@rm -f $$@
 	ar rcs $$@ $$^
 endef
 $(foreach v,$(FUZZ_VARIANTS),$(eval $(call fuzz_variant_rules,$(v))))
 
-# name, variant, harness source, extra objects
+# name, variant, harness source, extra objects (given for the fuzz variant;
+# the coverage twin build/fuzzcov/bin/<name> uses the same paths in fuzzcov)
 define fuzz_target
 $(FUZZ_BIN)/$(1): build/$(2)/app/$(3:.c=.o) $(4) build/$(2)/libfirmware.a
 	@mkdir -p $$(@D)
 	$$(FUZZ_CC) $$(FUZZ_LDFLAGS) -o $$@ $$^ -lm
 FUZZ_TARGETS += $(FUZZ_BIN)/$(1)
+build/fuzzcov/bin/$(1): build/$(subst fuzz,fuzzcov,$(2))/app/$(3:.c=.o) $(subst build/fuzz/,build/fuzzcov/,$(4)) build/$(subst fuzz,fuzzcov,$(2))/libfirmware.a
+	@mkdir -p $$(@D)
+	$$(FUZZ_CC) -g $$(FUZZ_COV_FLAGS) -fsanitize=fuzzer -o $$@ $$^ -lm
+FUZZ_COV_TARGETS += build/fuzzcov/bin/$(1)
 endef
 
 FUZZ_TARGETS :=
+FUZZ_COV_TARGETS :=
 $(eval $(call fuzz_target,fuzz_model_float,fuzz,tests/fuzz/fuzz_model.c))
 $(eval $(call fuzz_target,fuzz_model_fixed,fuzz-fixed,tests/fuzz/fuzz_model.c))
 $(eval $(call fuzz_target,fuzz_msgs,fuzz,tests/fuzz/fuzz_msgs.c))
@@ -68,7 +84,11 @@ endif
 
 export FUZZ_TARGETS
 
-.PHONY: fuzz fuzz-build fuzz-seeds
+.PHONY: fuzz fuzz-build fuzz-seeds fuzz-coverage
+# Line coverage of the code under test, from the seeds and the corpora that
+# make fuzz grew (build/fuzz-corpus/): tests/fuzz/fuzz-coverage.sh
+fuzz-coverage: $(FUZZ_COV_TARGETS)
+	tests/fuzz/fuzz-coverage.sh $(FUZZ_COV_TARGETS)
 fuzz-build: $(FUZZ_TARGETS)
 fuzz: $(FUZZ_TARGETS)
 	tests/fuzz/run-fuzz.sh --mode fuzz --seconds $(FUZZ_SECONDS) $(FUZZ_TARGETS)
