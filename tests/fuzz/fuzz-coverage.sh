@@ -38,5 +38,5 @@ for bin in "$@"; do
 	echo "== $name ($inputs inputs from ${dirs[*]})"
 	# shellcheck disable=SC2046
 	"$COV" report "$bin" -instr-profile="$out/$name.profdata" $(sources_of "$name") |
-		awk '/\.c / || /^TOTAL/ { printf "  %-24s lines %7s  branches %7s  functions %7s  regions %7s\n", $1, $10, $13, $7, $4 }'
+		awk '/\.c / || /^TOTAL/ { n = split($1, p, "/"); printf "  %-24s lines %7s  branches %7s  functions %7s  regions %7s\n", p[n], $10, $13, $7, $4 }'
 done

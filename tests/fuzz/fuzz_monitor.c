@@ -28,6 +28,7 @@
 #include "calib.h"
 #include "e2e_p01.h"
 #include "monitor.h"
+#include "sq_status.h"
 #include "squeal_msgs.h"
 
 #define MAX_OPS 512U
@@ -284,10 +285,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	pick_calibration(fuzz_u8(&in), &cal);
 	c->now_us = 1000000U;
 	FUZZ_REQUIRE(monitor_init(&c->me, &cal, false, 0U, c->now_us) == SQ_OK);
-	c->cal0 = c->me.cal;
-	c->params0 = c->me.params;
+	/* byte copies (a struct assignment need not copy padding) */
+	memcpy(&c->cal0, &c->me.cal, sizeof(c->cal0));
+	memcpy(&c->params0, &c->me.params, sizeof(c->params0));
 	c->calib_invalid0 = c->me.calib_invalid;
-	FUZZ_REQUIRE(memcmp(&c->cal0, &cal, sizeof(cal)) == 0);
+	{
+		uint8_t a[CALIB_BLOCK_LEN];
+		uint8_t b[CALIB_BLOCK_LEN];
+
+		/* field by field: the monitor took exactly this calibration */
+		FUZZ_REQUIRE(calib_encode(&c->cal0, a, sizeof(a)) == SQ_OK);
+		FUZZ_REQUIRE(calib_encode(&cal, b, sizeof(b)) == SQ_OK);
+		FUZZ_REQUIRE(memcmp(a, b, sizeof(a)) == 0);
+	}
 
 	for (op_count = 0U; (op_count < MAX_OPS) && (in.left > 0U); op_count++) {
 		const uint8_t op = fuzz_u8(&in);
