@@ -602,7 +602,9 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 		}
 		break;
 	case CANDUMP_KIND_ERROR:
-		if ((f->id > CANDUMP_ERR_MASK) || (f->len > 8U)) {
+		if ((f->id > CANDUMP_ERR_MASK) || (f->len > 8U) ||
+		    ((f->len8_dlc != 0U) &&
+		     ((f->len != 8U) || (f->len8_dlc < 9U) || (f->len8_dlc > 15U)))) {
 			return -1;
 		}
 		p = put_hex(p, f->id | CANDUMP_ERR_FLAG, 8U);
@@ -610,6 +612,12 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 		for (i = 0U; i < f->len; i++) {
 			*p++ = hex_upper[f->data[i] >> 4];
 			*p++ = hex_upper[f->data[i] & 0xFU];
+		}
+		/* an error frame is a classic frame: its DLC code too (as the
+		 * parser accepts it, so a round trip keeps it) */
+		if (f->len8_dlc != 0U) {
+			*p++ = '_';
+			*p++ = hex_upper[f->len8_dlc];
 		}
 		break;
 	default:
