@@ -63,3 +63,37 @@ void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state)
 	out->trigger_velocity_mps = 0;
 	out->basin_ratio = 0;
 }
+
+/*
+ * The domain rules of squeal_model.h, the same in both numeric builds; the
+ * sliding case itself is each build's squeal_model_classify_sliding().
+ */
+int squeal_model_classify(const squeal_params_t *params,
+			  const squeal_point_t *point,
+			  squeal_criterion_t criterion,
+			  squeal_result_t *out)
+{
+	if ((params == NULL) || (point == NULL) || (out == NULL)) {
+		return SQ_EINVAL;
+	}
+	if ((squeal_model_params_check(params) != SQ_OK) ||
+	    (squeal_model_point_check(point) != SQ_OK) ||
+	    ((criterion != SQUEAL_CRITERION_EXACT) &&
+	     (criterion != SQUEAL_CRITERION_CUBIC))) {
+		squeal_model_result_clear(out, SQUEAL_STATE_INVALID);
+		return SQ_EINVAL;
+	}
+	/* both are >= 0 here: "not > 0" is "== 0" without an exact float
+	 * comparison */
+	if (!(point->v0_mps > 0) || !(point->force_n > 0)) {
+		squeal_model_result_clear(out, SQUEAL_STATE_NOT_SLIDING);
+		return SQ_OK;
+	}
+	squeal_model_result_clear(out, SQUEAL_STATE_STABLE);
+	if (!(params->slope_spm > 0) || !(params->delta_mu > 0)) {
+		/* friction does not fall with speed: no border, no cycle */
+		return SQ_OK;
+	}
+	squeal_model_classify_sliding(params, point, criterion, out);
+	return SQ_OK;
+}

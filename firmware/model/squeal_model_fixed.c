@@ -63,7 +63,7 @@ int squeal_model_params_check(const squeal_params_t *params)
 	return SQ_OK;
 }
 
-static int point_check(const squeal_point_t *point)
+int squeal_model_point_check(const squeal_point_t *point)
 {
 	if (!in_range(point->v0_mps, 0, V0_MAX_RAW) ||
 	    !in_range(point->force_n, 0, FORCE_MAX_RAW)) {
@@ -229,12 +229,11 @@ static int64_t cycle_ln_x(int64_t lq2, squeal_criterion_t criterion,
 	}
 }
 
-int squeal_model_classify(const squeal_params_t *params,
-			  const squeal_point_t *point,
-			  squeal_criterion_t criterion,
-			  squeal_result_t *out)
+void squeal_model_classify_sliding(const squeal_params_t *p,
+				   const squeal_point_t *point,
+				   squeal_criterion_t criterion,
+				   squeal_result_t *out)
 {
-	const squeal_params_t *p = params;
 	int64_t ln_a;
 	int64_t ln_w0;
 	int64_t ln_force;
@@ -245,25 +244,6 @@ int squeal_model_classify(const squeal_params_t *params,
 	int64_t ln_x;
 	bool stable;
 	bool sat;
-
-	if ((params == NULL) || (point == NULL) || (out == NULL)) {
-		return SQ_EINVAL;
-	}
-	if ((squeal_model_params_check(params) != SQ_OK) ||
-	    (point_check(point) != SQ_OK) ||
-	    ((criterion != SQUEAL_CRITERION_EXACT) &&
-	     (criterion != SQUEAL_CRITERION_CUBIC))) {
-		squeal_model_result_clear(out, SQUEAL_STATE_INVALID);
-		return SQ_EINVAL;
-	}
-	if ((point->v0_mps == 0) || (point->force_n == 0)) {
-		squeal_model_result_clear(out, SQUEAL_STATE_NOT_SLIDING);
-		return SQ_OK;
-	}
-	squeal_model_result_clear(out, SQUEAL_STATE_STABLE);
-	if ((p->slope_spm == 0) || (p->delta_mu <= 0)) {
-		return SQ_OK; /* friction does not fall with speed */
-	}
 
 	ln_a = ln_field(p->slope_spm, SQUEAL_Q_SLOPE);
 	ln_w0 = ln_field(p->omega0_radps, SQUEAL_Q_OMEGA0);
@@ -296,7 +276,7 @@ int squeal_model_classify(const squeal_params_t *params,
 
 	if (lq2 <= 0) {
 		out->state = SQUEAL_STATE_UNSTABLE;
-		return SQ_OK;
+		return;
 	}
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
 		/* stable iff lq2 >= ln(1 + s^2/8); s in Q16 keeps s^2 in 64 bits */
@@ -342,7 +322,6 @@ int squeal_model_classify(const squeal_params_t *params,
 	} else {
 		/* rho already on the side of its class */
 	}
-	return SQ_OK;
 }
 
 #endif /* SQUEAL_NUMERIC_FIXED */

@@ -104,7 +104,7 @@ int squeal_model_params_check(const squeal_params_t *params)
 	return SQ_OK;
 }
 
-static int point_check(const squeal_point_t *point)
+int squeal_model_point_check(const squeal_point_t *point)
 {
 	if (!in_range(point->v0_mps, 0.0f, V0_MAX_MPS) ||
 	    !in_range(point->force_n, 0.0f, FORCE_MAX_N)) {
@@ -260,36 +260,15 @@ static void fill_cycle(const squeal_params_t *p, const squeal_point_t *pt,
 			       out, SQUEAL_SAT_BASIN);
 }
 
-int squeal_model_classify(const squeal_params_t *params,
-			  const squeal_point_t *point,
-			  squeal_criterion_t criterion,
-			  squeal_result_t *out)
+void squeal_model_classify_sliding(const squeal_params_t *p,
+				   const squeal_point_t *point,
+				   squeal_criterion_t criterion,
+				   squeal_result_t *out)
 {
-	const squeal_params_t *p = params;
 	float s;
 	float c2;
 	float lq2;
 	bool stable;
-
-	if ((params == NULL) || (point == NULL) || (out == NULL)) {
-		return SQ_EINVAL;
-	}
-	if ((squeal_model_params_check(params) != SQ_OK) ||
-	    (point_check(point) != SQ_OK) ||
-	    ((criterion != SQUEAL_CRITERION_EXACT) &&
-	     (criterion != SQUEAL_CRITERION_CUBIC))) {
-		squeal_model_result_clear(out, SQUEAL_STATE_INVALID);
-		return SQ_EINVAL;
-	}
-	if ((point->v0_mps == 0.0f) || (point->force_n == 0.0f)) {
-		squeal_model_result_clear(out, SQUEAL_STATE_NOT_SLIDING);
-		return SQ_OK;
-	}
-	squeal_model_result_clear(out, SQUEAL_STATE_STABLE);
-	if ((p->slope_spm == 0.0f) || !(p->delta_mu > 0.0f)) {
-		/* friction does not fall with speed: no border, no cycle */
-		return SQ_OK;
-	}
 
 	s = p->slope_spm * point->v0_mps;
 	c2 = SQ_LN2F + sq_lnf(p->damping) + sq_lnf(p->omega0_radps) +
@@ -315,7 +294,7 @@ int squeal_model_classify(const squeal_params_t *params,
 
 	if (!(lq2 > 0.0f)) {
 		out->state = SQUEAL_STATE_UNSTABLE;
-		return SQ_OK;
+		return;
 	}
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
 		stable = lq2 >= sq_log1pf(0.125f * s * s);
@@ -344,7 +323,6 @@ int squeal_model_classify(const squeal_params_t *params,
 			/* rho already on the side of its class */
 		}
 	}
-	return SQ_OK;
 }
 
 #endif /* !SQUEAL_NUMERIC_FIXED */
