@@ -57,7 +57,7 @@ BENCH_PROGS += tests/sim/bench_agreement.sh
 PLOT_GRID ?= 100
 DRIVE_SCENARIO ?= sweep
 .PHONY: plots
-plots: build/host/oscsim build/host/squeal-sim
+plots: deps-demo build/host/oscsim build/host/squeal-sim
 	@mkdir -p build/plots docs/img
 	build/host/oscsim map --grid $(PLOT_GRID) --brake all --no-linear --csv build/plots/map.csv >build/plots/map-summary.txt
 	$(PYTHON) tools/plots/plot_map.py build/plots/map.csv --out build/plots
