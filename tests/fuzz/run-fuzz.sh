@@ -9,7 +9,9 @@
 #
 # --mode test (default, what `make test` runs): S = $FUZZ_TEST_SECONDS (10)
 #     per target, on a scratch copy of the committed seeds (nothing in the
-#     tree changes).
+#     tree changes), with a fixed random seed ($FUZZ_TEST_SEED, default 1)
+#     so that CI explores the same inputs on every run: a failure there is
+#     reproducible, not luck. `make fuzz` explores with fresh seeds.
 # --mode fuzz (`make fuzz`): S = $FUZZ_SECONDS (300) per target; new inputs
 #     accumulate in build/fuzz-corpus/<target>/ across runs.
 # Targets default to $FUZZ_TARGETS (exported by make) or build/fuzz/bin/*.
@@ -65,7 +67,9 @@ for bin in "${targets[@]}"; do
 	[ -d "$seeds" ] && dirs+=("$seeds")
 	# -timeout: one input may take 5 s at most (a hang is a failure);
 	# -rss_limit_mb: an unbounded allocation is a failure too.
-	"$bin" -max_total_time="$secs" -timeout=5 -rss_limit_mb=2048 \
+	seedopt=()
+	[ "$mode" = fuzz ] || seedopt=(-seed="${FUZZ_TEST_SEED:-1}")
+	"$bin" "${seedopt[@]}" -max_total_time="$secs" -timeout=5 -rss_limit_mb=2048 \
 		-print_final_stats=1 -detect_leaks=1 \
 		-artifact_prefix="$artifacts/$name-" "${dirs[@]}" >"$log" 2>&1
 	rc=$?
