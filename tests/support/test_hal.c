@@ -472,3 +472,39 @@ int32_t test_hal_tx_find(uint32_t id, uint32_t from)
 	}
 	return -1;
 }
+
+const hal_can_frame_t *test_hal_tx_last(uint32_t id)
+{
+	int32_t i = -1;
+	int32_t last = -1;
+
+	while ((i = test_hal_tx_find(id, (uint32_t)(i + 1))) >= 0) {
+		last = i;
+	}
+	return (last >= 0) ? test_hal_tx_frame((uint32_t)last) : NULL;
+}
+
+const hal_can_frame_t *test_hal_tx_at(uint32_t id, uint64_t t_us)
+{
+	int32_t i = -1;
+
+	while ((i = test_hal_tx_find(id, (uint32_t)(i + 1))) >= 0) {
+		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
+
+		if (f->timestamp_us == t_us) {
+			return f;
+		}
+	}
+	return NULL;
+}
+
+uint64_t test_frame_sig(const uint8_t data[8], uint32_t start, uint32_t len)
+{
+	uint64_t v = 0U;
+	uint32_t i;
+
+	for (i = 0U; i < 8U; i++) {
+		v |= (uint64_t)data[i] << (8U * i);
+	}
+	return (v >> start) & ((1ULL << len) - 1U);
+}

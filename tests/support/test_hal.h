@@ -101,4 +101,14 @@ int test_send_pair(test_sender_t *s, uint16_t speed_raw, uint16_t force_raw,
 /* Index of the first logged TX frame with this id at index >= from, or -1. */
 int32_t test_hal_tx_find(uint32_t id, uint32_t from);
 
+/* The last logged TX frame with this id, or NULL. */
+const hal_can_frame_t *test_hal_tx_last(uint32_t id);
+
+/* The first logged TX frame with this id sent at exactly t_us, or NULL. */
+const hal_can_frame_t *test_hal_tx_at(uint32_t id, uint64_t t_us);
+
+/* A raw signal of a frame: Intel byte order, start bit and length as in the
+ * DBC. Read here, independently of firmware/protocol's decoder. */
+uint64_t test_frame_sig(const uint8_t data[8], uint32_t start, uint32_t len);
+
 #endif /* TEST_HAL_H */

@@ -30,17 +30,6 @@
 
 static test_sender_t snd;
 
-static uint64_t sig(const uint8_t *d, uint32_t start, uint32_t len)
-{
-	uint64_t v = 0U;
-	uint32_t i;
-
-	for (i = 0U; i < 8U; i++) {
-		v |= (uint64_t)d[i] << (8U * i);
-	}
-	return (v >> start) & ((1ULL << len) - 1U);
-}
-
 static uint64_t in_time(uint32_t k)
 {
 	return T0_US + IN_OFFSET_US + IN_PERIOD_US * k;
@@ -94,20 +83,16 @@ static void default_block(uint8_t *buf)
  * one at once) */
 static uint16_t diag_faults_at(uint64_t t_us, const uint8_t **data)
 {
-	int32_t i = -1;
+	const hal_can_frame_t *f = test_hal_tx_at(EXP_DBC_SQUEALDIAG_ID, t_us);
 
-	while ((i = test_hal_tx_find(EXP_DBC_SQUEALDIAG_ID, (uint32_t)(i + 1))) >= 0) {
-		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
-
-		if (f->timestamp_us == t_us) {
-			if (data != NULL) {
-				*data = f->data;
-			}
-			return (uint16_t)sig(f->data, 16, 11);
-		}
+	if (f == NULL) {
+		fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
+		return 0U;
 	}
-	fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
-	return 0U;
+	if (data != NULL) {
+		*data = f->data;
+	}
+	return (uint16_t)test_frame_sig(f->data, 16, 11);
 }
 
 /* ---- calibration from storage ---------------------------------------------- */
@@ -325,8 +310,8 @@ static void test_worst_task_time_reported(void **state)
 	(void)squeal_app_poll();
 	run_to(T0_US + 1000000U);
 	(void)diag_faults_at(T0_US + 1000000U, &d);
-	assert_int_equal(sig(d, 12, 4), 1); /* page 1 */
-	assert_int_equal(sig(d, 32, 16), 42);
+	assert_int_equal(test_frame_sig(d, 12, 4), 1); /* page 1 */
+	assert_int_equal(test_frame_sig(d, 32, 16), 42);
 	assert_int_equal(squeal_app_monitor()->worst_task_us, 42);
 }
 
@@ -414,9 +399,9 @@ static void test_bus_off_and_recovery(void **state)
 	steady(300U, 500U);
 	run_to(T0_US + 4000000U);
 	assert_true((diag_faults_at(T0_US + 4000000U, &d) & MSG_FAULT_BUS_OFF_SEEN) != 0U);
-	assert_int_equal(sig(d, 12, 4), 0); /* page 0 */
-	assert_int_equal(sig(d, 56, 8), 1); /* BusOffCount */
-	assert_int_equal(sig(d, 32, 24), 4); /* Uptime_s */
+	assert_int_equal(test_frame_sig(d, 12, 4), 0); /* page 0 */
+	assert_int_equal(test_frame_sig(d, 56, 8), 1); /* BusOffCount */
+	assert_int_equal(test_frame_sig(d, 32, 24), 4); /* Uptime_s */
 }
 
 /* ---- TX queue full --------------------------------------------------------------- */
@@ -471,8 +456,8 @@ static void test_tx_queue_full(void **state)
 	run_to(T0_US + 3000000U);
 	assert_true((diag_faults_at(T0_US + 2000000U, NULL) & MSG_FAULT_TX_OVERFLOW) != 0U);
 	(void)diag_faults_at(T0_US + 3000000U, &d);
-	assert_int_equal(sig(d, 12, 4), 3); /* page 3 */
-	assert_int_equal(sig(d, 32, 16), squeal_app_monitor()->count.tx_overflow);
+	assert_int_equal(test_frame_sig(d, 12, 4), 3); /* page 3 */
+	assert_int_equal(test_frame_sig(d, 32, 16), squeal_app_monitor()->count.tx_overflow);
 	assert_int_equal(squeal_app_monitor()->state, MSG_SQUEAL_STATE_STABLE);
 	print_message("  TX full 100 ms: %u HAL refusals, %u frames dropped as overflow\n",
 		      test_hal_tx_rejected(), squeal_app_monitor()->count.tx_overflow);

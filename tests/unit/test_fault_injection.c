@@ -71,17 +71,6 @@
 
 static test_sender_t snd;
 
-static uint64_t sig(const uint8_t *d, uint32_t start, uint32_t len)
-{
-	uint64_t v = 0U;
-	uint32_t i;
-
-	for (i = 0U; i < 8U; i++) {
-		v |= (uint64_t)d[i] << (8U * i);
-	}
-	return (v >> start) & ((1ULL << len) - 1U);
-}
-
 static uint64_t in_time(uint32_t k)
 {
 	return T0_US + IN_OFFSET_US + IN_PERIOD_US * k;
@@ -156,7 +145,7 @@ static uint64_t first_status(uint64_t t_us, uint8_t st, bool want)
 	while ((i = test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, (uint32_t)(i + 1))) >= 0) {
 		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
 
-		if ((f->timestamp_us >= t_us) && ((sig(f->data, 12, 4) == st) == want)) {
+		if ((f->timestamp_us >= t_us) && ((test_frame_sig(f->data, 12, 4) == st) == want)) {
 			return f->timestamp_us;
 		}
 	}
@@ -165,36 +154,28 @@ static uint64_t first_status(uint64_t t_us, uint8_t st, bool want)
 
 static uint8_t last_state(void)
 {
-	int32_t i = -1;
-	int32_t last = -1;
+	const hal_can_frame_t *f = test_hal_tx_last(EXP_DBC_SQUEALSTATUS_ID);
 
-	while ((i = test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, (uint32_t)(i + 1))) >= 0) {
-		last = i;
-	}
-	assert_true(last >= 0);
-	return (uint8_t)sig(test_hal_tx_frame((uint32_t)last)->data, 12, 4);
+	assert_non_null(f);
+	return (uint8_t)test_frame_sig(f->data, 12, 4);
 }
 
 /* The SquealDiag sent at t_us: fault bits; page and payload if asked. */
 static uint16_t diag_at(uint64_t t_us, uint32_t *page, const uint8_t **data)
 {
-	int32_t i = -1;
+	const hal_can_frame_t *f = test_hal_tx_at(EXP_DBC_SQUEALDIAG_ID, t_us);
 
-	while ((i = test_hal_tx_find(EXP_DBC_SQUEALDIAG_ID, (uint32_t)(i + 1))) >= 0) {
-		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
-
-		if (f->timestamp_us == t_us) {
-			if (page != NULL) {
-				*page = (uint32_t)sig(f->data, 12, 4);
-			}
-			if (data != NULL) {
-				*data = f->data;
-			}
-			return (uint16_t)sig(f->data, 16, 11);
-		}
+	if (f == NULL) {
+		fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
+		return 0U;
 	}
-	fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
-	return 0U;
+	if (page != NULL) {
+		*page = (uint32_t)test_frame_sig(f->data, 12, 4);
+	}
+	if (data != NULL) {
+		*data = f->data;
+	}
+	return (uint16_t)test_frame_sig(f->data, 16, 11);
 }
 
 static void assert_no_e2e_errors(bool speed)
@@ -419,8 +400,8 @@ static void test_crc_storm_1s(void **state)
 	run_to(T0_US + 6000000U);
 	(void)diag_at(T0_US + 6000000U, &page, &d);
 	assert_int_equal(page, 2);
-	assert_int_equal(sig(d, 32, 16), 100);
-	assert_int_equal(sig(d, 48, 16), 100);
+	assert_int_equal(test_frame_sig(d, 32, 16), 100);
+	assert_int_equal(test_frame_sig(d, 48, 16), 100);
 }
 
 /*
@@ -527,8 +508,8 @@ static void test_every_wrong_dlc(void **state)
 	run_to(T0_US + 3000000U);
 	(void)diag_at(T0_US + 3000000U, &page, &d);
 	assert_int_equal(page, 3);
-	assert_int_equal(sig(d, 48, 16), 16);
-	assert_int_equal(sig(d, 32, 16), 0);
+	assert_int_equal(test_frame_sig(d, 48, 16), 16);
+	assert_int_equal(test_frame_sig(d, 32, 16), 0);
 }
 
 /* ---- bus-off during transmission ------------------------------------------------------- */
@@ -618,7 +599,7 @@ static void test_bus_off_during_transmission(void **state)
 		assert_true(i >= 0);
 		assert_true(test_hal_tx_frame((uint32_t)i)->timestamp_us <=
 			    t_off + 300000U + STATUS_US);
-		assert_int_equal(sig(test_hal_tx_frame((uint32_t)i)->data, 12, 4), ST_STABLE);
+		assert_int_equal(test_frame_sig(test_hal_tx_frame((uint32_t)i)->data, 12, 4), ST_STABLE);
 	}
 	/* two more short episodes: 5 ms and 1 s */
 	run_steady(T0_US + 3000000U);
@@ -639,8 +620,8 @@ static void test_bus_off_during_transmission(void **state)
 	assert_int_equal(diag_at(T0_US + 8000000U, &page, &d),
 			 F_BUS_OFF_SEEN | F_TX_OVERFLOW);
 	assert_int_equal(page, 0);
-	assert_int_equal(sig(d, 56, 8), 3); /* BusOffCount */
-	assert_int_equal(sig(d, 32, 24), 8); /* Uptime_s */
+	assert_int_equal(test_frame_sig(d, 56, 8), 3); /* BusOffCount */
+	assert_int_equal(test_frame_sig(d, 32, 24), 8); /* Uptime_s */
 	/* RX never stopped: every pair used and classified, one state change */
 	assert_int_equal(mon()->speed.count.used, next_k);
 	assert_int_equal(mon()->force.count.used, next_k);
@@ -707,7 +688,7 @@ static void test_tx_full_5s(void **state)
 		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
 
 		assert_true(f->timestamp_us - prev <= STATUS_US);
-		assert_int_equal(sig(f->data, 12, 4), ST_STABLE);
+		assert_int_equal(test_frame_sig(f->data, 12, 4), ST_STABLE);
 		prev = f->timestamp_us;
 	}
 	assert_true(prev >= t_free + 1000000U - STATUS_US);
@@ -715,7 +696,7 @@ static void test_tx_full_5s(void **state)
 	run_steady(T0_US + 11000000U);
 	assert_int_equal(diag_at(T0_US + 11000000U, &page, &d), F_TX_OVERFLOW);
 	assert_int_equal(page, 3);
-	assert_int_equal(sig(d, 32, 16), mon()->count.tx_overflow);
+	assert_int_equal(test_frame_sig(d, 32, 16), mon()->count.tx_overflow);
 	print_message("  TX full 5 s: %u refusals, %u frames overflowed\n",
 		      test_hal_tx_rejected(), mon()->count.tx_overflow);
 }
@@ -781,7 +762,7 @@ static void test_clock_jump_10s(void **state)
 	run_to(tj + 3U * DIAG_US);
 	(void)diag_at(tj + 3U * DIAG_US, &page, &d);
 	assert_int_equal(page, 0);
-	assert_int_equal(sig(d, 32, 24), (tj + 3U * DIAG_US - T0_US) / 1000000U); /* Uptime_s */
+	assert_int_equal(test_frame_sig(d, 32, 24), (tj + 3U * DIAG_US - T0_US) / 1000000U); /* Uptime_s */
 }
 
 /* what the scheduler does with the queue, the bus taking every frame */
@@ -879,7 +860,7 @@ static void test_long_run_1e6_steps(void **state)
 			const int ctr = f->data[1] & 0x0F;
 
 			if (f->timestamp_us >= in_time(0U)) {
-				assert_int_equal(sig(f->data, 12, 4), ST_STABLE);
+				assert_int_equal(test_frame_sig(f->data, 12, 4), ST_STABLE);
 			}
 			if (last_ctr >= 0) {
 				assert_int_equal(ctr, (last_ctr + 1) % 15);
@@ -892,7 +873,7 @@ static void test_long_run_1e6_steps(void **state)
 			const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
 
 			if (f->timestamp_us > T0_US) {
-				assert_int_equal(sig(f->data, 16, 11), 0U);
+				assert_int_equal(test_frame_sig(f->data, 16, 11), 0U);
 			}
 			n_diag++;
 		}

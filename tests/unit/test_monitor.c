@@ -35,17 +35,6 @@
 
 /* ---- helpers ---------------------------------------------------------------- */
 
-static uint64_t sig(const uint8_t *d, uint32_t start, uint32_t len)
-{
-	uint64_t v = 0U;
-	uint32_t i;
-
-	for (i = 0U; i < 8U; i++) {
-		v |= (uint64_t)d[i] << (8U * i);
-	}
-	return (v >> start) & ((1ULL << len) - 1U);
-}
-
 static void store_calib(const calib_t *cal)
 {
 	uint8_t buf[CALIB_BLOCK_LEN];
@@ -101,10 +90,10 @@ static uint32_t collect_status(void)
 		assert_int_equal(f->dlc, 8);
 		assert_true(n < MAX_STATUS);
 		recs[n].t_us = f->timestamp_us;
-		recs[n].state = (uint8_t)sig(f->data, 12, 4);
-		recs[n].warning = (uint8_t)sig(f->data, 16, 4);
-		recs[n].basin = (uint16_t)sig(f->data, 24, 16);
-		recs[n].margin = (int16_t)(uint16_t)sig(f->data, 40, 16);
+		recs[n].state = (uint8_t)test_frame_sig(f->data, 12, 4);
+		recs[n].warning = (uint8_t)test_frame_sig(f->data, 16, 4);
+		recs[n].basin = (uint16_t)test_frame_sig(f->data, 24, 16);
+		recs[n].margin = (int16_t)(uint16_t)test_frame_sig(f->data, 40, 16);
 		n++;
 	}
 	return n;
@@ -426,9 +415,9 @@ static void test_braking_tx_schedule_and_details(void **state)
 	while ((j = test_hal_tx_find(EXP_DBC_SQUEALDETAIL_ID, (uint32_t)(j + 1))) >= 0) {
 		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)j);
 		const uint64_t t = f->timestamp_us;
-		const uint32_t v0 = (uint32_t)sig(f->data, 12, 14);
-		const uint32_t hopf = (uint32_t)sig(f->data, 26, 14);
-		const uint32_t kph = (uint32_t)sig(f->data, 52, 12);
+		const uint32_t v0 = (uint32_t)test_frame_sig(f->data, 12, 14);
+		const uint32_t hopf = (uint32_t)test_frame_sig(f->data, 26, 14);
+		const uint32_t kph = (uint32_t)test_frame_sig(f->data, 52, 12);
 
 		assert_int_equal((t - T0_US) % (EXP_DBC_SQUEALDETAIL_CYCLE_MS * 1000U), 0);
 		assert_int_equal(t - T0_US, (uint64_t)ndet * EXP_DBC_SQUEALDETAIL_CYCLE_MS * 1000U);
@@ -454,8 +443,8 @@ static void test_braking_tx_schedule_and_details(void **state)
 	while ((j = test_hal_tx_find(EXP_DBC_SQUEALDETAIL2_ID, (uint32_t)(j + 1))) >= 0) {
 		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)j);
 		const uint64_t t = f->timestamp_us;
-		const uint32_t force = (uint32_t)sig(f->data, 16, 16);
-		const uint32_t nh = (uint32_t)sig(f->data, 32, 16);
+		const uint32_t force = (uint32_t)test_frame_sig(f->data, 16, 16);
+		const uint32_t nh = (uint32_t)test_frame_sig(f->data, 32, 16);
 
 		assert_int_equal(t - T0_US, (uint64_t)ndet2 * EXP_DBC_SQUEALDETAIL2_CYCLE_MS * 1000U);
 		ndet2++;
@@ -483,9 +472,9 @@ static void test_braking_tx_schedule_and_details(void **state)
 
 		assert_int_equal(f->timestamp_us - T0_US,
 				 (uint64_t)ndiag * EXP_DBC_SQUEALDIAG_CYCLE_MS * 1000U);
-		assert_int_equal(sig(f->data, 12, 4), ndiag % 4U);
-		if (sig(f->data, 12, 4) == 0U) {
-			assert_int_equal(sig(f->data, 32, 24), ndiag); /* uptime s */
+		assert_int_equal(test_frame_sig(f->data, 12, 4), ndiag % 4U);
+		if (test_frame_sig(f->data, 12, 4) == 0U) {
+			assert_int_equal(test_frame_sig(f->data, 32, 24), ndiag); /* uptime s */
 		}
 		ndiag++;
 	}

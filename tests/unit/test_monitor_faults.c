@@ -40,17 +40,6 @@
 
 static test_sender_t snd;
 
-static uint64_t sig(const uint8_t *d, uint32_t start, uint32_t len)
-{
-	uint64_t v = 0U;
-	uint32_t i;
-
-	for (i = 0U; i < 8U; i++) {
-		v |= (uint64_t)d[i] << (8U * i);
-	}
-	return (v >> start) & ((1ULL << len) - 1U);
-}
-
 static uint64_t in_time(uint32_t k)
 {
 	return T0_US + IN_OFFSET_US + IN_PERIOD_US * k;
@@ -107,7 +96,7 @@ static uint64_t first_status(uint64_t t_us, uint8_t st, bool want)
 	while ((i = test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, (uint32_t)(i + 1))) >= 0) {
 		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
 
-		if ((f->timestamp_us >= t_us) && ((sig(f->data, 12, 4) == st) == want)) {
+		if ((f->timestamp_us >= t_us) && ((test_frame_sig(f->data, 12, 4) == st) == want)) {
 			return f->timestamp_us;
 		}
 	}
@@ -117,39 +106,31 @@ static uint64_t first_status(uint64_t t_us, uint8_t st, bool want)
 /* state and level of the last SquealStatus sent */
 static uint8_t last_state(uint8_t *warning)
 {
-	int32_t i = -1;
-	int32_t last = -1;
+	const hal_can_frame_t *f = test_hal_tx_last(EXP_DBC_SQUEALSTATUS_ID);
 
-	while ((i = test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, (uint32_t)(i + 1))) >= 0) {
-		last = i;
-	}
-	assert_true(last >= 0);
+	assert_non_null(f);
 	if (warning != NULL) {
-		*warning = (uint8_t)sig(test_hal_tx_frame((uint32_t)last)->data, 16, 4);
+		*warning = (uint8_t)test_frame_sig(f->data, 16, 4);
 	}
-	return (uint8_t)sig(test_hal_tx_frame((uint32_t)last)->data, 12, 4);
+	return (uint8_t)test_frame_sig(f->data, 12, 4);
 }
 
 /* The SquealDiag frame sent at t_us (exactly): fault bits and page. */
 static uint16_t diag_faults_at(uint64_t t_us, uint32_t *page, const uint8_t **data)
 {
-	int32_t i = -1;
+	const hal_can_frame_t *f = test_hal_tx_at(EXP_DBC_SQUEALDIAG_ID, t_us);
 
-	while ((i = test_hal_tx_find(EXP_DBC_SQUEALDIAG_ID, (uint32_t)(i + 1))) >= 0) {
-		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
-
-		if (f->timestamp_us == t_us) {
-			if (page != NULL) {
-				*page = (uint32_t)sig(f->data, 12, 4);
-			}
-			if (data != NULL) {
-				*data = f->data;
-			}
-			return (uint16_t)sig(f->data, 16, 11);
-		}
+	if (f == NULL) {
+		fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
+		return 0U;
 	}
-	fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
-	return 0U;
+	if (page != NULL) {
+		*page = (uint32_t)test_frame_sig(f->data, 12, 4);
+	}
+	if (data != NULL) {
+		*data = f->data;
+	}
+	return (uint16_t)test_frame_sig(f->data, 16, 11);
 }
 
 static const monitor_t *mon(void)
@@ -265,8 +246,8 @@ static void test_bad_crc(void **state)
 	run_to(T0_US + 2000000U);
 	assert_int_equal(diag_faults_at(T0_US + 2000000U, &page, &d), 0U);
 	assert_int_equal(page, 2);
-	assert_int_equal(sig(d, 32, 16), 1); /* E2eErrorCountSpeed */
-	assert_int_equal(sig(d, 48, 16), 0); /* E2eErrorCountForce */
+	assert_int_equal(test_frame_sig(d, 32, 16), 1); /* E2eErrorCountSpeed */
+	assert_int_equal(test_frame_sig(d, 48, 16), 0); /* E2eErrorCountForce */
 }
 
 /* A corrupted payload byte (CRC still the old one) is caught too, and a
@@ -532,7 +513,7 @@ static void test_wrong_dlc(void **state)
 
 		(void)diag_faults_at(T0_US + 3000000U, &page, &d);
 		assert_int_equal(page, 3);
-		assert_int_equal(sig(d, 48, 16), 3);
+		assert_int_equal(test_frame_sig(d, 48, 16), 3);
 	}
 }
 
