@@ -188,6 +188,23 @@ int calib_validate(const calib_t *cal)
 	return SQ_OK;
 }
 
+int calib_field_range(uint32_t offset, int64_t *min, int64_t *max)
+{
+	uint32_t i;
+
+	if ((min == NULL) || (max == NULL)) {
+		return SQ_EINVAL;
+	}
+	for (i = 0U; i < FIELD_COUNT; i++) {
+		if (fields[i].offset == offset) {
+			*min = fields[i].min;
+			*max = fields[i].max;
+			return SQ_OK;
+		}
+	}
+	return SQ_ENOENT;
+}
+
 static void put_le(uint8_t *p, uint32_t v, uint32_t size)
 {
 	uint32_t i;

@@ -104,6 +104,14 @@ int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len);
 int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 		 calib_error_t *reason);
 
+/*
+ * The valid stored range of the field at byte offset `offset` in calib_t
+ * (offsetof), from the same table calib_validate() uses, so that other
+ * front ends (the text file parser) need no copy of it.
+ * SQ_OK, SQ_ENOENT (no field starts there), SQ_EINVAL (NULL).
+ */
+int calib_field_range(uint32_t offset, int64_t *min, int64_t *max);
+
 /* The model's parameters from a valid calibration. */
 void calib_model_params(const calib_t *cal, squeal_params_t *params);
 
