@@ -10,19 +10,11 @@ closed-form prediction for the measured force, and writes the drive CSV
 """
 import argparse
 import csv
-import math
 import sys
 
 R_P, R_W = 0.12, 0.30            # default calibration (model.md section 8)
-A, D, W0, M, DMU = 2.0, 0.023, 5000.0, 1.0, 0.15
 STATES = {0: "stable", 1: "bistable", 2: "unstable", 3: "not sliding", 15: "FAULT"}
 LEVELS = {0: "none", 1: "advisory", 2: "WARNING", 3: "CRITICAL"}
-
-
-def hopf_speed(force_n):
-    """v_H = (1/a) ln(a N dmu / (2 D w0 m)), model.md section 2."""
-    arg = A * force_n * DMU / (2 * D * W0 * M)
-    return math.log(arg) / A if arg > 1 else None
 
 
 def bar(frac, width=30):
@@ -42,6 +34,7 @@ def main():
     t_end = float(rows[-1]["time_s"]) or 1.0
     tty = sys.stdout.isatty()
     v0 = force = None
+    hopf_v0 = None              # the monitor's own v_H, from SquealDetail
     last = None
     next_mark = 0.0
     drive = []
@@ -59,6 +52,8 @@ def main():
             v0 = float(r["DiscSpeed_radps"]) * R_P
         elif msg == "PadForce" and (r["e2e"] in ("ok", "initial") or r["e2e"].startswith("lost")):
             force = float(r["PadForce_N"])
+        elif msg == "SquealDetail" and r["HopfSpeed_mps"] not in ("NA", ""):
+            hopf_v0 = float(r["HopfSpeed_mps"])
         elif msg == "SquealStatus":
             st, lvl = int(r["SquealState"]), int(r["WarningLevel"])
             if v0 is not None and force is not None:
@@ -68,9 +63,8 @@ def main():
                     sys.stderr.write("\r" + " " * 60 + "\r")
                 note = ""
                 if v0 is not None and force is not None:
-                    vh = hopf_speed(force)
-                    if st == 2 and vh is not None:
-                        note = "model: Hopf border v_H = %.3f m/s at %.0f N" % (vh, force)
+                    if st == 2 and hopf_v0 is not None:
+                        note = "Hopf border v_H = %.2f m/s at %.0f N (SquealDetail)" % (hopf_v0, force)
                     elif st == 1 and r["BasinRatio"] not in ("NA", ""):
                         note = "basin ratio %.2f: a disturbance > trigger velocity starts stick-slip" % float(r["BasinRatio"])
                     elif st == 0 and r["HopfMargin_mps"] not in ("NA", ""):
