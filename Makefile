@@ -5,7 +5,7 @@
 #
 #   make            host programs: build/host/squeal-sim (float),
 #                   build/host-fixed/squeal-sim (fixed point)
-#   make test       every test; ends with "N passed, N failed"
+#   make test       every test; ends with "N passed, N failed, N skipped"
 #   make bench      benchmarks (figures, never pass/fail)
 #   make demo       the main job (see README)
 
