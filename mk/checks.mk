@@ -3,3 +3,8 @@
 # counting, CI's expected skips) and the negative controls of checks that
 # must be able to fail. make mutate: the mutation score (a bench figure).
 TEST_PROGS += tests/support/test-run-tests.sh
+
+# run-ecu-boot.sh on a stub emulator: a bad boot fails exactly its six checks
+tests/target/test-ecu-boot-control.sh: build/stm32f4-ecutest/squeal-monitor.elf \
+	build/stm32f4-faulttest/squeal-monitor.elf
+TEST_PROGS += tests/target/test-ecu-boot-control.sh
