@@ -8,3 +8,6 @@ TEST_PROGS += tests/support/test-run-tests.sh
 tests/target/test-ecu-boot-control.sh: build/stm32f4-ecutest/squeal-monitor.elf \
 	build/stm32f4-faulttest/squeal-monitor.elf
 TEST_PROGS += tests/target/test-ecu-boot-control.sh
+
+# check-calib-write-path.sh: an image that was not built is a counted skip
+TEST_PROGS += tests/static/test-calib-write-path-control.sh

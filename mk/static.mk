@@ -17,6 +17,7 @@ static:
 misra-count:
 	tests/static/cppcheck-misra.sh --count
 
-tests/static/check-calib-write-path.sh: build/host/libfirmware.a build/host-fixed/libfirmware.a
+tests/static/check-calib-write-path.sh: build/host/libfirmware.a build/host-fixed/libfirmware.a \
+	build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf
 TEST_PROGS += tests/static/cppcheck-misra.sh tests/static/clang-warnings.sh \
 	tests/static/check-calib-write-path.sh
