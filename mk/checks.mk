@@ -11,3 +11,7 @@ TEST_PROGS += tests/target/test-ecu-boot-control.sh
 
 # check-calib-write-path.sh: an image that was not built is a counted skip
 TEST_PROGS += tests/static/test-calib-write-path-control.sh
+
+# test_demo.sh with a demo that draws no picture (a stale one left in place)
+tests/demo/test-demo-control.sh: build/host/squeal-sim
+TEST_PROGS += tests/demo/test-demo-control.sh

@@ -3,12 +3,16 @@
 # The README's main job works: the demo runs, its timeline shows the braking
 # run passing stable -> bistable -> unstable -> not sliding with the warning
 # levels rising, and it draws a non-blank picture.
+# Everything checked is deleted first, so a stale picture cannot pass.
+# DEMO_TEST_OUT and DEMO_SCRIPT: another output place and demo (the negative
+# control tests/demo/test-demo-control.sh uses a demo that draws nothing).
 set -u
 cd "$(dirname "$0")/../.."
-out=build/demo-test
+out=${DEMO_TEST_OUT:-build/demo-test}
+rm -f "$out.txt" "$out/drive_map.png"
 pass=0; fail=0
 check() { if eval "$2"; then pass=$((pass+1)); else fail=$((fail+1)); echo "FAILED: $1"; fi; }
-DEMO_OUT=$out tools/demo.sh >"$out.txt" 2>&1
+DEMO_OUT=$out "${DEMO_SCRIPT:-tools/demo.sh}" >"$out.txt" 2>&1
 rc=$?
 cat "$out.txt"
 check "demo exits 0" '[ $rc = 0 ]'
