@@ -525,13 +525,15 @@ def main(argv):
     c = Checks()
     dec = Decoder()
     check_stop(c, dec, out)
+    skipped = 0
     if skip_replay:
-        print("skip  replay: squeal-sim has no replay command yet")
+        print("SKIP: replay of the bus log through squeal-sim (--no-replay given)")
+        skipped = 1
     else:
         check_replay(c, dec, out, sim, calib)
     check_faults(c, dec, out)
     check_flood(c, out)
-    print("RESULT: %d passed, %d failed" % (c.passed, c.failed))
+    print("RESULT: %d passed, %d failed, %d skipped" % (c.passed, c.failed, skipped))
     return 0 if c.failed == 0 else 1
 
 
