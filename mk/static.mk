@@ -3,8 +3,11 @@
 #   tests/static/cppcheck-misra.sh    cppcheck 2.10 + MISRA C:2012 addon on
 #                                     firmware/ and hal/, both numeric builds;
 #                                     fails on findings not in
-#                                     docs/misra-deviations.md
-#                                     (--count: everything, by rule and area)
+#                                     docs/misra-deviations.md, on a row over
+#                                     its Count budget, on a cppcheck/addon
+#                                     failure, on a canary not flagged
+#                                     (--count, make misra-count: everything,
+#                                     by rule and area, and per row)
 #   tests/static/clang-warnings.sh    firmware/ under clang-14 -Weverything
 #                                     (minus a documented list) -Werror, host
 #                                     and both ECU targets, both builds

@@ -5,9 +5,14 @@
 # builds (float, and -DSQUEAL_NUMERIC_FIXED).
 #
 #   tests/static/cppcheck-misra.sh           check: fails on any finding that
-#                                            is not a documented deviation
+#                                            is not a documented deviation, on
+#                                            a deviation over its Count budget,
+#                                            on any cppcheck/addon failure, and
+#                                            when the canary is not flagged
 #   tests/static/cppcheck-misra.sh --count   no deviations applied: counts by
 #                                            rule and area (the "before" view)
+#                                            and per deviation row, paste-ready
+#                                            (make misra-count)
 #
 # The MISRA rule texts are not shipped with cppcheck (they are licensed), so
 # the addon runs without --rule-texts and reports rule numbers only
@@ -19,14 +24,30 @@
 # (a MISRA rule number or a cppcheck check id, then file globs in backticks).
 # This script turns every row into cppcheck suppressions "id:glob", so a new
 # finding of a rule in a place that is not documented fails the check.
-# Prints "RESULT: N passed, M failed" (one test per numeric build).
+# The "Count" cell of each row is its budget: the row's findings with no
+# deviation applied (both builds, each file:line:id once) must not exceed it
+# (tests/static/misra_budget.py).
+# cppcheck's exit status, anything it prints that is not a finding or its
+# progress ("Did not find addon", "Bailing out ... internal error", an addon
+# traceback), an internalError/syntaxError finding, and a run that did not
+# check every file it was given are failures: never "0 findings, PASS".
+# Positive control: tests/static/canary/misra_canary.c, whose marked lines
+# ("canary: <id>...") must be exactly the findings cppcheck + addon report.
+# Negative controls: tests/static/test-cppcheck-misra-control.sh, through
+# MISRA_ADDON (addon configuration), MISRA_DEVIATIONS (the table),
+# MISRA_CORE_DIRS (what the core group checks), MISRA_GROUPS, MISRA_BUILDS,
+# MISRA_OUT.
+# Prints "RESULT: N passed, M failed".
 set -u
 cd "$(dirname "$0")/../.."
 
 mode=check
 [ "${1:-}" = --count ] && mode=count
-out=build/static
-dev=docs/misra-deviations.md
+out=${MISRA_OUT:-build/static}
+dev=${MISRA_DEVIATIONS:-docs/misra-deviations.md}
+addon=${MISRA_ADDON:-tests/static/misra.json}
+builds=${MISRA_BUILDS:-float fixed}
+canary=tests/static/canary/misra_canary.c
 mkdir -p "$out"
 
 if ! command -v cppcheck >/dev/null; then
@@ -39,8 +60,10 @@ fi
 # exactly as mk/target.mk compiles them.
 incs=(-Ifirmware/common -Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor
       -Ifirmware/app -Ihal)
-groups=(core stm32f4 stm32f103)
-files_core() { find firmware hal/linux -name '*.c' | sort; }
+# shellcheck disable=SC2206 # MISRA_GROUPS is a list of names
+groups=(${MISRA_GROUPS:-core stm32f4 stm32f103})
+# shellcheck disable=SC2086 # MISRA_CORE_DIRS is a list of directories
+files_core() { find ${MISRA_CORE_DIRS:-firmware hal/linux} -name '*.c' | sort; }
 incs_core=()
 own_core='^(firmware/|hal/linux/|hal/hal\.h:)'
 files_stm32f4() { [ -d hal/stm32f4 ] && find hal/stm32f4 -name '*.c' | sort; }
@@ -53,67 +76,100 @@ own_stm32f103='^hal/stm32f103/'
 # Deviation table -> suppressions list
 supp=$out/misra-suppressions.txt
 : >"$supp"
-if [ "$mode" = check ]; then
-	awk -F'|' '
-	/^## / { in_dev = ($0 ~ /^## Deviations/) }
-	in_dev && /^\|/ {
-		rule = $2; gsub(/^[ \t]+|[ \t]+$/, "", rule)
-		if (rule ~ /^[0-9]+\.[0-9]+$/) id = "misra-c2012-" rule
-		else if (rule ~ /^[A-Za-z][A-Za-z0-9_]*$/ && rule != "Rule") id = rule
-		else next
-		globs = $3
-		while (match(globs, /`[^`]+`/)) {
-			print id ":" substr(globs, RSTART + 1, RLENGTH - 2)
-			globs = substr(globs, RSTART + RLENGTH)
-		}
-	}' "$dev" >"$supp"
-fi
+[ "$mode" = check ] && /usr/bin/python3 tests/static/misra_budget.py suppressions "$dev" >"$supp"
 
-run_build() { # name, extra defines...
-	local name=$1; shift
+passed=0
+failed=0
+result() { # ok?, text
+	if [ "$1" = 0 ]; then
+		echo "PASS $2"; passed=$((passed + 1))
+	else
+		echo "FAIL $2"; failed=$((failed + 1))
+	fi
+}
+finding_re='^[^:]+:[0-9]+:[A-Za-z0-9_.-]+:'
+# ids that mean "this file was not (fully) analysed", whatever the file
+broken_ids='^[^:]+:[0-9]+:(internalError|internalAstError|syntaxError|cppcheckError|misra-config|preprocessorErrorDirective|unknownMacro):'
+
+# cppcheck_run TAG BUILD-DIR ARGS... -- FILES...: runs cppcheck; findings in
+# $out/TAG.err; tool failures appended to $out/tool-errors.txt.
+cppcheck_run() {
+	local tag=$1 bdir=$2; shift 2
+	local args=() files=() rc nchecked
+	while [ $# -gt 0 ] && [ "$1" != -- ]; do args+=("$1"); shift; done
+	shift
+	files=("$@")
+	mkdir -p "$bdir"
+	cppcheck --std=c11 --platform=unix64 --enable=warning,style,portability \
+		--addon="$addon" \
+		--template='{file}:{line}:{id}:{severity}:{message}' \
+		--suppress=missingIncludeSystem --suppress=missingInclude \
+		--suppress=unmatchedSuppression \
+		--cppcheck-build-dir="$bdir" -j2 \
+		"${args[@]}" "${files[@]}" 2>"$out/$tag.err" >"$out/$tag.out"
+	rc=$?
+	{
+		[ "$rc" = 0 ] || echo "$tag: cppcheck exited with status $rc"
+		[ "${#files[@]}" -gt 0 ] || echo "$tag: no files to check"
+		grep -vE '^Checking .*\.\.\.$|^[0-9]+/[0-9]+ files checked' "$out/$tag.out" | sed "s|^|$tag: |"
+		grep -vE "$finding_re" "$out/$tag.err" | sed "s|^|$tag: |"
+		grep -E "$broken_ids" "$out/$tag.err" | sed "s|^|$tag: |"
+		nchecked=$(sed -nE 's/^Checking ([^ :]+)(:| \.\.\.).*/\1/p' "$out/$tag.out" | sort -u | wc -l)
+		[ "$nchecked" -ge "${#files[@]}" ] ||
+			echo "$tag: cppcheck checked $nchecked of ${#files[@]} files"
+	} >>"$out/tool-errors.txt"
+}
+
+# run_build NAME SUPPRESS(yes|no) DEFINES...: findings of firmware/ and hal/
+# in $out/findings-NAME.txt (with the deviations applied when SUPPRESS=yes)
+run_build() {
+	local name=$1 sup=$2; shift 2
 	local raw=$out/findings-$name.txt
 	local args=()
 	local g
 
-	[ "$mode" = check ] && args+=(--suppressions-list="$supp")
+	[ "$sup" = yes ] && args+=(--suppressions-list="$supp")
 	: >"$raw.all"
 	for g in "${groups[@]}"; do
-		local bdir=$out/cppcheck-$name-$g
 		local -n gincs=incs_$g
 		local -n gown=own_$g
 		local gfiles
 
 		mapfile -t gfiles < <("files_$g")
-		[ ${#gfiles[@]} -gt 0 ] || continue
-		mkdir -p "$bdir"
-		cppcheck --std=c11 --platform=unix64 --enable=warning,style,portability \
-			--addon=tests/static/misra.json \
-			--template='{file}:{line}:{id}:{severity}:{message}' \
-			--suppress=missingIncludeSystem --suppress=missingInclude \
-			--suppress=unmatchedSuppression \
-			--cppcheck-build-dir="$bdir" -q -j2 \
-			"${incs[@]}" "${gincs[@]}" "$@" "${args[@]}" "${gfiles[@]}" \
-			2>"$raw.g" >/dev/null
+		if [ ${#gfiles[@]} = 0 ]; then
+			# the ECU groups may be absent; the core group never is
+			[ "$g" = core ] && echo "$name-$g: no files checked" >>"$out/tool-errors.txt"
+			continue
+		fi
+		cppcheck_run "cppcheck-$name-$g" "$out/cppcheck-$name-$g" \
+			"${incs[@]}" "${gincs[@]}" "$@" "${args[@]}" -- "${gfiles[@]}"
 		# a group reports on its own files only: the others' headers
 		# are seen through a few of their users there (2.5 "unused
 		# macro" would be judged on a partial program)
-		grep -E "$gown" "$raw.g" >>"$raw.all"
-		grep -vE '^[^:]+:[0-9]+:[A-Za-z0-9_.-]+:' "$raw.g" >>"$raw.all"
+		grep -E "$gown" "$out/cppcheck-$name-$g.err" >>"$raw.all"
 	done
-	rm -f "$raw.g"
 	# only finding lines (file:line:id:...) count
-	grep -E '^[^:]+:[0-9]+:[A-Za-z0-9_.-]+:' "$raw.all" | sort -u >"$raw"
+	grep -E "$finding_re" "$raw.all" | sort -u >"$raw"
 	rm -f "$raw.all"
 }
 
-run_build float
-run_build fixed -DSQUEAL_NUMERIC_FIXED
+: >"$out/tool-errors.txt"
+defs_float=()
+defs_fixed=(-DSQUEAL_NUMERIC_FIXED)
+all_files=()
+for n in $builds; do
+	defs=defs_$n[@]
+	[ "$mode" = check ] && run_build "$n" yes "${!defs}"
+	run_build "$n-all" no "${!defs}"
+	all_files+=("$out/findings-$n-all.txt")
+done
 
 if [ "$mode" = count ]; then
-	sort -u "$out/findings-float.txt" "$out/findings-fixed.txt" >"$out/findings-all.txt"
-	for n in float fixed all; do
-		echo "$n: $(wc -l <"$out/findings-$n.txt") findings"
+	sort -u "${all_files[@]}" >"$out/findings-all.txt"
+	for n in $builds; do
+		echo "$n: $(wc -l <"$out/findings-$n-all.txt") findings"
 	done
+	echo "all: $(wc -l <"$out/findings-all.txt") findings"
 	echo
 	echo "by rule and area (both builds, each finding once):"
 	awk -F: '
@@ -133,21 +189,51 @@ if [ "$mode" = count ]; then
 		}
 		printf "%-22s %5d\n", "TOTAL", total
 	}' "$out/findings-all.txt" | sort -t' ' -k1,1V
+	echo
+	/usr/bin/python3 tests/static/misra_budget.py counts "$dev" "${all_files[@]}"
+	if [ -s "$out/tool-errors.txt" ]; then
+		echo; echo "cppcheck or the addon failed: these counts are incomplete:"
+		sed 's/^/    /' "$out/tool-errors.txt"
+		exit 1
+	fi
 	exit 0
 fi
 
-passed=0
-failed=0
-for n in float fixed; do
+for n in $builds; do
 	c=$(wc -l <"$out/findings-$n.txt")
 	if [ "$c" = 0 ]; then
-		echo "PASS $n: no findings outside docs/misra-deviations.md"
-		passed=$((passed + 1))
+		result 0 "$n: no findings outside $dev"
 	else
-		echo "FAIL $n: $c findings not covered by docs/misra-deviations.md:"
+		result 1 "$n: $c findings not covered by $dev:"
 		sed 's/^/    /' "$out/findings-$n.txt" | head -60
-		failed=$((failed + 1))
 	fi
 done
+
+# budgets: one test per deviation row
+budget=$(/usr/bin/python3 tests/static/misra_budget.py check "$dev" "${all_files[@]}")
+echo "$budget" | grep -vE '^(PASS|BUDGETS)'
+over=$(echo "$budget" | grep -c '^FAIL')
+rows=$(echo "$budget" | grep -c '^PASS')
+passed=$((passed + rows)); failed=$((failed + over))
+echo "deviation budgets: $rows rows within their Count, $over over (make misra-count prints today's counts)"
+
+# the canary: exactly the marked findings, so the addon and every check
+# class are known to run
+cppcheck_run canary "$out/cppcheck-canary" -- "$canary"
+want=$(awk '{ if (match($0, /canary: [A-Za-z0-9_. -]+\*\//)) {
+		n = split(substr($0, RSTART + 8, RLENGTH - 10), ids, " ")
+		for (i = 1; i <= n; i++) print NR ":" ids[i] } }' "$canary" | sort)
+got=$(grep -E "$finding_re" "$out/canary.err" | cut -d: -f2,3 | sort -u)
+missed=$(comm -23 <(echo "$want") <(echo "$got") | tr '\n' ' ')
+extra=$(comm -13 <(echo "$want") <(echo "$got") | tr '\n' ' ')
+result "$([ -n "$want" ] && [ -z "$missed" ] && [ -z "$extra" ] && echo 0 || echo 1)" \
+	"canary: cppcheck + addon flag exactly the $(echo "$want" | grep -c .) marked findings of $canary${missed:+ (missed: $missed)}${extra:+ (unexpected: $extra)}"
+
+if [ -s "$out/tool-errors.txt" ]; then
+	result 1 "cppcheck and the MISRA addon ran cleanly on every file:"
+	sed 's/^/    /' "$out/tool-errors.txt" | head -40
+else
+	result 0 "cppcheck and the MISRA addon ran cleanly on every file"
+fi
 echo "RESULT: $passed passed, $failed failed"
 [ "$failed" = 0 ]
