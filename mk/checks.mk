@@ -18,3 +18,7 @@ TEST_PROGS += tests/demo/test-demo-control.sh
 
 # cppcheck-misra.sh: a missing or failing addon, no files, a row over budget
 TEST_PROGS += tests/static/test-cppcheck-misra-control.sh
+
+# test_unpack_crosscheck.py with an unpacker one bit off / accepting bad frames
+tests/protocol/test-unpack-crosscheck-control.sh: build/test/tests/protocol/unpack_random
+TEST_PROGS += tests/protocol/test-unpack-crosscheck-control.sh

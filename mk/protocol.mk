@@ -6,6 +6,8 @@
 #                                           C descriptor table (host helper)
 #   tests/protocol/check_dbc_vs_c.py        C defines/descriptors == DBC
 #   tests/protocol/test_canmatrix_crosscheck.py  canmatrix decodes our frames
+#   tests/protocol/test_unpack_crosscheck.py     our input unpackers == canmatrix
+#                                           on random frames (unpack_random.c)
 
 PROTOCOL_TEST_BIN := build/test/tests/unit/test_protocol
 PROTOCOL_EMIT := build/test/tests/protocol/emit_frames
@@ -45,3 +47,11 @@ $(PROTOCOL_BENCH): build/host/app/tests/protocol/bench_protocol.o build/host/lib
 	@mkdir -p $(@D)
 	$(CC) $(OPT_host) -o $@ $^
 BENCH_PROGS += $(PROTOCOL_BENCH)
+
+# Input unpackers on random frames vs canmatrix (tests/protocol/unpack_random.c)
+PROTOCOL_UNPACK_RANDOM := build/test/tests/protocol/unpack_random
+$(PROTOCOL_UNPACK_RANDOM): build/test/app/tests/protocol/unpack_random.o build/test/libfirmware.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^
+tests/protocol/test_unpack_crosscheck.py: $(PROTOCOL_UNPACK_RANDOM)
+TEST_PROGS += tests/protocol/test_unpack_crosscheck.py
