@@ -322,6 +322,24 @@ static void test_cross_field_rules(void **state)
 	cal.status_id = cal.disc_speed_id;
 	assert_int_equal(calib_validate(&cal), SQ_EINVAL);
 	assert_int_equal(calib_encode(&cal, buf, sizeof(buf)), SQ_EINVAL);
+	/* every pair of the six CAN identifiers, the last ones included */
+	for (unsigned int i = 0U; i < 6U; i++) {
+		for (unsigned int j = i + 1U; j < 6U; j++) {
+			uint16_t *ids[6];
+
+			calib_default(&cal);
+			ids[0] = &cal.disc_speed_id;
+			ids[1] = &cal.pad_force_id;
+			ids[2] = &cal.status_id;
+			ids[3] = &cal.detail_id;
+			ids[4] = &cal.diag_id;
+			ids[5] = &cal.detail2_id;
+			*ids[j] = *ids[i];
+			if (calib_validate(&cal) != SQ_EINVAL) {
+				fail_msg("identifiers %u and %u equal: accepted", i, j);
+			}
+		}
+	}
 	calib_default(&cal);
 	cal.delta_mu_q30 = -cal.mu_inf_q30 - 1; /* mu_0 < 0 */
 	assert_int_equal(calib_validate(&cal), SQ_EINVAL);
@@ -383,6 +401,12 @@ static void test_header_errors(void **state)
 	assert_int_equal(why, CALIB_ERR_MAGIC);
 	encode_default(buf);
 	put_le(&buf[4], CALIB_VERSION + 1U, 2U);
+	reseal(buf);
+	assert_int_equal(calib_decode(buf, CALIB_BLOCK_LEN, &out, &why), SQ_EBADMSG);
+	assert_int_equal(why, CALIB_ERR_VERSION);
+	/* an older layout is refused too, not read as this one */
+	encode_default(buf);
+	put_le(&buf[4], CALIB_VERSION - 1U, 2U);
 	reseal(buf);
 	assert_int_equal(calib_decode(buf, CALIB_BLOCK_LEN, &out, &why), SQ_EBADMSG);
 	assert_int_equal(why, CALIB_ERR_VERSION);

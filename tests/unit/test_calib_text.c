@@ -121,6 +121,8 @@ static void test_rejects_with_line_numbers(void **state)
 	expect_error("mass_kg = 1\n\nfoo = 3\n", "t.cal:3: unknown key 'foo'");
 	expect_error("# c\nmass_kg = 1\nmass_kg = 2\n",
 		     "t.cal:3: duplicate key 'mass_kg' (first set on line 2)");
+	expect_error("mass_kg = 1\nmass_kg = 2\n",
+		     "t.cal:2: duplicate key 'mass_kg' (first set on line 1)");
 	expect_error("damping = 0.0x\n", "t.cal:1: damping needs a number");
 	expect_error("damping = nan\n", "t.cal:1: damping needs a number");
 	expect_error("damping = inf\n", "t.cal:1: damping needs a number");
@@ -243,6 +245,9 @@ static void test_one_step_beyond_rejected(void **state)
 	expect_error("hyst_lnq = 5.000001\n", "out of range");
 	expect_error("rho_warn = 1.000001\n", "out of range");
 	expect_error("watchdog_ms = 9\n", "out of range");
+	/* 0.7 of a resolution step beyond the end (raw 65534.7): out of
+	 * range, not "not a whole multiple" of the nearest step beyond */
+	expect_error("speed_max_radps = 655.347\n", "speed_max_radps = 655.347 is out of range");
 }
 
 static void roundtrip(const calib_t *cal)
