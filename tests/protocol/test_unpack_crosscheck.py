@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""The firmware's input unpackers against canmatrix, on random frames.
+"""The firmware's unpackers against canmatrix, on random frames.
 
 unpack_random (tests/protocol/unpack_random.c) feeds thousands of random
-frames of every input message through the firmware's unpack functions and
+frames of every input message (and of the outputs SquealStatus, SquealDetail,
+SquealDetail2) through the firmware's unpack functions and
 prints what they returned. Here canmatrix decodes the same bytes from the
 DBC, independently:
   - a frame of the message's DLC whose alive counter is not 15 unpacks
@@ -11,8 +12,8 @@ DBC, independently:
     canmatrix's raw value (E2E CRC and counter included);
   - a frame of any other DLC, or with counter 15 (reserved by E2E P01), is
     refused with SQ_EBADMSG;
-  - every input message of the table appears, each with both outcomes.
-A new input message: one row in unpack_random.c (its DBC name and adapter).
+  - every message of the table appears, each with both outcomes.
+A new message: one row in unpack_random.c (its DBC name and adapter).
 Its DBC: DBC_FOR below when it is not squeal.dbc.
 """
 import os
@@ -94,7 +95,7 @@ def main():
         for outcome in ("ok", "refused"):
             n = seen.get((name, outcome), 0)
             r.check(n >= 100, "%s: %d frames %s" % (name, n, outcome))
-    r.check(len(frames) >= 2, "input messages checked: %s" % sorted(frames))
+    r.check({"DiscSpeed", "PadForce"} <= set(frames), "input messages checked: %s" % sorted(frames))
     r.finish()
 
 

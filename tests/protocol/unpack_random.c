@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Test helper of tests/protocol/test_unpack_crosscheck.py: random frames
- * through the firmware's input unpackers.
+ * through the firmware's unpackers (the inputs, and the outputs that host
+ * tools decode; SquealDiag's pages are covered by the fixed cases).
  *
- *   unpack_random N SEED   for every input message in the table below, N
+ *   unpack_random N SEED   for every message in the table below, N
  *                          random frames (random bytes; one in eight with a
  *                          random DLC 0..8 instead of the message's), each
  *                          printed as
@@ -13,7 +14,7 @@
  *                          bytes beyond the DLC are random too and must be
  *                          ignored).
  * The Python side decodes the same bytes with canmatrix from the DBC and
- * compares. A new input message is one adapter function and one table row.
+ * compares. A new message is one adapter function and one table row.
  */
 #include <inttypes.h>
 #include <stdio.h>
@@ -49,16 +50,62 @@ static int unpack_pad_force(const uint8_t *data, uint8_t dlc)
 	return rc;
 }
 
+/* The outputs' unpackers (host tools decode the monitor's frames with them) */
+static int unpack_squeal_status(const uint8_t *data, uint8_t dlc)
+{
+	msg_squeal_status_t m;
+	int rc = msg_squeal_status_unpack(data, dlc, &m);
+
+	if (rc == SQ_OK) {
+		printf(" SquealStatus_CRC=%u SquealStatus_Counter=%u SquealState=%u WarningLevel=%u"
+		       " BasinRatio=%u HopfMargin_mps=%d", (unsigned int)m.crc, (unsigned int)m.counter,
+		       (unsigned int)m.squeal_state, (unsigned int)m.warning_level,
+		       (unsigned int)m.basin_ratio, (int)m.hopf_margin_mps);
+	}
+	return rc;
+}
+
+static int unpack_squeal_detail(const uint8_t *data, uint8_t dlc)
+{
+	msg_squeal_detail_t m;
+	int rc = msg_squeal_detail_unpack(data, dlc, &m);
+
+	if (rc == SQ_OK) {
+		printf(" SquealDetail_CRC=%u SquealDetail_Counter=%u V0_mps=%u HopfSpeed_mps=%u"
+		       " TriggerVelocity_mps=%u VehicleSpeedBorder_kph=%u", (unsigned int)m.crc,
+		       (unsigned int)m.counter, (unsigned int)m.v0_mps, (unsigned int)m.hopf_speed_mps,
+		       (unsigned int)m.trigger_velocity_mps, (unsigned int)m.vehicle_speed_border_kph);
+	}
+	return rc;
+}
+
+static int unpack_squeal_detail2(const uint8_t *data, uint8_t dlc)
+{
+	msg_squeal_detail2_t m;
+	int rc = msg_squeal_detail2_unpack(data, dlc, &m);
+
+	if (rc == SQ_OK) {
+		printf(" SquealDetail2_CRC=%u SquealDetail2_Counter=%u Force_N=%u HopfForce_N=%u"
+		       " LcAmplitude_um=%u", (unsigned int)m.crc, (unsigned int)m.counter,
+		       (unsigned int)m.force_n, (unsigned int)m.hopf_force_n,
+		       (unsigned int)m.lc_amplitude_um);
+	}
+	return rc;
+}
+
 struct input_msg {
 	const char *dbc_name; /* the message's name in the DBC */
 	uint8_t dlc;          /* its DLC */
 	unpack_print_fn unpack;
 };
 
-/* One row per input message. */
+/* One row per message with an unpacker: the inputs first. */
 static const struct input_msg inputs[] = {
 	{ "DiscSpeed", MSG_DISC_SPEED_DLC, unpack_disc_speed },
 	{ "PadForce", MSG_PAD_FORCE_DLC, unpack_pad_force },
+	{ "SquealStatus", MSG_SQUEAL_STATUS_DLC, unpack_squeal_status },
+	{ "SquealDetail", MSG_SQUEAL_DETAIL_DLC, unpack_squeal_detail },
+	{ "SquealDetail2", MSG_SQUEAL_DETAIL2_DLC, unpack_squeal_detail2 },
 };
 
 static uint64_t rng_state;
