@@ -12,6 +12,8 @@ DBC, independently:
     canmatrix's raw value (E2E CRC and counter included);
   - a frame of any other DLC, or with counter 15 (reserved by E2E P01), is
     refused with SQ_EBADMSG;
+  - the descriptor-driven reader msg_sig_get_raw() (host tools' decode)
+    reads every signal of every frame of the right DLC as canmatrix does;
   - every message of the table appears, each with both outcomes.
 A new message: one row in unpack_random.c (its DBC name and adapter).
 Its DBC: DBC_FOR below when it is not squeal.dbc.
@@ -37,14 +39,17 @@ def parse(line):
     f = line.split()
     name, dlc, data = f[0], int(f[1]), bytes.fromhex(f[2])
     vals = {}
+    generic = {}
     rc = None
     for item in f[3:]:
         k, v = item.split("=", 1)
         if k == "rc":
             rc = int(v)
+        elif k.startswith("@"):
+            generic[k[1:]] = int(v)
         else:
             vals[k] = int(v)
-    return name, dlc, data, vals, rc
+    return name, dlc, data, vals, rc, generic
 
 
 def main():
@@ -56,7 +61,7 @@ def main():
     seen = {}
     mismatches = 0
     for line in out.splitlines():
-        name, dlc, data, vals, rc = parse(line)
+        name, dlc, data, vals, rc, generic = parse(line)
         path = DBC_FOR.get(name, DBC)
         if path not in dbs:
             dbs[path] = load_dbc(path)
@@ -83,6 +88,12 @@ def main():
         else:
             ok = rc == SQ_EBADMSG and not vals
             what = "refused (SQ_EBADMSG): dlc %d, counter %s; got rc=%s %s" % (dlc, counter, rc, vals)
+        # msg_sig_get_raw: every signal of a frame of the right DLC, counter
+        # 15 included (it reads signals, it does not judge the frame)
+        want_generic = {s: int(d.raw_value) for s, d in decoded.items()} if good_dlc else {}
+        if generic != want_generic:
+            ok = False
+            what += "; msg_sig_get_raw read %s, canmatrix %s" % (generic, want_generic)
         if not ok:
             mismatches += 1
             if mismatches <= 20:

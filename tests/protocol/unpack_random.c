@@ -8,11 +8,12 @@
  *                          random frames (random bytes; one in eight with a
  *                          random DLC 0..8 instead of the message's), each
  *                          printed as
- *                            <DBC message> <dlc> <8 bytes hex> [Signal=raw ...] rc=<rc>
+ *                            <DBC message> <dlc> <8 bytes hex> [Signal=raw ...] rc=<rc> [@Signal=raw ...]
  *                          with the raw value of every DBC signal the
  *                          unpacker returned (only when rc is SQ_OK; the
  *                          bytes beyond the DLC are random too and must be
- *                          ignored).
+ *                          ignored), then what the descriptor-driven
+ *                          msg_sig_get_raw() reads (any frame of the DLC).
  * The Python side decodes the same bytes with canmatrix from the DBC and
  * compares. A new message is one adapter function and one table row.
  */
@@ -95,18 +96,35 @@ static int unpack_squeal_detail2(const uint8_t *data, uint8_t dlc)
 
 struct input_msg {
 	const char *dbc_name; /* the message's name in the DBC */
+	uint16_t id;          /* its identifier (descriptor table) */
 	uint8_t dlc;          /* its DLC */
 	unpack_print_fn unpack;
 };
 
 /* One row per message with an unpacker: the inputs first. */
 static const struct input_msg inputs[] = {
-	{ "DiscSpeed", MSG_DISC_SPEED_DLC, unpack_disc_speed },
-	{ "PadForce", MSG_PAD_FORCE_DLC, unpack_pad_force },
-	{ "SquealStatus", MSG_SQUEAL_STATUS_DLC, unpack_squeal_status },
-	{ "SquealDetail", MSG_SQUEAL_DETAIL_DLC, unpack_squeal_detail },
-	{ "SquealDetail2", MSG_SQUEAL_DETAIL2_DLC, unpack_squeal_detail2 },
+	{ "DiscSpeed", MSG_DISC_SPEED_ID, MSG_DISC_SPEED_DLC, unpack_disc_speed },
+	{ "PadForce", MSG_PAD_FORCE_ID, MSG_PAD_FORCE_DLC, unpack_pad_force },
+	{ "SquealStatus", MSG_SQUEAL_STATUS_ID, MSG_SQUEAL_STATUS_DLC, unpack_squeal_status },
+	{ "SquealDetail", MSG_SQUEAL_DETAIL_ID, MSG_SQUEAL_DETAIL_DLC, unpack_squeal_detail },
+	{ "SquealDetail2", MSG_SQUEAL_DETAIL2_ID, MSG_SQUEAL_DETAIL2_DLC, unpack_squeal_detail2 },
 };
+
+/* The descriptor-driven reader (host tools' decode): " @Signal=raw" for
+ * every signal it reads from this frame. */
+static void print_generic(uint16_t id, const uint8_t *data, uint8_t dlc)
+{
+	const msg_desc_t *m = msg_desc_find(id);
+
+	for (unsigned int j = 0U; m != NULL && j < m->sig_count; j++) {
+		const msg_sig_desc_t *sig = &msg_sig_table[m->sig_first + j];
+		int32_t raw;
+
+		if (msg_sig_get_raw(sig, data, dlc, &raw) == SQ_OK) {
+			printf(" @%s=%" PRId32, sig->name, raw);
+		}
+	}
+}
 
 static uint64_t rng_state;
 
@@ -145,7 +163,9 @@ int main(int argc, char **argv)
 				printf("%02X", (unsigned int)d[b]);
 			}
 			rc = inputs[k].unpack(d, dlc);
-			printf(" rc=%d\n", rc);
+			printf(" rc=%d", rc);
+			print_generic(inputs[k].id, d, dlc);
+			printf("\n");
 		}
 	}
 	return 0;
