@@ -4,6 +4,7 @@
 #   build/<v>/test_monitor        braking manoeuvre, warning levels, debounce,
 #                                 periodic TX and E2E of every outgoing frame
 #   build/<v>/test_monitor_faults every input fault, through protected frames
+#   build/<v>/test_monitor_bounds each rule exactly at its bound (make mutate)
 #   build/<v>/test_calib          calibration block: CRC-32, round trip, ranges
 #   build/<v>/test_app            scheduler + HAL: calibration storage, CAN
 #                                 status, bus-off, TX queue full, watchdog
@@ -13,7 +14,7 @@
 #   build/host/monitor_step_cost  callgrind driver (make monitor-cost)
 
 MONITOR_TEST_VARIANTS := test test-fixed
-MONITOR_TESTS := test_monitor test_monitor_faults test_calib test_app
+MONITOR_TESTS := test_monitor test_monitor_faults test_calib test_app test_monitor_bounds
 MONITOR_EXPECT_H := build/monitor/monitor_expect.h
 
 $(MONITOR_EXPECT_H): tests/monitor/gen_monitor_expect.py tests/reference/squeal_reference.py firmware/protocol/squeal.dbc

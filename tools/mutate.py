@@ -38,7 +38,8 @@ MODEL_TESTS = ["build/test/test_model", "build/test-fixed/test_model",
                "build/test/test_model_props", "build/test-fixed/test_model_props"]
 MONITOR_TESTS = ["build/test/test_monitor", "build/test-fixed/test_monitor",
                  "build/test/test_monitor_faults", "build/test-fixed/test_monitor_faults",
-                 "build/test/test_app", "build/test-fixed/test_app"]
+                 "build/test/test_app", "build/test-fixed/test_app",
+                 "build/test/test_monitor_bounds", "build/test-fixed/test_monitor_bounds"]
 CALIB_TESTS = ["build/test/test_calib", "build/test-fixed/test_calib",
                "build/test/test_calib_text"]
 PROTOCOL_TESTS = ["build/test/tests/unit/test_protocol",
