@@ -30,3 +30,8 @@ golden:
 
 # The reference against model.md, and the golden file against the reference.
 TEST_PROGS += tests/reference/check_golden.py
+
+# fixmath against libm at its documented accuracy (fixed build only)
+build/test-fixed/test_fixmath: build/test-fixed/app/tests/unit/test_fixmath.o build/test-fixed/libfirmware.a
+	$(CC) $(OPT_test-fixed) -o $@ $^ -lcmocka -lm
+TEST_PROGS += build/test-fixed/test_fixmath
