@@ -35,3 +35,11 @@ TEST_PROGS += tests/reference/check_golden.py
 build/test-fixed/test_fixmath: build/test-fixed/app/tests/unit/test_fixmath.o build/test-fixed/libfirmware.a
 	$(CC) $(OPT_test-fixed) -o $@ $^ -lcmocka -lm
 TEST_PROGS += build/test-fixed/test_fixmath
+
+# the model adapter's integer view at its rounding rules, both builds
+define model_adapter_test_rules
+build/$(1)/test_model_adapter: build/$(1)/app/tests/unit/test_model_adapter.o $$(patsubst %.c,build/$(1)/app/%.o,$$(MODEL_TEST_SUPPORT)) build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,$(MODEL_TEST_VARIANTS),$(eval $(call model_adapter_test_rules,$(v))))
+TEST_PROGS += $(foreach v,$(MODEL_TEST_VARIANTS),build/$(v)/test_model_adapter)
