@@ -11,7 +11,9 @@
  *   - v0 and force exactly at their calibrated minimum are classified (mon-9);
  *   - HopfForce_N is rounded to the nearest newton, not truncated (mon-8);
  *   - SquealDiag's 16-bit counters saturate at 65535, and 65535 itself is
- *     sent as 65535 (mon-12).
+ *     sent as 65535 (mon-12);
+ *   - a BISTABLE basin ratio exactly at rho_warn is an ADVISORY, one ppm
+ *     below it a WARNING (mon-13).
  * Expected values are hand-derived from the DBC scaling and the calibration.
  */
 #include <setjmp.h>
@@ -197,6 +199,41 @@ static void test_minimum_speed_and_force_inclusive(void **state)
 	assert_int_equal(state_with(&cal), MSG_SQUEAL_STATE_NOT_SLIDING);
 }
 
+/* warning level of the last SquealStatus (bits 16..19) at 1.8 m/s, 9 kN
+ * (BISTABLE with the default brake), with rho_warn = rho_warn_ppm */
+static uint8_t warning_at_1_8mps(uint32_t rho_warn_ppm, int32_t *ratio_ppm)
+{
+	calib_t cal;
+	const hal_can_frame_t *f;
+
+	calib_default(&cal);
+	cal.rho_warn_ppm = rho_warn_ppm;
+	boot(&cal);
+	for (uint32_t k = 0U; k < 12U; k++) {
+		assert_int_equal(test_send_pair(&snd, 1500U, FORCE_RAW,
+						T0_US + 5000U + IN_PERIOD_US * k), SQ_OK);
+	}
+	run_to(T0_US + 120000U);
+	assert_int_equal(last_state(), MSG_SQUEAL_STATE_BISTABLE);
+	*ratio_ppm = squeal_app_monitor()->eval.basin_ratio_ppm;
+	f = test_hal_tx_last(EXP_DBC_SQUEALSTATUS_ID);
+	assert_non_null(f);
+	return (uint8_t)test_frame_sig(f->data, 16, 4);
+}
+
+static void test_rho_warn_threshold_exclusive(void **state)
+{
+	int32_t rho;
+	int32_t again;
+
+	(void)state;
+	(void)warning_at_1_8mps(500000U, &rho);
+	assert_true((rho > 0) && (rho < 1000000));
+	assert_int_equal(warning_at_1_8mps((uint32_t)rho, &again), MSG_WARNING_LEVEL_ADVISORY);
+	assert_int_equal(again, rho);
+	assert_int_equal(warning_at_1_8mps((uint32_t)rho + 1U, &again), MSG_WARNING_LEVEL_WARNING);
+}
+
 /* HopfForce_N (1 N per bit, SquealDetail2 bits 32..47) is the model's
  * border force in mN rounded to the nearest N: over a few speeds around
  * 0.5 m/s (N_H about 2 kN there, inside the signal's range), at least one
@@ -272,6 +309,7 @@ int main(void)
 		cmocka_unit_test(test_minimum_speed_and_force_inclusive),
 		cmocka_unit_test(test_hopf_force_rounded_to_nearest),
 		cmocka_unit_test(test_diag_counters_saturate_at_16_bits),
+		cmocka_unit_test(test_rho_warn_threshold_exclusive),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
