@@ -6,11 +6,8 @@
 set -u
 cd "$(dirname "$0")/../.."
 out=build/demo-control
-pass=0; fail=0
-check() { # description, condition...
-	local d=$1; shift
-	if "$@"; then pass=$((pass + 1)); echo "PASS: $d"; else fail=$((fail + 1)); echo "FAIL: $d"; fi
-}
+# shellcheck source=tests/support/checks.sh
+. tests/support/checks.sh
 # a stale, valid picture: the one a real run draws
 DEMO_OUT=$out tools/demo.sh >/dev/null 2>&1
 check "setup: a real run leaves a picture" [ -s "$out/drive_map.png" ]
@@ -21,5 +18,4 @@ check "no picture: test_demo fails (exit $rc)" [ "$rc" != 0 ]
 check "no picture: 'picture written' fails" grep -qx 'FAILED: picture written' <<<"$res"
 check "no picture: 'picture not blank' fails" grep -qx 'FAILED: picture not blank' <<<"$res"
 check "no picture: nothing else fails" grep -qx 'RESULT: 3 passed, 2 failed' <<<"$res"
-echo "RESULT: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+checks_done

@@ -5,11 +5,8 @@
 # CI=true, a failure; never a silent line. Prints "RESULT: N passed, M failed".
 set -u
 cd "$(dirname "$0")/../.."
-pass=0; fail=0
-check() { # description, condition...
-	local d=$1; shift
-	if "$@"; then pass=$((pass + 1)); echo "PASS: $d"; else fail=$((fail + 1)); echo "FAIL: $d"; fi
-}
+# shellcheck source=tests/support/checks.sh
+. tests/support/checks.sh
 missing=build/no-such-dir/squeal-monitor.elf
 out=$(CI= CALIB_ELFS=$missing tests/static/check-calib-write-path.sh 2>&1)
 rc=$?
@@ -23,5 +20,4 @@ echo "$out" | sed 's/^/  CI    | /'
 check "missing image in CI: a failure naming it" grep -q "^FAIL $missing built" <<<"$out"
 check "missing image in CI: RESULT 1 failed, 0 skipped" grep -qE '^RESULT: [0-9]+ passed, 1 failed, 0 skipped$' <<<"$out"
 check "missing image in CI: exit non-zero (exit $rc)" [ "$rc" != 0 ]
-echo "RESULT: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+checks_done

@@ -12,11 +12,8 @@ set -u
 cd "$(dirname "$0")/../.."
 tmp=$(mktemp -d build/misra-control.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
-pass=0; fail=0
-check() { # description, condition...
-	local d=$1; shift
-	if "$@"; then pass=$((pass + 1)); echo "PASS: $d"; else fail=$((fail + 1)); echo "FAIL: $d"; fi
-}
+# shellcheck source=tests/support/checks.sh
+. tests/support/checks.sh
 misra() { # case, env...: runs the check on firmware/protocol -> $tmp/case.txt, returns its exit
 	local c=$1; shift
 	env MISRA_OUT="$tmp/$c" MISRA_BUILDS=float MISRA_GROUPS=core MISRA_CORE_DIRS=firmware/protocol \
@@ -54,5 +51,4 @@ check "deviation over budget: fails (exit $rc)" [ "$rc" != 0 ]
 check "deviation over budget: row, findings and budget named" \
 	has budget '^FAIL deviation 15\.5 in firmware/\* .*: [0-9]+ findings, budget 1 '
 check "deviation over budget: the only failure" has budget '^RESULT: [0-9]+ passed, 1 failed$'
-echo "RESULT: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+checks_done

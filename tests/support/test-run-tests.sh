@@ -9,11 +9,8 @@ set -u
 cd "$(dirname "$0")/../.."
 tmp=$(mktemp -d build/run-tests-selftest.XXXXXX 2>/dev/null || { mkdir -p build; mktemp -d build/run-tests-selftest.XXXXXX; })
 trap 'rm -rf "$tmp"' EXIT
-pass=0; fail=0
-check() { # description, command...
-	local d=$1; shift
-	if "$@"; then pass=$((pass + 1)); echo "PASS: $d"; else fail=$((fail + 1)); echo "FAIL: $d"; fi
-}
+# shellcheck source=tests/support/checks.sh
+. tests/support/checks.sh
 fake() { # name, body
 	printf '#!/bin/sh\n%s\n' "$2" >"$tmp/$1"; chmod +x "$tmp/$1"
 }
@@ -57,5 +54,4 @@ check "CI: an unexpected skip fails the run (exit $rc)" [ "$rc" != 0 ]
 check "CI: a row without a reason covers nothing; unnamed skip unexpected (got: $(last "$tmp/ci-bad"))" \
 	[ "$(last "$tmp/ci-bad")" = "4 passed, 2 failed, 1 skipped" ]
 check "CI: the unexpected skip is named" grep -q '^  .*/skips: widget check (no widget)' "$tmp/ci-bad"
-echo "RESULT: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+checks_done

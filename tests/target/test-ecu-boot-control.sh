@@ -11,11 +11,8 @@ set -u
 cd "$(dirname "$0")/../.."
 tmp=$(mktemp -d build/ecu-boot-control.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
-pass=0; fail=0
-check() { # description, condition...
-	local d=$1; shift
-	if "$@"; then pass=$((pass + 1)); echo "PASS: $d"; else fail=$((fail + 1)); echo "FAIL: $d"; fi
-}
+# shellcheck source=tests/support/checks.sh
+. tests/support/checks.sh
 run_stub() { # mode -> $tmp/<mode>.out
 	QEMU_ARM=tests/target/stub-qemu-arm.sh STUB_ECU=$1 ECU_BOOT_LOGDIR=$tmp/$1 \
 		tests/target/run-ecu-boot.sh >"$tmp/$1.out" 2>&1
@@ -42,5 +39,4 @@ check "bad boot: exactly the six checks of the wrong values fail (got: $(echo "$
 n_good=$(sed -nE 's/^RESULT: ([0-9]+) passed.*/\1/p' "$tmp/good.out")
 check "bad boot: RESULT $((n_good - 6)) passed, 6 failed" \
 	grep -qx "RESULT: $((n_good - 6)) passed, 6 failed" "$tmp/bad.out"
-echo "RESULT: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+checks_done

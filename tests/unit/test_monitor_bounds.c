@@ -29,6 +29,7 @@
 #include "monitor_expect.h"
 #include "sq_status.h"
 #include "squeal_app.h"
+#include "test_app_drive.h"
 #include "test_hal.h"
 
 #define T0_US 1000000ULL
@@ -41,49 +42,25 @@ static test_sender_t snd;
 
 static void boot(const calib_t *cal)
 {
-	uint8_t buf[CALIB_BLOCK_LEN];
-
-	test_hal_reset();
-	test_hal_set_time_us(T0_US);
-	if (cal != NULL) {
-		assert_int_equal(calib_encode(cal, buf, sizeof(buf)), SQ_OK);
-		test_hal_calib_store(buf, sizeof(buf));
-	}
-	assert_int_equal(squeal_app_init(), SQ_OK);
-	(void)squeal_app_poll();
+	test_app_boot(cal, T0_US);
 	test_sender_init(&snd);
 }
 
 static void run_to(uint64_t t_us)
 {
-	while (hal_time_us() < t_us) {
-		test_hal_advance_us(1000U);
-		(void)squeal_app_poll();
-	}
+	test_app_run_to(t_us);
 }
 
-/* The first SquealStatus at or after t_us whose state is (want) or is not
- * (!want) st; its time, or 0. */
+/* The first SquealStatus (state: bits 12..15) at or after t_us whose state
+ * is (want) or is not (!want) st; its time, or 0. */
 static uint64_t first_status(uint64_t t_us, uint8_t st, bool want)
 {
-	int32_t i = -1;
-
-	while ((i = test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, (uint32_t)(i + 1))) >= 0) {
-		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
-
-		if ((f->timestamp_us >= t_us) && ((test_frame_sig(f->data, 12, 4) == st) == want)) {
-			return f->timestamp_us;
-		}
-	}
-	return 0U;
+	return test_app_tx_first(EXP_DBC_SQUEALSTATUS_ID, t_us, 12U, 4U, st, want);
 }
 
 static uint8_t last_state(void)
 {
-	const hal_can_frame_t *f = test_hal_tx_last(EXP_DBC_SQUEALSTATUS_ID);
-
-	assert_non_null(f);
-	return (uint8_t)test_frame_sig(f->data, 12, 4);
+	return (uint8_t)test_app_tx_last_sig(EXP_DBC_SQUEALSTATUS_ID, 12U, 4U);
 }
 
 /* Inputs off the 1 ms grid (+500 us). A frame handled before the next tick
