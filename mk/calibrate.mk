@@ -19,3 +19,10 @@ TEST_PROGS += $(foreach v,$(SIGMA_TEST_VARIANTS),build/$(v)/test_sigma)
 .PHONY: sigma-golden
 sigma-golden:
 	$(PYTHON) tests/reference/gen_sigma_reference.py -o tests/golden/sigma_vectors.csv
+
+# The fitting tools (numpy/scipy). The CLI test also runs today's
+# `squeal-sim replay --calib` on a written calibration.
+CALIB_FIT_TESTS := tests/calibrate/test_fit_friction.py tests/calibrate/test_fit_modal.py \
+	tests/calibrate/test_fit_cli.py
+tests/calibrate/test_fit_cli.py: build/host/squeal-sim
+TEST_PROGS += $(CALIB_FIT_TESTS)
