@@ -26,3 +26,16 @@ CALIB_FIT_TESTS := tests/calibrate/test_fit_friction.py tests/calibrate/test_fit
 	tests/calibrate/test_fit_cli.py
 tests/calibrate/test_fit_cli.py: build/host/squeal-sim
 TEST_PROGS += $(CALIB_FIT_TESTS)
+
+# `make plots` also draws the documented calibration example (README,
+# "Calibrating a brake"): the two fits and the map with its border bands.
+CALIB_EX := docs/examples
+CALIB_EX_DYNO := --pad-radius-m 0.12 --piston-area-mm2 2000 --faces 2
+CALIB_EX_MASS := --mass-kg 0.9 --mass-sd-kg 0.01
+.PHONY: plots-calib
+plots-calib: deps-demo
+	@mkdir -p build/plots
+	$(PYTHON) tools/fit_friction.py $(CALIB_EX)/dyno.csv $(CALIB_EX_DYNO) --base docs/calib-example.txt -o build/plots/example-friction.cal --plot build/plots/calib_friction.png
+	$(PYTHON) tools/fit_modal.py $(CALIB_EX)/tap_test.wav $(CALIB_EX_MASS) --base build/plots/example-friction.cal -o build/plots/example-brake.cal --plot build/plots/calib_tap_test.png
+	$(PYTHON) tools/plots/plot_calib_bands.py build/plots/example-brake.cal --out build/plots
+plots: plots-calib

@@ -147,3 +147,19 @@ def write_calib(path, values, comments, base=None, header=()):
     else:
         with open(path, "w", encoding="utf-8") as f:
             f.write(text)
+
+
+def read_calib(path):
+    """The key = value pairs of a calibration text file (values as text;
+    comments and blank lines skipped). Refuses a line without '='."""
+    out = {}
+    with open(path, encoding="utf-8") as f:
+        for n, ln in enumerate(f, 1):
+            body = ln.split("#", 1)[0].strip()
+            if not body:
+                continue
+            if "=" not in body:
+                raise Refusal(f"{path}:{n}: expected 'key = value'")
+            k, v = (x.strip() for x in body.split("=", 1))
+            out[k] = v
+    return out

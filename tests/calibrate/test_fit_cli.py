@@ -13,7 +13,8 @@
     their standard deviations, --base keeps every other line of the base
     file; --no-sd output is accepted by today's `squeal-sim replay --calib`;
   - the example files in docs/examples are exactly what
-    tools/gen_calib_examples.py generates.
+    tools/gen_calib_examples.py generates, example-brake.cal what the two
+    fits write from them, and its band picture states agreement within 5 %.
 """
 
 import filecmp
@@ -188,6 +189,27 @@ def examples_reproducible(c, tmp):
         c.check(same, f"docs/examples/{name} is what tools/gen_calib_examples.py generates")
 
 
+def example_calibration(c, tmp):
+    """docs/examples/example-brake.cal is what `make plots-calib` writes,
+    and its map's first-order band agrees with Monte Carlo (the picture's
+    own statement, 5 % in N)."""
+    ex = os.path.join(ROOT, "docs", "examples")
+    step1 = os.path.join(tmp, "ex1.cal")
+    step2 = os.path.join(tmp, "example-brake.cal")
+    run([FRICTION, os.path.join(ex, "dyno.csv")] + DYNO +
+        ["--base", os.path.join(ROOT, "docs", "calib-example.txt"), "-o", step1])
+    run([MODAL, os.path.join(ex, "tap_test.wav"), "--mass-kg", "0.9", "--mass-sd-kg", "0.01",
+         "--base", step1, "-o", step2])
+    c.check(filecmp.cmp(step2, os.path.join(ex, "example-brake.cal"), shallow=False),
+            "docs/examples/example-brake.cal is what the two fits write (make plots-calib)")
+    r = run([os.path.join(TOOLS, "plots", "plot_calib_bands.py"),
+             os.path.join(ex, "example-brake.cal"), "--out", tmp, "--samples", "4000"])
+    last = r.stdout.strip().splitlines()[-1] if r.stdout.strip() else r.stderr.strip()
+    c.check(r.returncode == 0 and "agree within 5 %" in last and
+            os.path.getsize(os.path.join(tmp, "calib_bands.png")) > 10000,
+            f"plot_calib_bands: {last}")
+
+
 def main():
     c = Checks()
     with tempfile.TemporaryDirectory() as tmp:
@@ -195,6 +217,7 @@ def main():
         modal_refusals(c, tmp)
         outputs(c, tmp)
         examples_reproducible(c, tmp)
+        example_calibration(c, tmp)
     return c.finish()
 
 
