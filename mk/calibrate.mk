@@ -14,7 +14,7 @@ build/$(1)/test_sigma: build/$(1)/app/tests/unit/test_sigma.o build/$(1)/app/tes
 endef
 $(foreach v,$(SIGMA_TEST_VARIANTS),$(eval $(call sigma_test_rules,$(v))))
 
-TEST_PROGS += $(foreach v,$(SIGMA_TEST_VARIANTS),build/$(v)/test_sigma)
+TEST_PROGS += $(foreach v,$(SIGMA_TEST_VARIANTS),build/$(v)/test_sigma) tests/reference/check_sigma_golden.py
 
 .PHONY: sigma-golden
 sigma-golden:
