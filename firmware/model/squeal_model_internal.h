@@ -5,6 +5,18 @@
 
 #include "squeal_model.h"
 
+/* Which of the domain rules of squeal_model.h a calibration and an
+ * operating point fall under (both non-NULL). */
+typedef enum {
+	SQUEAL_CASE_INVALID,     /* outside the documented domain          */
+	SQUEAL_CASE_NOT_SLIDING, /* v0 == 0 or N == 0                      */
+	SQUEAL_CASE_NO_BORDER,   /* a == 0 or dmu <= 0: stable, no border   */
+	SQUEAL_CASE_SLIDING      /* v0, N, a, dmu > 0: the borders exist    */
+} squeal_case_t;
+
+squeal_case_t squeal_model_case(const squeal_params_t *params,
+				const squeal_point_t *point);
+
 /* A result with this state, no flags and every value 0. */
 void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state);
 

@@ -15,12 +15,14 @@
 #define MU_SD_MAX 1.5f
 #endif
 
+#define NUM_ZERO ((squeal_num_t)0)
+
 /* 0 <= sd <= |value| (false for NaN in the float build) */
 static bool sd_within(squeal_num_t sd, squeal_num_t value)
 {
-	const squeal_num_t mag = (value < 0) ? -value : value;
+	const squeal_num_t mag = (value < NUM_ZERO) ? -value : value;
 
-	return (sd >= 0) && (sd <= mag);
+	return (sd >= NUM_ZERO) && (sd <= mag);
 }
 
 void squeal_sigma_sd_zero(squeal_param_sd_t *sd)
@@ -104,24 +106,34 @@ int squeal_sigma_eval(const squeal_params_t *params,
 		      const squeal_point_t *point,
 		      squeal_sigma_result_t *out)
 {
+	squeal_case_t c;
+	bool unstable;
+	bool stable;
+
 	if ((params == NULL) || (sd == NULL) || (point == NULL) || (out == NULL)) {
 		return SQ_EINVAL;
 	}
-	if ((squeal_model_params_check(params) != SQ_OK) ||
-	    (squeal_model_point_check(point) != SQ_OK) ||
-	    (squeal_sigma_sd_check(params, sd) != SQ_OK)) {
+	c = squeal_model_case(params, point);
+	if ((c == SQUEAL_CASE_INVALID) || (squeal_sigma_sd_check(params, sd) != SQ_OK)) {
 		result_clear(out, SQUEAL_STATE_INVALID);
 		return SQ_EINVAL;
 	}
-	if ((point->v0_mps == 0) || (point->force_n == 0)) {
+	if (c == SQUEAL_CASE_NOT_SLIDING) {
 		result_clear(out, SQUEAL_STATE_NOT_SLIDING);
 		return SQ_OK;
 	}
-	/* friction that does not fall with speed: stable, no border */
 	result_clear(out, SQUEAL_STATE_STABLE);
-	if ((params->slope_spm == 0) || (params->delta_mu <= 0)) {
+	if (c == SQUEAL_CASE_NO_BORDER) {
 		return SQ_OK;
 	}
-	squeal_sigma_borders(params, sd, point, out);
+	/* the same decisions as squeal_model_classify_sliding (exact) */
+	squeal_sigma_borders(params, sd, point, out, &unstable, &stable);
+	if (unstable) {
+		out->state = SQUEAL_STATE_UNSTABLE;
+	} else if (stable) {
+		out->state = SQUEAL_STATE_STABLE;
+	} else {
+		out->state = SQUEAL_STATE_BISTABLE;
+	}
 	return squeal_sigma_margin(out, out->state, &out->margin_sigma);
 }

@@ -56,7 +56,7 @@ static int64_t shift_down(int64_t x, int32_t sh)
  * |e| < 2^44), rho Q30. Returns the sigma, sets *sat when it exceeds
  * SQUEAL_Q_SIGMA's range.
  */
-static int32_t combine(const int64_t r[4], int64_t e, int32_t rho, int64_t r_dmu,
+static int32_t combine_q32(const int64_t r[4], int64_t e, int32_t rho, int64_t r_dmu,
 		       bool *sat)
 {
 	uint64_t biggest = mag(e);
@@ -102,7 +102,8 @@ static int32_t combine(const int64_t r[4], int64_t e, int32_t rho, int64_t r_dmu
 }
 
 void squeal_sigma_borders(const squeal_params_t *p, const squeal_param_sd_t *sd,
-			  const squeal_point_t *point, squeal_sigma_result_t *out)
+			  const squeal_point_t *point, squeal_sigma_result_t *out,
+			  bool *unstable, bool *stable)
 {
 	squeal_log_terms_t t;
 	int64_t h;
@@ -132,21 +133,19 @@ void squeal_sigma_borders(const squeal_params_t *p, const squeal_param_sd_t *sd,
 	r[3] = rel_q32(sd->delta_mu_sd, p->delta_mu);
 	r_a = rel_q32(sd->slope_spm_sd, p->slope_spm);
 	/* a dg_H/da = s - 1;  a dg_S/da = -s H'(s) - 1 */
-	out->sigma_hopf = combine(r, mul_q32(t.s - Q32_ONE, r_a),
+	out->sigma_hopf = combine_q32(r, mul_q32(t.s - Q32_ONE, r_a),
 				  sd->slope_delta_mu_corr, r[3], &sat);
-	out->sigma_stable = combine(r, mul_q32(-mul_q32(t.s, dh) - Q32_ONE, r_a),
+	out->sigma_stable = combine_q32(r, mul_q32(-mul_q32(t.s, dh) - Q32_ONE, r_a),
 				    sd->slope_delta_mu_corr, r[3], &sat);
 	out->g_hopf = fx_q32_to_i32(g_hopf, SQUEAL_Q_LNQ, &sat_g);
 	out->g_stable = fx_q32_to_i32(g_stable, SQUEAL_Q_LNQ, &sat_g);
-	out->flags = SQUEAL_SIGMA_HAS_BORDERS | (sat ? SQUEAL_SIGMA_SAT : 0U);
-	/* the same comparisons as squeal_model_classify_sliding (exact) */
-	if (g_hopf <= 0) {
-		out->state = SQUEAL_STATE_UNSTABLE;
-	} else if (t.c2 >= h) {
-		out->state = SQUEAL_STATE_STABLE;
-	} else {
-		out->state = SQUEAL_STATE_BISTABLE;
+	out->flags = SQUEAL_SIGMA_HAS_BORDERS;
+	if (sat) {
+		out->flags |= SQUEAL_SIGMA_SAT;
 	}
+	/* the same comparisons as squeal_model_classify_sliding (exact) */
+	*unstable = !(g_hopf > 0);
+	*stable = t.c2 >= h;
 }
 
 squeal_num_t squeal_sigma_distance(squeal_num_t g, squeal_num_t sigma)

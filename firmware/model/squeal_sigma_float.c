@@ -13,7 +13,7 @@
 
 /* sqrt(base + e^2 - 2 rho e r_dmu); >= 0 mathematically for |rho| <= 1,
  * clamped against rounding */
-static float combine(float base, float e, float rho, float r_dmu)
+static float combine_f(float base, float e, float rho, float r_dmu)
 {
 	const float var = base + e * e - 2.0f * rho * e * r_dmu;
 
@@ -21,7 +21,8 @@ static float combine(float base, float e, float rho, float r_dmu)
 }
 
 void squeal_sigma_borders(const squeal_params_t *p, const squeal_param_sd_t *sd,
-			  const squeal_point_t *point, squeal_sigma_result_t *out)
+			  const squeal_point_t *point, squeal_sigma_result_t *out,
+			  bool *unstable, bool *stable)
 {
 	squeal_log_terms_t t;
 	float g;
@@ -41,17 +42,12 @@ void squeal_sigma_borders(const squeal_params_t *p, const squeal_param_sd_t *sd,
 	out->g_stable = t.c2 - h;
 	base = r_m * r_m + r_w0 * r_w0 + r_d * r_d + r_dmu * r_dmu;
 	/* a dg_H/da = s - 1;  a dg_S/da = -s H'(s) - 1, H' = G' - 1 */
-	out->sigma_hopf = combine(base, r_a * (t.s - 1.0f), rho, r_dmu);
-	out->sigma_stable = combine(base, r_a * (-t.s * (dg - 1.0f) - 1.0f), rho, r_dmu);
+	out->sigma_hopf = combine_f(base, r_a * (t.s - 1.0f), rho, r_dmu);
+	out->sigma_stable = combine_f(base, r_a * (-t.s * (dg - 1.0f) - 1.0f), rho, r_dmu);
 	out->flags = SQUEAL_SIGMA_HAS_BORDERS;
 	/* the same comparisons as squeal_model_classify_sliding (exact) */
-	if (!(out->g_hopf > 0.0f)) {
-		out->state = SQUEAL_STATE_UNSTABLE;
-	} else if (t.c2 >= h) {
-		out->state = SQUEAL_STATE_STABLE;
-	} else {
-		out->state = SQUEAL_STATE_BISTABLE;
-	}
+	*unstable = !(out->g_hopf > 0.0f);
+	*stable = t.c2 >= h;
 }
 
 squeal_num_t squeal_sigma_distance(squeal_num_t g, squeal_num_t sigma)

@@ -122,6 +122,23 @@ static double rel_err(double got, double want)
 	return fabs(got / want - 1.0);
 }
 
+/* Row i through squeal_sigma_eval (must succeed, with borders); its
+ * calibration and point into p and pt. */
+static void eval_row(int i, squeal_params_t *p, squeal_point_t *pt,
+		     squeal_sigma_result_t *out)
+{
+	squeal_param_sd_t sd;
+
+	row_inputs(rows[i], p, &sd, pt);
+	assert_int_equal(squeal_sigma_eval(p, &sd, pt, out), SQ_OK);
+	assert_true((out->flags & SQUEAL_SIGMA_HAS_BORDERS) != 0U);
+}
+
+static double sigma_of(squeal_num_t v)
+{
+	return sq_num_to_double(v, SQUEAL_Q_SIGMA);
+}
+
 static void test_sigma_agrees_with_monte_carlo(void **state)
 {
 	double worst_h = 0.0;
@@ -134,17 +151,14 @@ static void test_sigma_agrees_with_monte_carlo(void **state)
 	(void)state;
 	for (i = 0; i < n_rows; i++) {
 		squeal_params_t p;
-		squeal_param_sd_t sd;
 		squeal_point_t pt;
 		squeal_sigma_result_t out;
 		double eh;
 		double es;
 
-		row_inputs(rows[i], &p, &sd, &pt);
-		assert_int_equal(squeal_sigma_eval(&p, &sd, &pt, &out), SQ_OK);
-		assert_true((out.flags & SQUEAL_SIGMA_HAS_BORDERS) != 0U);
-		eh = rel_err(sq_num_to_double(out.sigma_hopf, SQUEAL_Q_SIGMA), rows[i][C_SH_MC]);
-		es = rel_err(sq_num_to_double(out.sigma_stable, SQUEAL_Q_SIGMA), rows[i][C_SS_MC]);
+		eval_row(i, &p, &pt, &out);
+		eh = rel_err(sigma_of(out.sigma_hopf), rows[i][C_SH_MC]);
+		es = rel_err(sigma_of(out.sigma_stable), rows[i][C_SS_MC]);
 		if (eh > worst_h) {
 			worst_h = eh;
 			worst_h_id = (int)rows[i][C_ID];
@@ -155,9 +169,8 @@ static void test_sigma_agrees_with_monte_carlo(void **state)
 		}
 		if ((eh > MC_TOL || es > MC_TOL) && bad++ < 10) {
 			fprintf(stderr, "row %d: sigma_H %g (MC %g), sigma_S %g (MC %g)\n",
-				(int)rows[i][C_ID],
-				sq_num_to_double(out.sigma_hopf, SQUEAL_Q_SIGMA), rows[i][C_SH_MC],
-				sq_num_to_double(out.sigma_stable, SQUEAL_Q_SIGMA), rows[i][C_SS_MC]);
+				(int)rows[i][C_ID], sigma_of(out.sigma_hopf), rows[i][C_SH_MC],
+				sigma_of(out.sigma_stable), rows[i][C_SS_MC]);
 		}
 	}
 	printf("sigma vs Monte Carlo (%s, %d rows): worst relative error Hopf %.4f (row %d), "
@@ -174,15 +187,13 @@ static void test_sigma_matches_numerical_first_order(void **state)
 	(void)state;
 	for (i = 0; i < n_rows; i++) {
 		squeal_params_t p;
-		squeal_param_sd_t sd;
 		squeal_point_t pt;
 		squeal_sigma_result_t out;
 		double e;
 
-		row_inputs(rows[i], &p, &sd, &pt);
-		assert_int_equal(squeal_sigma_eval(&p, &sd, &pt, &out), SQ_OK);
-		e = fmax(rel_err(sq_num_to_double(out.sigma_hopf, SQUEAL_Q_SIGMA), rows[i][C_SH_LIN]),
-			 rel_err(sq_num_to_double(out.sigma_stable, SQUEAL_Q_SIGMA), rows[i][C_SS_LIN]));
+		eval_row(i, &p, &pt, &out);
+		e = fmax(rel_err(sigma_of(out.sigma_hopf), rows[i][C_SH_LIN]),
+			 rel_err(sigma_of(out.sigma_stable), rows[i][C_SS_LIN]));
 		worst = fmax(worst, e);
 		if (e > LIN_TOL) {
 			fprintf(stderr, "row %d: first order off by %g\n", (int)rows[i][C_ID], e);
@@ -215,7 +226,6 @@ static void test_border_values_class_and_margin(void **state)
 	(void)state;
 	for (i = 0; i < n_rows; i++) {
 		squeal_params_t p;
-		squeal_param_sd_t sd;
 		squeal_point_t pt;
 		squeal_sigma_result_t out;
 		squeal_result_t model;
@@ -225,8 +235,7 @@ static void test_border_values_class_and_margin(void **state)
 		double want;
 		double got;
 
-		row_inputs(r, &p, &sd, &pt);
-		assert_int_equal(squeal_sigma_eval(&p, &sd, &pt, &out), SQ_OK);
+		eval_row(i, &p, &pt, &out);
 		gh = sq_num_to_double(out.g_hopf, SQUEAL_Q_LNQ);
 		gs = sq_num_to_double(out.g_stable, SQUEAL_Q_LNQ);
 		assert_true(fabs(gh - r[C_GH]) <= G_TOL);
@@ -239,8 +248,8 @@ static void test_border_values_class_and_margin(void **state)
 		assert_int_equal(out.state, model.state);
 		/* margin from the module's own g and sigma (the formula), then
 		 * against the reference's g and Monte Carlo sigma (10 %) */
-		want = expected_margin(gh, gs, sq_num_to_double(out.sigma_hopf, SQUEAL_Q_SIGMA),
-				       sq_num_to_double(out.sigma_stable, SQUEAL_Q_SIGMA), (int)out.state);
+		want = expected_margin(gh, gs, sigma_of(out.sigma_hopf), sigma_of(out.sigma_stable),
+				       (int)out.state);
 		got = sq_num_to_double(out.margin_sigma, SQUEAL_Q_MARGIN);
 		want = fmin(want, sq_num_to_double(SQUEAL_SIGMA_MARGIN_MAX, SQUEAL_Q_MARGIN));
 		assert_true(fabs(got - want) <= 1e-3 * want + 4.0 * sq_num_lsb(SQUEAL_Q_MARGIN));
@@ -410,8 +419,7 @@ static void test_extremes_do_not_overflow(void **state)
 	if (sq_num_is_fixed()) {
 		assert_true((out.flags & SQUEAL_SIGMA_SAT) != 0U);
 	} else {
-		assert_true(fabs(sq_num_to_double(out.sigma_hopf, SQUEAL_Q_SIGMA) /
-				 sqrt(3.0 + 2000.0 * 2000.0) - 1.0) < 1e-4);
+		assert_true(fabs(sigma_of(out.sigma_hopf) / sqrt(3.0 + 2000.0 * 2000.0) - 1.0) < 1e-4);
 	}
 	assert_true(out.sigma_stable > 0);
 	pt.v0_mps = sq_num_from_double(0.001, SQUEAL_Q_V0);
