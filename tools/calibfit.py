@@ -90,6 +90,33 @@ def read_csv(path, layouts):
     return chosen, {c: np.asarray(v, dtype=float) for c, v in data.items()}
 
 
+def add_output_args(ap, plot_help):
+    """The options both fitters share: where the result goes."""
+    ap.add_argument("--base", help="calibration file whose other keys are kept")
+    ap.add_argument("-o", "--output", help="calibration file to write ('-' = stdout)")
+    ap.add_argument("--no-sd", action="store_true",
+                    help="leave the standard deviations out of the calibration file")
+    ap.add_argument("--plot", help=plot_help)
+    ap.add_argument("--json", action="store_true")
+
+
+def pyplot():
+    """matplotlib's pyplot without a display (imported only to plot)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def finish_plot(fig, ax, title, path):
+    ax.set_title(title)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    pyplot().close(fig)
+
+
 def t_quantile(dof):
     """Two-sided 95 % quantile: Student t with dof degrees of freedom
     (covariance scaled by the residuals), normal when dof is None."""

@@ -199,9 +199,7 @@ def calib_values(res, with_sd=True):
 
 
 def plot(path, v, mu, mu_sd, res, title):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = cf.pyplot()
 
     p = res["value"]
     cov = res["cov"]
@@ -224,12 +222,7 @@ def plot(path, v, mu, mu_sd, res, title):
                    f"corr(a, delta_mu) {s['corr_slope_delta_mu']:+.2f}, rms {res['rms']:.2g}"))
     ax.set_xlabel("sliding speed v [m/s]")
     ax.set_ylabel("friction coefficient mu")
-    ax.set_title(title)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    cf.finish_plot(fig, ax, title, path)
 
 
 def main(argv):
@@ -238,12 +231,7 @@ def main(argv):
     ap.add_argument("--pad-radius-m", type=float)
     ap.add_argument("--piston-area-mm2", type=float, help="piston area per face")
     ap.add_argument("--faces", type=int, help="friction faces (2 for a floating caliper)")
-    ap.add_argument("--base", help="calibration file whose other keys are kept")
-    ap.add_argument("-o", "--output", help="calibration file to write ('-' = stdout)")
-    ap.add_argument("--no-sd", action="store_true",
-                    help="leave the standard deviations out of the calibration file")
-    ap.add_argument("--plot", help="PNG of the data, the fit and its band")
-    ap.add_argument("--json", action="store_true")
+    cf.add_output_args(ap, "PNG of the data, the fit and its band")
     args = ap.parse_args(argv)
 
     layout, cols = cf.read_csv(args.data, LAYOUTS)

@@ -267,9 +267,7 @@ def read_wav(path):
 
 
 def plot(path, res, title):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = cf.pyplot()
 
     s = summary(res)
     label = (f"w0 = {s['omega0_radps']['value']:.1f} +- {s['omega0_radps']['stderr']:.2g} rad/s, "
@@ -301,12 +299,7 @@ def plot(path, res, title):
         ax2.set_aspect("equal", "datalim")
         ax2.set_title("Nyquist plot (the circle)", fontsize=9)
         ax2.grid(alpha=0.3)
-    ax.set_title(title)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    cf.finish_plot(fig, ax, title, path)
 
 
 def analyse(path, kind):
@@ -327,12 +320,7 @@ def main(argv):
     ap.add_argument("--mass-kg", type=float, help="moving mass of pad and caliper (weighed)")
     ap.add_argument("--mass-sd-kg", type=float, default=0.0,
                     help="its standard deviation (default 0)")
-    ap.add_argument("--base", help="calibration file whose other keys are kept")
-    ap.add_argument("-o", "--output", help="calibration file to write ('-' = stdout)")
-    ap.add_argument("--no-sd", action="store_true",
-                    help="leave the standard deviations out of the calibration file")
-    ap.add_argument("--plot", help="PNG of the data and the fit")
-    ap.add_argument("--json", action="store_true")
+    cf.add_output_args(ap, "PNG of the data and the fit")
     args = ap.parse_args(argv)
     mass = None
     if args.mass_kg is not None:
