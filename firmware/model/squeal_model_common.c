@@ -64,36 +64,53 @@ void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state)
 	out->basin_ratio = 0;
 }
 
+squeal_case_t squeal_model_case(const squeal_params_t *params,
+				const squeal_point_t *point)
+{
+	if ((squeal_model_params_check(params) != SQ_OK) ||
+	    (squeal_model_point_check(point) != SQ_OK)) {
+		return SQUEAL_CASE_INVALID;
+	}
+	/* both are >= 0 here: "not > 0" is "== 0" without an exact float
+	 * comparison */
+	if (!(point->v0_mps > 0) || !(point->force_n > 0)) {
+		return SQUEAL_CASE_NOT_SLIDING;
+	}
+	if (!(params->slope_spm > 0) || !(params->delta_mu > 0)) {
+		/* friction does not fall with speed: no border, no cycle */
+		return SQUEAL_CASE_NO_BORDER;
+	}
+	return SQUEAL_CASE_SLIDING;
+}
+
 /*
- * The domain rules of squeal_model.h, the same in both numeric builds; the
- * sliding case itself is each build's squeal_model_classify_sliding().
+ * The domain rules of squeal_model.h (squeal_model_case); the sliding case
+ * itself is each build's squeal_model_classify_sliding().
  */
 int squeal_model_classify(const squeal_params_t *params,
 			  const squeal_point_t *point,
 			  squeal_criterion_t criterion,
 			  squeal_result_t *out)
 {
+	squeal_case_t c;
+
 	if ((params == NULL) || (point == NULL) || (out == NULL)) {
 		return SQ_EINVAL;
 	}
-	if ((squeal_model_params_check(params) != SQ_OK) ||
-	    (squeal_model_point_check(point) != SQ_OK) ||
+	c = squeal_model_case(params, point);
+	if ((c == SQUEAL_CASE_INVALID) ||
 	    ((criterion != SQUEAL_CRITERION_EXACT) &&
 	     (criterion != SQUEAL_CRITERION_CUBIC))) {
 		squeal_model_result_clear(out, SQUEAL_STATE_INVALID);
 		return SQ_EINVAL;
 	}
-	/* both are >= 0 here: "not > 0" is "== 0" without an exact float
-	 * comparison */
-	if (!(point->v0_mps > 0) || !(point->force_n > 0)) {
+	if (c == SQUEAL_CASE_NOT_SLIDING) {
 		squeal_model_result_clear(out, SQUEAL_STATE_NOT_SLIDING);
 		return SQ_OK;
 	}
 	squeal_model_result_clear(out, SQUEAL_STATE_STABLE);
-	if (!(params->slope_spm > 0) || !(params->delta_mu > 0)) {
-		/* friction does not fall with speed: no border, no cycle */
-		return SQ_OK;
+	if (c == SQUEAL_CASE_SLIDING) {
+		squeal_model_classify_sliding(params, point, criterion, out);
 	}
-	squeal_model_classify_sliding(params, point, criterion, out);
 	return SQ_OK;
 }

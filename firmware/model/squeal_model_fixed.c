@@ -93,7 +93,7 @@ static int64_t mul_q28(int64_t a, int64_t b)
  * <= 0.012 (omitted term < 5e-11); H' ~ -1.5/s + 3/(8 s^2) is only used to
  * steer Newton's method, so its truncation costs nothing in accuracy.
  */
-static void bessel_h(int64_t s_q32, int64_t *h_q32, int64_t *dh_q32)
+void squeal_model_bessel_h(int64_t s_q32, int64_t *h_q32, int64_t *dh_q32)
 {
 	if (s_q32 < TABLE_S_MAX_Q32) {
 		const int64_t k = s_q32 >> CELL_SHIFT;
@@ -169,7 +169,7 @@ static int64_t solve_exact_cycle(int64_t lq2)
 		int64_t dg;
 		int64_t next;
 
-		bessel_h(x, &h, &dh);
+		squeal_model_bessel_h(x, &h, &dh);
 		f = h + x - lq2;
 		dg = dh + Q32_ONE;
 		if (f == 0) {
@@ -229,11 +229,26 @@ static int64_t cycle_ln_x(int64_t lq2, squeal_criterion_t criterion,
 	}
 }
 
+void squeal_model_log_terms(const squeal_params_t *p,
+			    const squeal_point_t *point,
+			    squeal_log_terms_t *t)
+{
+	t->ln_a = ln_field(p->slope_spm, SQUEAL_Q_SLOPE);
+	t->ln_w0 = ln_field(p->omega0_radps, SQUEAL_Q_OMEGA0);
+	t->ln_force = ln_field(point->force_n, SQUEAL_Q_FORCE);
+	t->c2 = FX_LN2_Q32 + ln_field(p->damping, SQUEAL_Q_DAMPING) + t->ln_w0 +
+		ln_field(p->mass_kg, SQUEAL_Q_MASS) - t->ln_a - t->ln_force -
+		ln_field(p->delta_mu, SQUEAL_Q_MU);
+	/* s = a v0: Q24 * Q20 = Q44 -> Q32; < 2000 * 2^32 by the domain */
+	t->s = ((int64_t)p->slope_spm * point->v0_mps) >> 12;
+}
+
 void squeal_model_classify_sliding(const squeal_params_t *p,
 				   const squeal_point_t *point,
 				   squeal_criterion_t criterion,
 				   squeal_result_t *out)
 {
+	squeal_log_terms_t t;
 	int64_t ln_a;
 	int64_t ln_w0;
 	int64_t ln_force;
@@ -245,14 +260,12 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 	bool stable;
 	bool sat;
 
-	ln_a = ln_field(p->slope_spm, SQUEAL_Q_SLOPE);
-	ln_w0 = ln_field(p->omega0_radps, SQUEAL_Q_OMEGA0);
-	ln_force = ln_field(point->force_n, SQUEAL_Q_FORCE);
-	c2 = FX_LN2_Q32 + ln_field(p->damping, SQUEAL_Q_DAMPING) + ln_w0 +
-	     ln_field(p->mass_kg, SQUEAL_Q_MASS) - ln_a - ln_force -
-	     ln_field(p->delta_mu, SQUEAL_Q_MU);
-	/* s = a v0: Q24 * Q20 = Q44 -> Q32; < 2000 * 2^32 by the domain */
-	s = ((int64_t)p->slope_spm * point->v0_mps) >> 12;
+	squeal_model_log_terms(p, point, &t);
+	ln_a = t.ln_a;
+	ln_w0 = t.ln_w0;
+	ln_force = t.ln_force;
+	c2 = t.c2;
+	s = t.s;
 	lq2 = c2 + s;
 	out->ln_q = fx_q32_to_i32(lq2 - FX_LN2_Q32, SQUEAL_Q_LNQ, &sat);
 	out->flags |= SQUEAL_HAS_LNQ;
@@ -288,7 +301,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 		int64_t h;
 		int64_t dh;
 
-		bessel_h(s, &h, &dh);
+		squeal_model_bessel_h(s, &h, &dh);
 		stable = c2 >= h;
 	}
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;

@@ -123,7 +123,7 @@ int squeal_model_point_check(const squeal_point_t *point)
  *         - 1091475/(3932160x^5).
  * h_out receives H = G - x computed without cancellation (may be NULL).
  */
-static void bessel_g(float x, float *g_out, float *dg_out, float *h_out)
+void squeal_model_bessel_g(float x, float *g_out, float *dg_out, float *h_out)
 {
 	if (x <= SERIES_MAX_S) {
 		const float t = 0.25f * x * x;
@@ -192,7 +192,7 @@ static float solve_exact_cycle(float lq2)
 		float f;
 		float next;
 
-		bessel_g(x, &g, &dg, NULL);
+		squeal_model_bessel_g(x, &g, &dg, NULL);
 		f = g - lq2;
 		if (f == 0.0f) {
 			break;
@@ -260,20 +260,30 @@ static void fill_cycle(const squeal_params_t *p, const squeal_point_t *pt,
 			       out, SQUEAL_SAT_BASIN);
 }
 
+void squeal_model_log_terms(const squeal_params_t *p,
+			    const squeal_point_t *point,
+			    squeal_log_terms_t *t)
+{
+	t->s = p->slope_spm * point->v0_mps;
+	t->c2 = SQ_LN2F + sq_lnf(p->damping) + sq_lnf(p->omega0_radps) +
+		sq_lnf(p->mass_kg) - sq_lnf(p->slope_spm) -
+		sq_lnf(point->force_n) - sq_lnf(p->delta_mu);
+}
+
 void squeal_model_classify_sliding(const squeal_params_t *p,
 				   const squeal_point_t *point,
 				   squeal_criterion_t criterion,
 				   squeal_result_t *out)
 {
+	squeal_log_terms_t t;
 	float s;
 	float c2;
 	float lq2;
 	bool stable;
 
-	s = p->slope_spm * point->v0_mps;
-	c2 = SQ_LN2F + sq_lnf(p->damping) + sq_lnf(p->omega0_radps) +
-	     sq_lnf(p->mass_kg) - sq_lnf(p->slope_spm) - sq_lnf(point->force_n) -
-	     sq_lnf(p->delta_mu);
+	squeal_model_log_terms(p, point, &t);
+	s = t.s;
+	c2 = t.c2;
 	lq2 = c2 + s;
 	out->ln_q = lq2 - SQ_LN2F;
 	out->flags |= SQUEAL_HAS_LNQ;
@@ -303,7 +313,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 		float dg;
 		float h;
 
-		bessel_g(s, &g, &dg, &h);
+		squeal_model_bessel_g(s, &g, &dg, &h);
 		stable = c2 >= h;
 	}
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;

@@ -5,6 +5,18 @@
 
 #include "squeal_model.h"
 
+/* Which of the domain rules of squeal_model.h a calibration and an
+ * operating point fall under (both non-NULL). */
+typedef enum {
+	SQUEAL_CASE_INVALID,     /* outside the documented domain          */
+	SQUEAL_CASE_NOT_SLIDING, /* v0 == 0 or N == 0                      */
+	SQUEAL_CASE_NO_BORDER,   /* a == 0 or dmu <= 0: stable, no border   */
+	SQUEAL_CASE_SLIDING      /* v0, N, a, dmu > 0: the borders exist    */
+} squeal_case_t;
+
+squeal_case_t squeal_model_case(const squeal_params_t *params,
+				const squeal_point_t *point);
+
 /* A result with this state, no flags and every value 0. */
 void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state);
 
@@ -21,5 +33,37 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 				   const squeal_point_t *point,
 				   squeal_criterion_t criterion,
 				   squeal_result_t *out);
+
+/*
+ * The log-domain terms every border test is built from (valid calibration
+ * and point with v0, N, a, delta_mu > 0): c2 = ln(2 D w0 m / (a N dmu)) and
+ * s = a v0, so ln 2Q = c2 + s. The fixed build also keeps the logarithms it
+ * needs again afterwards. Shared by the classification and the uncertainty
+ * propagation (squeal_sigma.h), so both see the same numbers.
+ */
+#if defined(SQUEAL_NUMERIC_FIXED)
+typedef struct {
+	int64_t c2;       /* Q32 */
+	int64_t s;        /* Q32 */
+	int64_t ln_a;     /* Q32 */
+	int64_t ln_w0;    /* Q32 */
+	int64_t ln_force; /* Q32 */
+} squeal_log_terms_t;
+
+/* H(s) = ln(2 I1(s)/s) - s and H'(s), Q32, for s >= 0 in Q32. */
+void squeal_model_bessel_h(int64_t s_q32, int64_t *h_q32, int64_t *dh_q32);
+#else
+typedef struct {
+	float c2;
+	float s;
+} squeal_log_terms_t;
+
+/* G(x) = ln(2 I1(x)/x), G'(x) and (h_out may be NULL) H = G - x, x >= 0. */
+void squeal_model_bessel_g(float x, float *g_out, float *dg_out, float *h_out);
+#endif
+
+void squeal_model_log_terms(const squeal_params_t *p,
+			    const squeal_point_t *point,
+			    squeal_log_terms_t *t);
 
 #endif /* SQUEAL_MODEL_INTERNAL_H */

@@ -1,0 +1,139 @@
+/* SPDX-License-Identifier: MIT */
+/* Parts of squeal_sigma.h that are the same in both numeric builds: domain
+ * rules, the cases without a border, and which border a class is next to. */
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "squeal_model.h"
+#include "squeal_model_internal.h"
+#include "squeal_sigma.h"
+#include "squeal_sigma_internal.h"
+
+#if defined(SQUEAL_NUMERIC_FIXED)
+#define MU_SD_MAX ((int32_t)3 << (SQUEAL_Q_MU - 1)) /* 1.5 */
+#else
+#define MU_SD_MAX 1.5f
+#endif
+
+#define NUM_ZERO ((squeal_num_t)0)
+
+/* 0 <= sd <= |value| (false for NaN in the float build) */
+static bool sd_within(squeal_num_t sd, squeal_num_t value)
+{
+	const squeal_num_t mag = (value < NUM_ZERO) ? -value : value;
+
+	return (sd >= NUM_ZERO) && (sd <= mag);
+}
+
+void squeal_sigma_sd_zero(squeal_param_sd_t *sd)
+{
+	if (sd == NULL) {
+		return;
+	}
+	sd->mass_kg_sd = 0;
+	sd->omega0_radps_sd = 0;
+	sd->damping_sd = 0;
+	sd->mu_inf_sd = 0;
+	sd->delta_mu_sd = 0;
+	sd->slope_spm_sd = 0;
+	sd->slope_delta_mu_corr = 0;
+}
+
+int squeal_sigma_sd_check(const squeal_params_t *params,
+			  const squeal_param_sd_t *sd)
+{
+	if ((params == NULL) || (sd == NULL)) {
+		return SQ_EINVAL;
+	}
+	if (!sd_within(sd->mass_kg_sd, params->mass_kg) ||
+	    !sd_within(sd->omega0_radps_sd, params->omega0_radps) ||
+	    !sd_within(sd->damping_sd, params->damping) ||
+	    !sd_within(sd->mu_inf_sd, MU_SD_MAX) ||
+	    !sd_within(sd->delta_mu_sd, params->delta_mu) ||
+	    !sd_within(sd->slope_spm_sd, params->slope_spm) ||
+	    !(sd->slope_delta_mu_corr >= -SQUEAL_SIGMA_CORR_ONE) ||
+	    !(sd->slope_delta_mu_corr <= SQUEAL_SIGMA_CORR_ONE)) {
+		return SQ_EINVAL;
+	}
+	return SQ_OK;
+}
+
+static void result_clear(squeal_sigma_result_t *out, squeal_state_t state)
+{
+	out->state = state;
+	out->flags = 0U;
+	out->g_hopf = 0;
+	out->g_stable = 0;
+	out->sigma_hopf = 0;
+	out->sigma_stable = 0;
+	out->margin_sigma = (state == SQUEAL_STATE_INVALID) ? 0 : SQUEAL_SIGMA_MARGIN_MAX;
+}
+
+int squeal_sigma_margin(const squeal_sigma_result_t *r, squeal_state_t state,
+			squeal_num_t *margin)
+{
+	squeal_num_t to_hopf;
+	squeal_num_t to_stable;
+
+	if ((r == NULL) || (margin == NULL)) {
+		return SQ_EINVAL;
+	}
+	if ((r->flags & SQUEAL_SIGMA_HAS_BORDERS) == 0U) {
+		*margin = SQUEAL_SIGMA_MARGIN_MAX;
+		return SQ_OK;
+	}
+	to_hopf = squeal_sigma_distance(r->g_hopf, r->sigma_hopf);
+	to_stable = squeal_sigma_distance(r->g_stable, r->sigma_stable);
+	switch (state) {
+	case SQUEAL_STATE_UNSTABLE:
+		*margin = to_hopf;
+		break;
+	case SQUEAL_STATE_STABLE:
+		*margin = to_stable;
+		break;
+	case SQUEAL_STATE_BISTABLE:
+		*margin = (to_hopf < to_stable) ? to_hopf : to_stable;
+		break;
+	default:
+		*margin = SQUEAL_SIGMA_MARGIN_MAX;
+		break;
+	}
+	return SQ_OK;
+}
+
+int squeal_sigma_eval(const squeal_params_t *params,
+		      const squeal_param_sd_t *sd,
+		      const squeal_point_t *point,
+		      squeal_sigma_result_t *out)
+{
+	squeal_case_t c;
+	bool unstable;
+	bool stable;
+
+	if ((params == NULL) || (sd == NULL) || (point == NULL) || (out == NULL)) {
+		return SQ_EINVAL;
+	}
+	c = squeal_model_case(params, point);
+	if ((c == SQUEAL_CASE_INVALID) || (squeal_sigma_sd_check(params, sd) != SQ_OK)) {
+		result_clear(out, SQUEAL_STATE_INVALID);
+		return SQ_EINVAL;
+	}
+	if (c == SQUEAL_CASE_NOT_SLIDING) {
+		result_clear(out, SQUEAL_STATE_NOT_SLIDING);
+		return SQ_OK;
+	}
+	result_clear(out, SQUEAL_STATE_STABLE);
+	if (c == SQUEAL_CASE_NO_BORDER) {
+		return SQ_OK;
+	}
+	/* the same decisions as squeal_model_classify_sliding (exact) */
+	squeal_sigma_borders(params, sd, point, out, &unstable, &stable);
+	if (unstable) {
+		out->state = SQUEAL_STATE_UNSTABLE;
+	} else if (stable) {
+		out->state = SQUEAL_STATE_STABLE;
+	} else {
+		out->state = SQUEAL_STATE_BISTABLE;
+	}
+	return squeal_sigma_margin(out, out->state, &out->margin_sigma);
+}

@@ -1,0 +1,41 @@
+# SPDX-License-Identifier: MIT
+# Issue 12, calibrating a brake from measurements:
+#   build/test{,-fixed}/test_sigma    firmware/model/squeal_sigma.h against
+#                                     Monte Carlo (tests/golden/sigma_vectors.csv)
+#   tests/calibrate/test_fit_*.py     the fitting tools on synthetic data
+#                                     (recovery, 95 % coverage, bad files)
+#   make sigma-golden                 regenerate the Monte Carlo file
+
+SIGMA_TEST_VARIANTS := test test-fixed
+
+define sigma_test_rules
+build/$(1)/test_sigma: build/$(1)/app/tests/unit/test_sigma.o build/$(1)/app/tests/support/sq_num.o build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,$(SIGMA_TEST_VARIANTS),$(eval $(call sigma_test_rules,$(v))))
+
+TEST_PROGS += $(foreach v,$(SIGMA_TEST_VARIANTS),build/$(v)/test_sigma) tests/reference/check_sigma_golden.py
+
+.PHONY: sigma-golden
+sigma-golden:
+	$(PYTHON) tests/reference/gen_sigma_reference.py -o tests/golden/sigma_vectors.csv
+
+# The fitting tools (numpy/scipy). The CLI test also runs today's
+# `squeal-sim replay --calib` on a written calibration.
+CALIB_FIT_TESTS := tests/calibrate/test_fit_friction.py tests/calibrate/test_fit_modal.py \
+	tests/calibrate/test_fit_cli.py
+tests/calibrate/test_fit_cli.py: build/host/squeal-sim
+TEST_PROGS += $(CALIB_FIT_TESTS)
+
+# `make plots` also draws the documented calibration example (README,
+# "Calibrating a brake"): the two fits and the map with its border bands.
+CALIB_EX := docs/examples
+CALIB_EX_DYNO := --pad-radius-m 0.12 --piston-area-mm2 2000 --faces 2
+CALIB_EX_MASS := --mass-kg 0.9 --mass-sd-kg 0.01
+.PHONY: plots-calib
+plots-calib: deps-demo
+	@mkdir -p build/plots
+	$(PYTHON) tools/fit_friction.py $(CALIB_EX)/dyno.csv $(CALIB_EX_DYNO) --base docs/calib-example.txt -o build/plots/example-friction.cal --plot build/plots/calib_friction.png
+	$(PYTHON) tools/fit_modal.py $(CALIB_EX)/tap_test.wav $(CALIB_EX_MASS) --base build/plots/example-friction.cal -o build/plots/example-brake.cal --plot build/plots/calib_tap_test.png
+	$(PYTHON) tools/plots/plot_calib_bands.py build/plots/example-brake.cal --out build/plots
+plots: plots-calib
