@@ -9,3 +9,5 @@ tests/fleet/test_fleet.py: build/host/squeal-sim
 TEST_PROGS += tests/fleet/test_fleet.py
 tests/fleet/bench_fleet.py: build/host/squeal-sim
 BENCH_PROGS += tests/fleet/bench_fleet.py
+tests/fleet/test_live_view.py: build/host/squeal-sim
+TEST_PROGS += tests/fleet/test_live_view.py
