@@ -25,24 +25,17 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(ROOT, "tools", "plots"))
+sys.path.insert(0, os.path.join(ROOT, "tests", "protocol"))
+import dbc_common  # noqa: E402
 PY = "/usr/bin/python3"
 SIM = os.path.join(ROOT, "build", "host", "squeal-sim")
 STATES = ("stable", "bistable", "unstable", "not_sliding", "fault")
 COLOURS = {"stable": "#1a9850", "bistable": "#d98e04", "unstable": "#b2182b"}
 
 
-class Results:
-    def __init__(self):
-        self.passed = self.failed = self.skipped = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-        else:
-            self.failed += 1
-            print("FAIL:", what)
-        return cond
+class Results(dbc_common.Results):
+    """The protocol tests' counter, with skips."""
+    skipped = 0
 
     def skip(self, what, why):
         self.skipped += 1

@@ -9,6 +9,7 @@
     the pixel under the point has the state's colour and the map's regions
     are where the closed forms put them; the Hopf margin curve holds the
     decoded margins of the last window;
+  - two corners (FL, RR on 0x330..): a map and a point each;
   - the same view fed live from a python-can virtual bus (the --iface path);
   - bad input: a missing log, a log python-can cannot parse, bad usage:
     one clear message, no traceback;
@@ -121,6 +122,28 @@ def check_logs(tmp):
     return out, decoded
 
 
+def check_corners(tmp, out, decoded):
+    """Two corners (FL and RR, RR's frames on 0x330.. = FL's copied): one
+    map per corner, each with its own point."""
+    two = os.path.join(tmp, "two.log")
+    with open(out) as f, open(two, "w") as g:
+        for line in f:
+            g.write(line)
+            head, _, rest = line.partition(" vcan0 ")
+            if rest[:3] in ("300", "301", "303"):
+                g.write("%s vcan0 %03X%s" % (head, int(rest[:3], 16) + 0x30, rest[3:]))
+    view = live_view.LiveView({}, window_s=10.0)
+    live_view.run_log(view, two, 0.0, 5.3)
+    fig = view.draw()
+    exp = expected(decoded, 5.3)
+    R.check(sorted(view.axes) == ["FL", "RR"], "two corners: maps for %s" % sorted(view.axes))
+    for name in ("FL", "RR"):
+        (v, n), = view.axes[name]["point"].get_offsets()
+        R.check(abs(v - exp["v0"]) < 1e-9 and view.corners[name].state == exp["state"],
+                "two corners: %s point at %.2f m/s, %s" % (name, v, view.corners[name].state))
+    live_view.P.plt.close(fig)
+
+
 def check_bus(out, decoded):
     """The --iface path (run_bus) on python-can's virtual bus."""
     import can
@@ -167,6 +190,7 @@ def check_bad(tmp):
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         out, decoded = check_logs(tmp)
+        check_corners(tmp, out, decoded)
         check_bus(out, decoded)
         check_bad(tmp)
     R.skip("live view on vcan0 in the QEMU guest",
