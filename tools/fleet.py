@@ -317,7 +317,24 @@ def main():
         return 2
     args.sim = os.path.abspath(args.sim)
     args.calib = os.path.abspath(args.calib) if args.calib else None
-    results, timing = run_tasks(logs, args)
+    if args.calib:  # one clear error instead of the same one for every log
+        chk = subprocess.run([args.sim, "replay", "-", "--no-output", "--calib", args.calib],
+                             stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE)
+        if chk.returncode != 0:
+            print("fleet: %s" % chk.stderr.decode("utf-8", "replace").strip().splitlines()[0],
+                  file=sys.stderr)
+            return 2
+    try:
+        results, timing = run_tasks(logs, args)
+    except ImportError as e:
+        print("fleet: Dask is missing (%s): apt-get install python3-dask python3-distributed" % e,
+              file=sys.stderr)
+        return 1
+    except (OSError, TimeoutError) as e:
+        print("fleet: cannot reach the Dask scheduler %s: %s" % (args.scheduler or "(local)", e),
+              file=sys.stderr)
+        return 1
     os.makedirs(args.out, exist_ok=True)
     totals, n_ep = write_csvs(args.out, results)
     cells, grid = cells_of(results)
