@@ -6,7 +6,11 @@
 #   build/test/test_candump_log     cmocka, ASan+UBSan
 #   tests/replay/test_replay.py     replay/decode end to end (python-can,
 #                                   canmatrix, the reference model)
-#   tests/replay/bench-replay.sh    make bench: replay vs python-can+canmatrix
+#   tests/replay/bench-replay.sh    make bench: replay vs python-can+canmatrix,
+#                                   with and without frame output
+#   host-sim/replay_summary.c, json_writer.c   replay --summary-json (issue 13)
+#   build/test/test_json_writer     cmocka: the JSON writer's output and misuse
+#   tests/replay/test_summary_json.py  the JSON vs Python's json + canmatrix
 REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_replay.c host-sim/cmd_decode.c
 # replay --summary-json (issue 13): episodes per corner, a bounded JSON writer
 REPLAY_SIM_SRCS += host-sim/replay_summary.c host-sim/json_writer.c
@@ -36,4 +40,6 @@ BENCH_PROGS += tests/replay/bench-replay.sh
 build/test/summary_driver: build/test/app/tests/replay/summary_driver.o build/test/app/host-sim/replay_summary.o build/test/app/host-sim/json_writer.o build/test/app/host-sim/candump_log.o build/test/libfirmware.a
 	$(CC) $(OPT_test) -o $@ $^
 tests/replay/test_summary_json.py: build/test/summary_driver build/test/squeal-sim
-TEST_PROGS += tests/replay/test_summary_json.py
+build/test/test_json_writer: build/test/app/tests/unit/test_json_writer.o build/test/app/host-sim/json_writer.o
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka
+TEST_PROGS += tests/replay/test_summary_json.py build/test/test_json_writer
