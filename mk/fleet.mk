@@ -11,3 +11,11 @@ tests/fleet/bench_fleet.py: build/host/squeal-sim
 BENCH_PROGS += tests/fleet/bench_fleet.py
 tests/fleet/test_live_view.py: build/host/squeal-sim
 TEST_PROGS += tests/fleet/test_live_view.py
+
+# One command: a generated fleet of 110 logs (6 broken) and its report
+# (build/fleet-report/index.html).
+.PHONY: fleet-report
+fleet-report: build/host/squeal-sim
+	@rm -rf build/fleet
+	@$(PYTHON) tools/gen_fleet_logs.py --out build/fleet --count 110 --broken 6
+	@$(PYTHON) tools/fleet.py --dir build/fleet -o build/fleet-report
