@@ -224,8 +224,12 @@ def draw_heatmap(out, cells, grid, p, criterion, title):
     from matplotlib.patches import Patch
     plt = P.plt
     corners = [c for c in DC.CORNERS if c in cells] or ["FL"]
-    fig, axes = plt.subplots(1, len(corners), figsize=(8.2 * len(corners), 5.2), squeeze=False)
-    for ax, corner in zip(axes[0], corners):
+    ncols = min(len(corners), 2)
+    nrows = (len(corners) + 1) // 2
+    fig, axes = plt.subplots(nrows, ncols, figsize=(6.4 * ncols + 1.8, 5.2 * nrows), squeeze=False)
+    for ax in axes.flat[len(corners):]:
+        ax.set_visible(False)
+    for n, (ax, corner) in enumerate(zip(axes.flat, corners)):
         if grid is None:
             DC.draw_map(ax, p, 16.0, 32000.0, criterion)
             ax.set_title("%s: no readable logs" % corner, fontsize=10)
@@ -242,10 +246,11 @@ def draw_heatmap(out, cells, grid, p, criterion, title):
         ax.set_ylim(0, n_max / 1000.0)
         ax.set_title("%s: %.1f s in %d cells of %.1f m/s x %g N" %
                      (corner, float(total.sum()), len(used), dv, dn), fontsize=10)
-        handles, _ = ax.get_legend_handles_labels()
-        handles += [Patch(color=P.PATH_COLORS[s], label="reported " + s) for s in DC.STATES]
-        ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
-                  framealpha=0.9)
+        if n == ncols - 1:  # one legend, right of the first row
+            handles, _ = ax.get_legend_handles_labels()
+            handles += [Patch(color=P.PATH_COLORS[s], label="reported " + s) for s in DC.STATES]
+            ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                      framealpha=0.9)
     fig.suptitle(title, fontsize=11)
     paths = P.save(fig, out, "heatmap")
     return paths

@@ -12,7 +12,10 @@ processes, then the same job once on a separately started `dask scheduler`
   - the heat map: cells.csv's time is within each corner's total, the PNG
     has pixels in the reported-state colours of the states the fleet spent
     time in, the SVG draws both border lines; the HTML page shows it all;
-  - the cluster path gives the same CSVs as the LocalCluster.
+  - the cluster path gives the same CSVs as the LocalCluster;
+  - two corners (FL and an RR copied from it by a wrapper around squeal-sim,
+    since today's firmware has one corner): RR rows equal FL rows, and the
+    heat map gets a panel per corner.
 Prints "RESULT: N passed, M failed, K skipped".
 """
 import csv
@@ -118,6 +121,42 @@ def check_report(logdir, out):
             "HTML page shows the heat map and lists the broken logs")
 
 
+FAKE_SIM = """#!/usr/bin/python3
+import json, subprocess, sys
+p = subprocess.run([%r] + sys.argv[1:], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+sys.stderr.buffer.write(p.stderr)
+try:
+    d = json.loads(p.stdout)
+except ValueError:
+    sys.stdout.buffer.write(p.stdout)
+    sys.exit(p.returncode)
+d["episodes"] += [dict(e, corner="RR") for e in d["episodes"] if e["corner"] == "FL"]
+d["corners"] += [dict(c, corner="RR") for c in d["corners"] if c["corner"] == "FL"]
+json.dump(d, sys.stdout)
+sys.exit(p.returncode)
+"""
+
+
+def check_two_corners(tmp, logdir, local):
+    import matplotlib.image as mpimg
+    fake = os.path.join(tmp, "fake-sim")
+    with open(fake, "w") as f:
+        f.write(FAKE_SIM % SIM)
+    os.chmod(fake, 0o755)
+    two = os.path.join(tmp, "two")
+    R.check(fleet(logdir, two, "--workers", "1", "--sim", fake) == 0, "two corners: exit 0")
+    st = rows(os.path.join(two, "state_time.csv"))
+    fl = [{k: v for k, v in r.items() if k != "corner"} for r in st if r["corner"] == "FL"]
+    rr = [{k: v for k, v in r.items() if k != "corner"} for r in st if r["corner"] == "RR"]
+    R.check(fl == rr and len(fl) == 13, "two corners: %d RR rows equal the FL rows" % len(rr))
+    eps = rows(os.path.join(two, "episodes.csv"))
+    R.check(sum(e["corner"] == "RR" for e in eps) == sum(e["corner"] == "FL" for e in eps) > 0,
+            "two corners: as many RR episodes as FL")
+    w1 = mpimg.imread(os.path.join(local, "heatmap.png")).shape[1]
+    w2 = mpimg.imread(os.path.join(two, "heatmap.png")).shape[1]
+    R.check(w2 > 1.5 * w1, "two corners: heat map %d px wide against %d for one" % (w2, w1))
+
+
 def main():
     try:
         import dask.distributed  # noqa: F401
@@ -131,6 +170,7 @@ def main():
         local = os.path.join(tmp, "local")
         R.check(fleet(logdir, local, "--workers", "2") == 0, "fleet on a LocalCluster: exit 0")
         check_report(logdir, local)
+        check_two_corners(tmp, logdir, local)
         import dask_local
         try:
             with dask_local.separate_cluster(tmp, nworkers=1) as address:
