@@ -39,7 +39,7 @@ BENCH_PROGS += tests/replay/bench-replay.sh
 # decoded by canmatrix.
 build/test/summary_driver: build/test/app/tests/replay/summary_driver.o build/test/app/host-sim/replay_summary.o build/test/app/host-sim/json_writer.o build/test/app/host-sim/candump_log.o build/test/libfirmware.a
 	$(CC) $(OPT_test) -o $@ $^
-tests/replay/test_summary_json.py: build/test/summary_driver build/test/squeal-sim
+tests/replay/test_summary_json.py: build/test/summary_driver build/test/squeal-sim build/test-fixed/squeal-sim
 build/test/test_json_writer: build/test/app/tests/unit/test_json_writer.o build/test/app/host-sim/json_writer.o
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
 TEST_PROGS += tests/replay/test_summary_json.py build/test/test_json_writer

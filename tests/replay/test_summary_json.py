@@ -6,7 +6,7 @@
     control characters), also for log names with quotes, backslashes,
     control characters and bytes that are not UTF-8;
   - the episodes, the time per state per corner and the (v0, force)
-    occupancy equal a recomputation here from the ECU's output frames,
+    occupancy (float and fixed builds) equal a recomputation here from the ECU's output frames,
     decoded with canmatrix from squeal.dbc (values compared as exact
     decimals); for four-corner streams that today's firmware cannot send,
     through tests/replay/summary_driver (the summary module alone);
@@ -27,9 +27,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "tests", "protocol"))
 import dbc_common  # noqa: E402
-import canmatrix  # noqa: E402
 
 SIM = os.path.join(ROOT, "build", "test", "squeal-sim")
+SIM_FIXED = os.path.join(ROOT, "build", "test-fixed", "squeal-sim")
 DRIVER = os.path.join(ROOT, "build", "test", "summary_driver")
 R = dbc_common.Results()
 DB = dbc_common.load_dbc()
@@ -188,9 +188,20 @@ def run(args, **kw):
     return subprocess.run([SIM] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, **kw)
 
 
+def check_fixed(log, name):
+    """The fixed-point build's document against the same recomputation."""
+    p = subprocess.run([SIM_FIXED, "replay", log, "--summary-json", "/dev/stderr"],
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    text = p.stderr.decode()
+    doc = load_strict(text[:text.index("replay summary:")])
+    compare(doc, read_frames(p.stdout.decode()), us(doc["t0_s"] + doc["virtual_time_s"]),
+            name + " (fixed build)")
+
+
 def check_log(tmp, name, plant_args):
     log = os.path.join(tmp, name + ".log")
     subprocess.run([SIM, "plant", "--log", log, "--quiet"] + plant_args, check=True)
+    check_fixed(log, name)
     js = os.path.join(tmp, name + ".json")
     p = run(["replay", log, "--summary-json", js])
     R.check(p.returncode == 0, "%s: replay exit 0" % name)
