@@ -36,7 +36,9 @@
 #include "calib_text.h"
 #include "candump_log.h"
 #include "hal_vbus.h"
+#include "json_writer.h"
 #include "monitor.h"
+#include "replay_summary.h"
 #include "sim_commands.h"
 #include "squeal_app.h"
 #include "squeal_msgs.h"
@@ -59,6 +61,8 @@ typedef struct {
 	uint64_t tail_us;
 	uint64_t max_gap_us;
 	bool rss;
+	const char *summary_json; /* --summary-json FILE|- (replay_summary.h) */
+	bool no_output;           /* --no-output: no frame lines, only counts */
 } replay_args_t;
 
 typedef struct {
@@ -95,6 +99,8 @@ typedef struct {
 	uint64_t out_frames;
 	uint64_t out_by_msg[MSG_COUNT + 1U];
 	bool out_error;
+	bool no_output;
+	replay_summary_t *summary; /* NULL without --summary-json */
 } replay_t;
 
 static unsigned state_index(uint8_t s)
@@ -106,7 +112,8 @@ static void replay_usage(FILE *f)
 {
 	fprintf(f,
 		"usage: squeal-sim replay LOG|- [--calib FILE] [--iface-out NAME]\n"
-		"         [--tail-ms MS] [--max-gap S] [--rss]\n\n"
+		"         [--tail-ms MS] [--max-gap S] [--rss]\n"
+		"         [--summary-json FILE|-] [--no-output]\n\n"
 		"Feeds a candump -L log (a file, or - for stdin) through the firmware in\n"
 		"virtual time taken from the log's timestamps, offline. Writes every frame\n"
 		"the ECU sends as a candump -L log on stdout, and a summary on stderr:\n"
@@ -119,7 +126,12 @@ static void replay_usage(FILE *f)
 		"  --tail-ms MS     run on after the last frame (default 100)\n"
 		"  --max-gap S      a gap between frames longer than S seconds is\n"
 		"                   skipped instead of simulated (default 3600)\n"
-		"  --rss            add the peak resident memory (VmHWM) to the summary\n\n"
+		"  --rss            add the peak resident memory (VmHWM) to the summary\n"
+		"  --summary-json FILE  also write the summary as one JSON document, with\n"
+		"                   the episodes (time spans in one state per corner) and\n"
+		"                   the time per (v0, force) cell; - for stdout (needs\n"
+		"                   --no-output)\n"
+		"  --no-output      do not write the ECU's frames (only count them)\n\n"
 		"CAN FD and XL frames are counted as unsupported (classic controller).\n"
 		"Exit status: 0 done (also with malformed lines), 1 input/calibration\n"
 		"error, 2 bad usage.\n");
@@ -143,13 +155,16 @@ static int parse_u64(const char *flag, const char *text, uint64_t max, uint64_t 
 
 static int replay_parse(int argc, char **argv, replay_args_t *a)
 {
-	enum { OPT_CALIB = 256, OPT_IFACE_OUT, OPT_TAIL, OPT_GAP, OPT_RSS, OPT_HELP };
+	enum { OPT_CALIB = 256, OPT_IFACE_OUT, OPT_TAIL, OPT_GAP, OPT_RSS, OPT_HELP,
+	       OPT_SUMMARY_JSON, OPT_NO_OUTPUT };
 	static const struct option options[] = {
 		{ "calib", required_argument, NULL, OPT_CALIB },
 		{ "iface-out", required_argument, NULL, OPT_IFACE_OUT },
 		{ "tail-ms", required_argument, NULL, OPT_TAIL },
 		{ "max-gap", required_argument, NULL, OPT_GAP },
 		{ "rss", no_argument, NULL, OPT_RSS },
+		{ "summary-json", required_argument, NULL, OPT_SUMMARY_JSON },
+		{ "no-output", no_argument, NULL, OPT_NO_OUTPUT },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ NULL, 0, NULL, 0 },
 	};
@@ -188,6 +203,12 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 		case OPT_RSS:
 			a->rss = true;
 			break;
+		case OPT_SUMMARY_JSON:
+			a->summary_json = optarg;
+			break;
+		case OPT_NO_OUTPUT:
+			a->no_output = true;
+			break;
 		case OPT_HELP:
 		case 'h':
 			replay_usage(stdout);
@@ -203,6 +224,10 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 		return 2;
 	}
 	a->log_name = argv[optind];
+	if ((a->summary_json != NULL) && (strcmp(a->summary_json, "-") == 0) && !a->no_output) {
+		fprintf(stderr, "squeal-sim replay: --summary-json - shares stdout with the frames: add --no-output\n");
+		return 2;
+	}
 	return 0;
 }
 
@@ -215,6 +240,15 @@ static void emit(replay_t *r, const hal_can_frame_t *hf)
 	const msg_desc_t *d;
 	int n;
 
+	if (r->summary != NULL) {
+		replay_summary_on_frame(r->summary, hf);
+	}
+	r->out_frames++;
+	d = ((hf->flags & HAL_CAN_FLAG_EXT) != 0U) ? NULL : msg_desc_find((uint16_t)hf->id);
+	r->out_by_msg[(d != NULL) ? (size_t)(d - msg_table) : MSG_COUNT]++;
+	if (r->no_output) {
+		return;
+	}
 	memset(&f, 0, sizeof(f));
 	f.t_ns = hf->timestamp_us * 1000U;
 	memcpy(f.iface, r->iface, sizeof(f.iface));
@@ -231,9 +265,6 @@ static void emit(replay_t *r, const hal_can_frame_t *hf)
 	if (fwrite(line, 1U, (size_t)n, stdout) != (size_t)n) {
 		r->out_error = true;
 	}
-	r->out_frames++;
-	d = f.ext ? NULL : msg_desc_find((uint16_t)f.id);
-	r->out_by_msg[(d != NULL) ? (size_t)(d - msg_table) : MSG_COUNT]++;
 }
 
 /* After each poll: take what the ECU sent, follow state and warning. */
@@ -298,6 +329,11 @@ static void start(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
 	}
 	(void)squeal_app_init();
 	m = squeal_app_monitor();
+	if (r->summary != NULL) {
+		const rs_corner_ids_t ids = { m->cal.status_id, m->cal.detail_id, m->cal.detail2_id };
+
+		replay_summary_set_ids(r->summary, &ids);
+	}
 	r->state = m->state;
 	r->warning = m->warning;
 }
@@ -511,6 +547,164 @@ static void summary(const replay_t *r, const replay_args_t *a)
 	}
 }
 
+/* ---- summary as JSON (--summary-json; the same counts as summary()) ---------------- */
+
+static void json_pair(json_writer_t *w, const char *key, uint64_t speed, uint64_t force)
+{
+	json_key(w, key);
+	json_begin_object(w);
+	json_kv_u64(w, "total", speed + force);
+	json_kv_u64(w, "DiscSpeed", speed);
+	json_kv_u64(w, "PadForce", force);
+	json_end_object(w);
+}
+
+/* Everything after the episodes: the caller began the object with "log"
+ * and the episodes (replay_summary_init); this closes it. */
+static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_t *a)
+{
+	const monitor_t *m = squeal_app_monitor();
+	const input_counters_t *sp = &m->speed.count;
+	const input_counters_t *fo = &m->force.count;
+	uint64_t changes = 0U;
+	unsigned i;
+	unsigned j;
+
+	replay_summary_finish(r->summary, r->now_us);
+	json_key(w, "lines");
+	json_begin_object(w);
+	json_kv_u64(w, "total", r->lines);
+	json_kv_u64(w, "frames", r->frames);
+	json_kv_u64(w, "comments", r->comments);
+	json_kv_u64(w, "blank", r->blanks);
+	json_kv_u64(w, "dropcount", r->dropcount_lines);
+	json_kv_u64(w, "malformed", r->malformed);
+	json_end_object(w);
+	json_key(w, "started");
+	json_bool(w, r->started);
+	json_kv_seconds(w, "t0_s", r->t0_us);
+	json_kv_seconds(w, "virtual_time_s", r->now_us - r->t0_us);
+	json_kv_u64(w, "tail_ms", a->tail_us / 1000U);
+	json_kv_u64(w, "frames_read", r->frames);
+	json_pair(w, "frames_used", r->started ? sp->used : 0U, r->started ? fo->used : 0U);
+	json_key(w, "rejected");
+	json_begin_object(w);
+	json_kv_u64(w, "malformed_lines", r->malformed);
+	json_key(w, "filtered_ids");
+	json_begin_object(w);
+	json_kv_u64(w, "total", r->filtered_id + r->filtered_rtr + r->filtered_ext);
+	json_kv_u64(w, "other_ids", r->filtered_id);
+	json_kv_u64(w, "remote", r->filtered_rtr);
+	json_kv_u64(w, "extended", r->filtered_ext);
+	json_end_object(w);
+	json_key(w, "unsupported_fd_xl");
+	json_begin_object(w);
+	json_kv_u64(w, "total", r->unsupported_fd + r->unsupported_xl);
+	json_kv_u64(w, "fd", r->unsupported_fd);
+	json_kv_u64(w, "xl", r->unsupported_xl);
+	json_end_object(w);
+	json_pair(w, "e2e_wrong_crc", sp->e2e_wrong_crc, fo->e2e_wrong_crc);
+	json_pair(w, "e2e_wrong_sequence", sp->e2e_wrong_sequence, fo->e2e_wrong_sequence);
+	json_pair(w, "repeated", sp->e2e_repeated, fo->e2e_repeated);
+	json_pair(w, "implausible", sp->implausible, fo->implausible);
+	json_pair(w, "bad_dlc", sp->bad_dlc, fo->bad_dlc);
+	json_kv_u64(w, "error_frames", m->count.error_frames);
+	json_kv_u64(w, "remote_or_extended", m->count.rtr_or_ext);
+	json_kv_u64(w, "rx_overflow", r->rx_overflow);
+	json_end_object(w);
+	json_pair(w, "e2e_frames_lost", sp->e2e_lost, fo->e2e_lost);
+	json_pair(w, "stale_events", sp->stale_events, fo->stale_events);
+	json_kv_u64(w, "candump_dropped", r->dropped);
+	json_kv_u64(w, "time_backwards", r->backwards);
+	json_kv_u64(w, "gaps_skipped", r->gaps);
+	json_key(w, "state_time_s");
+	json_begin_object(w);
+	for (i = 0U; i < N_STATES; i++) {
+		json_kv_seconds(w, state_names[i], r->state_us[i]);
+	}
+	json_end_object(w);
+	json_key(w, "warnings_raised");
+	json_begin_object(w);
+	for (i = 1U; i < N_LEVELS; i++) {
+		json_kv_u64(w, level_names[i], r->into_level[i]);
+	}
+	json_kv_u64(w, "back_to_none", r->into_level[0]);
+	json_end_object(w);
+	json_key(w, "state_changes");
+	json_begin_object(w);
+	for (i = 0U; i < N_STATES; i++) {
+		for (j = 0U; j < N_STATES; j++) {
+			char name[32];
+
+			changes += r->transitions[i][j];
+			if (r->transitions[i][j] != 0U) {
+				(void)snprintf(name, sizeof(name), "%s->%s", state_names[i], state_names[j]);
+				json_kv_u64(w, name, r->transitions[i][j]);
+			}
+		}
+	}
+	json_kv_u64(w, "total", changes);
+	json_end_object(w);
+	json_key(w, "final_state");
+	json_string(w, r->started ? state_names[state_index(m->state)] : NULL);
+	json_key(w, "final_warning");
+	json_string(w, (r->started && (m->warning < N_LEVELS)) ? level_names[m->warning] : NULL);
+	json_key(w, "output_frames");
+	json_begin_object(w);
+	json_kv_u64(w, "total", r->out_frames);
+	for (i = 0U; i < MSG_COUNT; i++) {
+		json_kv_u64(w, msg_table[i].name, r->out_by_msg[i]);
+	}
+	json_kv_u64(w, "other", r->out_by_msg[MSG_COUNT]);
+	json_end_object(w);
+	json_key(w, "output_written");
+	json_bool(w, !a->no_output);
+	json_key(w, "firmware_init_status");
+	json_i64(w, r->started ? squeal_app_init_status() : 0);
+	if (a->rss) {
+		json_key(w, "peak_rss_kb");
+		json_i64(w, vm_hwm_kb());
+	}
+	json_end_object(w);
+}
+
+/* Opens --summary-json's file and starts the document; NULL on error. */
+static FILE *summary_json_open(json_writer_t *w, replay_summary_t *rs, const replay_args_t *a)
+{
+	FILE *f = (strcmp(a->summary_json, "-") == 0) ? stdout : fopen(a->summary_json, "w");
+
+	if (f == NULL) {
+		fprintf(stderr, "squeal-sim replay: cannot write %s: %s\n", a->summary_json,
+			strerror(errno));
+		return NULL;
+	}
+	json_writer_init(w, f);
+	json_begin_object(w);
+	json_kv_string(w, "format", "squeal-replay-summary");
+	json_kv_u64(w, "version", 1U);
+	json_kv_string(w, "log", a->log_name);
+	replay_summary_init(rs, w);
+	return f;
+}
+
+/* Ends the document; 0, or -1 when it could not be written whole. */
+static int summary_json_close(json_writer_t *w, FILE *f, const replay_t *r, const replay_args_t *a)
+{
+	int rc = 0;
+
+	summary_json(w, r, a);
+	if (!json_writer_done(w) || (fflush(f) != 0)) {
+		rc = -1;
+	}
+	if ((f != stdout) && (fclose(f) != 0)) {
+		rc = -1;
+	}
+	if (rc != 0) {
+		fprintf(stderr, "squeal-sim replay: error writing %s\n", a->summary_json);
+	}
+	return rc;
+}
+
 /* ---- main ------------------------------------------------------------------------ */
 
 static int load_calib(const char *path)
@@ -536,6 +730,10 @@ int cmd_replay(int argc, char **argv)
 	static candump_reader_t reader; /* 70 kB: not on the stack */
 	static char outbuf[1U << 16];
 	static replay_t r;
+	static replay_summary_t rs; /* 820 kB of occupancy cells: not on the stack */
+	json_writer_t jw;
+	FILE *json_f = NULL;
+	int json_rc = 0;
 	replay_args_t a;
 	candump_frame_t f;
 	const char *line;
@@ -568,6 +766,17 @@ int cmd_replay(int argc, char **argv)
 			(void)fclose(in);
 		}
 		return 1;
+	}
+	r.no_output = a.no_output;
+	if (a.summary_json != NULL) {
+		json_f = summary_json_open(&jw, &rs, &a);
+		if (json_f == NULL) {
+			if (in != stdin) {
+				(void)fclose(in);
+			}
+			return 1;
+		}
+		r.summary = &rs;
 	}
 	candump_reader_init(&reader, in);
 	for (;;) {
@@ -617,11 +826,14 @@ int cmd_replay(int argc, char **argv)
 	if (r.started) {
 		run_until(&r, r.now_us + a.tail_us);
 	}
+	if (json_f != NULL) {
+		json_rc = summary_json_close(&jw, json_f, &r, &a);
+	}
 	if ((fflush(stdout) != 0) || r.out_error) {
 		fprintf(stderr, "squeal-sim replay: error writing the output\n");
 		summary(&r, &a);
 		return 1;
 	}
 	summary(&r, &a);
-	return (rc < 0) ? 1 : 0;
+	return ((rc < 0) || (json_rc != 0)) ? 1 : 0;
 }

@@ -6,8 +6,14 @@
 #   build/test/test_candump_log     cmocka, ASan+UBSan
 #   tests/replay/test_replay.py     replay/decode end to end (python-can,
 #                                   canmatrix, the reference model)
-#   tests/replay/bench-replay.sh    make bench: replay vs python-can+canmatrix
+#   tests/replay/bench-replay.sh    make bench: replay vs python-can+canmatrix,
+#                                   with and without frame output
+#   host-sim/replay_summary.c, json_writer.c   replay --summary-json (issue 13)
+#   build/test/test_json_writer     cmocka: the JSON writer's output and misuse
+#   tests/replay/test_summary_json.py  the JSON vs Python's json + canmatrix
 REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_replay.c host-sim/cmd_decode.c
+# replay --summary-json (issue 13): episodes per corner, a bounded JSON writer
+REPLAY_SIM_SRCS += host-sim/replay_summary.c host-sim/json_writer.c
 SIM_SRCS += $(REPLAY_SIM_SRCS)
 
 # host.mk's rule expands its prerequisites when it is read (before this
@@ -26,3 +32,14 @@ TEST_PROGS += build/test/test_candump_log tests/replay/test_replay.py
 # make bench: replay/decode throughput vs python-can + canmatrix, peak RSS
 tests/replay/bench-replay.sh: build/host/squeal-sim
 BENCH_PROGS += tests/replay/bench-replay.sh
+
+# replay --summary-json (issue 13): the summary module alone on four-corner
+# frame streams (summary_driver), and the JSON of real replays, both checked
+# with Python's json module and an independent recomputation from the frames
+# decoded by canmatrix.
+build/test/summary_driver: build/test/app/tests/replay/summary_driver.o build/test/app/host-sim/replay_summary.o build/test/app/host-sim/json_writer.o build/test/app/host-sim/candump_log.o build/test/libfirmware.a
+	$(CC) $(OPT_test) -o $@ $^
+tests/replay/test_summary_json.py: build/test/summary_driver build/test/squeal-sim build/test-fixed/squeal-sim
+build/test/test_json_writer: build/test/app/tests/unit/test_json_writer.o build/test/app/host-sim/json_writer.o
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka
+TEST_PROGS += tests/replay/test_summary_json.py build/test/test_json_writer

@@ -10,7 +10,7 @@ build="make gcc libc6-dev"
 demo="$build python3 python3-numpy python3-matplotlib"
 test="$build clang libclang-rt-14-dev gcc-arm-none-eabi libnewlib-arm-none-eabi binutils-arm-none-eabi
  libcmocka-dev valgrind cppcheck python3 python3-numpy python3-scipy python3-matplotlib python3-can
- python3-canmatrix can-utils qemu-system-x86 qemu-system-arm busybox-static cpio kmod iproute2"
+ python3-canmatrix python3-dask python3-distributed can-utils qemu-system-x86 qemu-system-arm busybox-static cpio kmod iproute2"
 case "$purpose" in
 demo) want=$demo ;;
 test) want=$test ;;

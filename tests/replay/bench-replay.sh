@@ -7,6 +7,8 @@
 #     E2E-protected, generated into build/replay-bench/ (not committed);
 #   - squeal-sim replay (release build): the firmware runs every 1 ms tick
 #     (5,000,000 ticks) and writes ~3M output frames to /dev/null;
+#   - replay --no-output (issue 13): the same run without formatting and
+#     writing the frames, and with --summary-json (the fleet's job);
 #   - squeal-sim decode: the same log to physical values (like for like with
 #     the Python script);
 #   - times: median of RUNS (default 3) wall-clock runs each;
@@ -58,6 +60,9 @@ median_s() {
 
 echo "input: $LOG ($N frames, $(du -h "$LOG" | cut -f1))"
 read -r rep_w rep <<<"$(median_s "$RUNS" "$SIM" replay "$LOG")"
+# issue 13: without the frame output (only the summary is wanted)
+read -r nout_w nout <<<"$(median_s "$RUNS" "$SIM" replay --no-output "$LOG")"
+read -r njs_w njs <<<"$(median_s "$RUNS" "$SIM" replay --no-output --summary-json "$DIR/summary.json" "$LOG")"
 read -r dec_w dec <<<"$(median_s "$RUNS" "$SIM" decode "$LOG")"
 read -r py_w py <<<"$(median_s "$PY_RUNS" "$PY" tests/replay/pydecode.py "$LOG")"
 outn=$("$SIM" replay "$LOG" 2>/dev/null | wc -l)
@@ -67,6 +72,11 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.1f", a / b}'; }
 echo "                          CPU s   frames/s (CPU)   wall s  (medians)"
 printf 'squeal-sim replay      %8.2f %14s %10.2f  (%s runs; %s output frames)\n' \
 	"$rep" "$(fps "$rep")" "$rep_w" "$RUNS" "$outn"
+printf 'replay --no-output     %8.2f %14s %10.2f  (%s runs; frames counted, not written)\n' \
+	"$nout" "$(fps "$nout")" "$nout_w" "$RUNS"
+printf 'replay --no-output +JSON %7.2f %14s %10.2f  (%s runs; --summary-json FILE)\n' \
+	"$njs" "$(fps "$njs")" "$njs_w" "$RUNS"
+printf 'speedup without output %8s x (CPU), %s x (wall)\n' "$(ratio "$rep" "$nout")" "$(ratio "$rep_w" "$nout_w")"
 printf 'squeal-sim decode      %8.2f %14s %10.2f  (%s runs)\n' "$dec" "$(fps "$dec")" "$dec_w" "$RUNS"
 printf 'python-can+canmatrix   %8.2f %14s %10.2f  (%s runs, pydecode.py)\n' \
 	"$py" "$(fps "$py")" "$py_w" "$PY_RUNS"

@@ -37,8 +37,7 @@ from matplotlib.colors import ListedColormap  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
 NAMES = {0: "stable", 1: "bistable", 2: "unstable", 3: "not_sliding", 15: "fault"}
-PATH_COLORS = {"stable": "#1a9850", "bistable": "#d98e04", "unstable": "#b2182b",
-               "not_sliding": "#737373", "fault": "#542788"}
+PATH_COLORS = P.PATH_COLORS
 
 
 def state_name(text):
@@ -106,20 +105,6 @@ def read_drive(path, pad_radius=0.12):
     return np.array(t), np.array(v), np.array(n), st, np.array(w)
 
 
-def force_border(p, v0, kind):
-    """Pad force of a border at speed v0 (above it: more critical)."""
-    a, s = p["slope"], p["slope"] * v0
-    base = p["damping"] * p["omega0"] * p["mass"] / (a * p["delta_mu"])
-    if kind == "hopf":
-        lim = math.log(0.5)
-    elif kind == "exact":
-        lim = float(P.ln_i1_over_x(np.array([s]))[0])
-    else:
-        lim = math.log(0.5 + s * s / 16.0)
-    # ln Q = ln(base / N) + s = lim
-    return base * math.exp(s - lim)
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("csv")
@@ -151,7 +136,7 @@ def main():
     for kind, style, lab in (("hopf", P.LINE_HOPF, "Hopf border N_H"),
                              ("exact", P.LINE_EXACT, "exact limit"),
                              ("cubic", P.LINE_CUBIC, "cubic limit (paper)")):
-        ax.plot(vv, [force_border(p, x, kind) / 1000.0 for x in vv], label=lab, **style)
+        ax.plot(vv, [P.force_border(p, x, kind) / 1000.0 for x in vv], label=lab, **style)
     # the path, segment by segment in the reported state's colour
     for i in range(len(t) - 1):
         ax.plot(v[i:i + 2], n[i:i + 2] / 1000.0, color=PATH_COLORS[st[i]], lw=2.4,

@@ -34,6 +34,9 @@ BRAKE_TITLES = {
 
 STATE_COLORS = {"stable": "#cfe8cf", "bistable": "#ffe08a",
                 "unstable": "#f4a6a0", "not_sliding": "#dddddd"}
+# the state the monitor reported (paths, live view, fleet heat map)
+PATH_COLORS = {"stable": "#1a9850", "bistable": "#d98e04", "unstable": "#b2182b",
+               "not_sliding": "#737373", "fault": "#542788"}
 STATE_CODE = {"stable": 0, "bistable": 1, "unstable": 2, "not_sliding": 3}
 LINE_HOPF = dict(color="#b2182b", lw=2.0)
 LINE_EXACT = dict(color="#2166ac", lw=2.0)
@@ -82,6 +85,20 @@ def border_v0(p, a, kind):
     else:
         s = _solve_s(lambda x: math.log(0.5 + x * x / 16.0), c)
     return None if s is None else s / a
+
+
+def force_border(p, v0, kind):
+    """Pad force of a border at speed v0 (above it: more critical)."""
+    a, s = p["slope"], p["slope"] * v0
+    base = p["damping"] * p["omega0"] * p["mass"] / (a * p["delta_mu"])
+    if kind == "hopf":
+        lim = math.log(0.5)
+    elif kind == "exact":
+        lim = float(ln_i1_over_x(np.array([s]))[0])
+    else:
+        lim = math.log(0.5 + s * s / 16.0)
+    # ln Q = ln(base / N) + s = lim
+    return base * math.exp(s - lim)
 
 
 def classify(p, v0, force, criterion="exact"):

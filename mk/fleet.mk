@@ -1,0 +1,21 @@
+# SPDX-License-Identifier: MIT
+# Drives (issue 13): fleet analysis on Dask and the live view.
+#   tools/fleet.py            replay --summary-json over many logs (Dask)
+#   tools/gen_fleet_logs.py   a generated test fleet, a few logs broken
+#   tools/live_view.py        the operating point live over the map
+#   tests/fleet/test_fleet.py 16 logs, LocalCluster + a separate cluster
+#   tests/fleet/bench_fleet.py  make bench: logs/s on 1, 2 workers, cluster
+tests/fleet/test_fleet.py: build/host/squeal-sim
+TEST_PROGS += tests/fleet/test_fleet.py
+tests/fleet/bench_fleet.py: build/host/squeal-sim
+BENCH_PROGS += tests/fleet/bench_fleet.py
+tests/fleet/test_live_view.py: build/host/squeal-sim
+TEST_PROGS += tests/fleet/test_live_view.py
+
+# One command: a generated fleet of 110 logs (6 broken) and its report
+# (build/fleet-report/index.html).
+.PHONY: fleet-report
+fleet-report: build/host/squeal-sim
+	@rm -rf build/fleet
+	@$(PYTHON) tools/gen_fleet_logs.py --out build/fleet --count 110 --broken 6
+	@$(PYTHON) tools/fleet.py --dir build/fleet -o build/fleet-report

@@ -1,0 +1,371 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Fleet analysis: replay many candump logs in parallel on Dask and report
+where and when the brakes ran bistable or unstable.
+
+usage: fleet.py (LOG... | --dir DIR) [--calib FILE] [--scheduler ADDRESS]
+                [-o REPORT_DIR] [--workers N] [--sim PATH] [--timeout S]
+
+Each task runs `squeal-sim replay LOG --no-output --summary-json -` on one
+log (the JSON document the C side defines, host-sim/replay_summary.h).
+Without --scheduler a LocalCluster of --workers processes (default: the
+number of CPUs) runs on this machine; with --scheduler tcp://HOST:PORT the
+same tasks go to an existing cluster (`dask scheduler`, `dask worker`), whose
+workers must see the logs and squeal-sim at the same paths.
+
+A log that cannot be read, is malformed or whose replay fails is listed in
+the report with its reason; it never stops the run. The report (-o, default
+build/fleet-report):
+  state_time.csv   time in each state per log and corner (and ALL rows)
+  episodes.csv     every episode: log, corner, state, start/end, warning,
+                   v0 and force range, lowest Hopf margin
+  cells.csv        time per (v0, force) cell, state and corner (all logs)
+  problems.csv     logs that failed or had malformed lines, with the reason
+  heatmap.png/.svg the time in each (v0, N) cell, coloured by the state the
+                   monitor reported, over the brake's stability borders
+  index.html       all of the above on one page
+  fleet.json       counts and the speed (logs/s)
+The borders are the closed forms of shared/model.md computed with scipy
+(tools/plots/plotlib.py) for the brake of --calib (default: the paper's).
+Exit status: 0 report written (also with failed logs), 1 no report, 2 usage.
+"""
+import argparse
+import csv
+import glob
+import html
+import json
+import os
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import drive_common as DC  # noqa: E402
+
+P = DC.P
+
+
+# ---- the task (runs on a worker; pickled by value with this script) -------
+
+def replay_one(log, sim, calib, timeout_s):
+    """Replay one log; always returns a dict, never raises."""
+    t0 = time.monotonic()
+    res = {"log": log, "status": "ok", "reason": "", "summary": None, "seconds": 0.0}
+    cmd = [sim, "replay", log, "--no-output", "--summary-json", "-"]
+    if calib:
+        cmd += ["--calib", calib]
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           timeout=timeout_s)
+    except subprocess.TimeoutExpired:
+        res.update(status="failed", reason="replay took longer than %g s" % timeout_s)
+        return res
+    except OSError as e:
+        res.update(status="failed", reason="cannot run %s: %s" % (sim, e.strerror))
+        return res
+    finally:
+        res["seconds"] = time.monotonic() - t0
+    err = p.stderr.decode("utf-8", "replace").splitlines()
+    problems = [ln for ln in err if ln.startswith("squeal-sim") or
+                (":" in ln and not ln.startswith(" ") and not ln.startswith("replay summary"))]
+    try:
+        doc = json.loads(p.stdout.decode("utf-8"))
+    except ValueError:
+        doc = None
+    if p.returncode != 0 or doc is None:
+        why = problems[-1] if problems else "exit status %d" % p.returncode
+        res.update(status="failed", reason=why if doc is None else "%s (exit %d)" % (why, p.returncode))
+        res["summary"] = doc
+        return res
+    res["summary"] = doc
+    first = next((ln for ln in problems if not ln.startswith("squeal-sim")), "")
+    if not doc.get("started"):
+        res.update(status="failed", reason="no CAN frames (%d lines, %d malformed%s)"
+                   % (doc["lines"]["total"], doc["lines"]["malformed"],
+                      "; first: " + first if first else ""))
+    elif doc["lines"]["malformed"] > 0:
+        res.update(status="partial", reason="%d malformed lines skipped (first: %s)"
+                   % (doc["lines"]["malformed"], first))
+    return res
+
+
+# ---- running it ------------------------------------------------------------
+
+def run_tasks(logs, args):
+    """Same code path for a LocalCluster and an existing scheduler."""
+    from dask.distributed import Client, LocalCluster, as_completed
+    cluster = None
+    t_start = time.monotonic()
+    if args.scheduler:
+        client = Client(args.scheduler, timeout="30s")
+        where = "cluster at %s" % args.scheduler
+    else:
+        cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
+                               host="127.0.0.1", dashboard_address=None)
+        client = Client(cluster)
+        where = "LocalCluster, %d worker processes" % args.workers
+    try:
+        nworkers = len(client.scheduler_info().get("workers", {}))
+        t_submit = time.monotonic()
+        futures = client.map(replay_one, logs, sim=args.sim, calib=args.calib,
+                             timeout_s=args.timeout, pure=False)
+        results = []
+        for fut in as_completed(futures):
+            try:
+                results.append(fut.result())
+            except Exception as e:  # a worker died: still a listed log
+                log = logs[futures.index(fut)]
+                results.append({"log": log, "status": "failed", "summary": None, "seconds": 0.0,
+                                "reason": "task failed: %s" % (str(e) or type(e).__name__)})
+        t_done = time.monotonic()
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    timing = {"where": where, "workers": nworkers, "job_s": t_done - t_submit,
+              "wall_s": time.monotonic() - t_start}
+    return sorted(results, key=lambda r: r["log"]), timing
+
+
+# ---- the report ------------------------------------------------------------
+
+def fnum(x):
+    return "" if x is None else repr(x) if isinstance(x, float) else str(x)
+
+
+def write_csvs(out, results):
+    ok = [r for r in results if r["status"] != "failed"]
+    totals = {}
+    with open(os.path.join(out, "state_time.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["log", "corner"] + ["%s_s" % s for s in DC.STATES] + ["total_s"])
+        for r in ok:
+            for c in r["summary"]["corners"]:
+                row = [float(c["state_time_s"][s]) for s in DC.STATES]
+                w.writerow([r["log"], c["corner"]] + ["%.6f" % x for x in row] + ["%.6f" % sum(row)])
+                acc = totals.setdefault(c["corner"], [0.0] * len(DC.STATES))
+                for i, x in enumerate(row):
+                    acc[i] += x
+        for corner in DC.CORNERS:
+            if corner in totals:
+                row = totals[corner]
+                w.writerow(["ALL", corner] + ["%.6f" % x for x in row] + ["%.6f" % sum(row)])
+    keys = ["corner", "state", "start_s", "end_s", "warning_level", "v0_min_mps", "v0_max_mps",
+            "force_min_n", "force_max_n", "min_hopf_margin_mps"]
+    n_ep = 0
+    with open(os.path.join(out, "episodes.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["log"] + keys[:4] + ["duration_s"] + keys[4:])
+        for r in ok:
+            for e in r["summary"]["episodes"]:
+                w.writerow([r["log"]] + [fnum(e[k]) for k in keys[:4]] +
+                           ["%.6f" % (e["end_s"] - e["start_s"])] + [fnum(e[k]) for k in keys[4:]])
+                n_ep += 1
+    with open(os.path.join(out, "problems.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["log", "status", "reason"])
+        for r in results:
+            if r["status"] != "ok":
+                w.writerow([r["log"], r["status"], r["reason"]])
+    return totals, n_ep
+
+
+def cells_of(results):
+    """{corner: {(i, j, state): seconds}} over every readable log, and the grid."""
+    grid = None
+    cells = {}
+    for r in results:
+        if r["status"] == "failed":
+            continue
+        grid = r["summary"]["cells_grid"]
+        for c in r["summary"]["corners"]:
+            acc = cells.setdefault(c["corner"], {})
+            for i, j, s, sec in c["cells"]:
+                acc[(i, j, s)] = acc.get((i, j, s), 0.0) + float(sec)
+    return cells, grid
+
+
+def write_cells(out, cells, grid):
+    with open(os.path.join(out, "cells.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["corner", "v0_lo_mps", "v0_hi_mps", "force_lo_n", "force_hi_n", "state", "time_s"])
+        if grid is None:
+            return
+        dv, dn = float(grid["v0_bin_mps"]), float(grid["force_bin_n"])
+        for corner in DC.CORNERS:
+            for (i, j, s), sec in sorted(cells.get(corner, {}).items()):
+                w.writerow([corner, "%.2f" % (i * dv), "%.2f" % ((i + 1) * dv), "%g" % (j * dn),
+                            "%g" % ((j + 1) * dn), s, "%.6f" % sec])
+
+
+def heat_rgba(cells, grid):
+    """RGBA image (force rows x v0 columns): each cell in the colour of the
+    state the monitor reported longest there, opacity growing with log(time)."""
+    from matplotlib.colors import to_rgb
+    np = P.np
+    nv, nf = int(grid["v0_bins"]), int(grid["force_bins"])
+    per = np.zeros((len(DC.STATES), nf, nv))
+    for (i, j, s), sec in cells.items():
+        per[DC.STATES.index(s), j, i] += sec
+    total = per.sum(axis=0)
+    img = np.zeros((nf, nv, 4))
+    if total.max() <= 0:
+        return img, total
+    dom = per.argmax(axis=0)
+    lt = np.log1p(total / 0.01)  # 10 ms (one status period) -> about 0.7
+    for k, s in enumerate(DC.STATES):
+        img[dom == k, :3] = to_rgb(P.PATH_COLORS[s])
+    img[..., 3] = np.where(total > 0, 0.35 + 0.65 * lt / lt.max(), 0.0)
+    return img, total
+
+
+def draw_heatmap(out, cells, grid, p, criterion, title):
+    from matplotlib.patches import Patch
+    plt = P.plt
+    corners = [c for c in DC.CORNERS if c in cells] or ["FL"]
+    ncols = min(len(corners), 2)
+    nrows = (len(corners) + 1) // 2
+    fig, axes = plt.subplots(nrows, ncols, figsize=(6.4 * ncols + 1.8, 5.2 * nrows), squeeze=False)
+    for ax in axes.flat[len(corners):]:
+        ax.set_visible(False)
+    for n, (ax, corner) in enumerate(zip(axes.flat, corners)):
+        if grid is None:
+            DC.draw_map(ax, p, 16.0, 32000.0, criterion)
+            ax.set_title("%s: no readable logs" % corner, fontsize=10)
+            continue
+        dv, dn = float(grid["v0_bin_mps"]), float(grid["force_bin_n"])
+        img, total = heat_rgba(cells.get(corner, {}), grid)
+        used = P.np.argwhere(total > 0)
+        v_max = max(2.0, (used[:, 1].max() + 2) * dv) if len(used) else 4.0
+        n_max = max(4000.0, (used[:, 0].max() + 2) * dn) if len(used) else 20000.0
+        DC.draw_map(ax, p, v_max, n_max, criterion, legend=False, alpha=0.35)
+        ax.imshow(img, origin="lower", aspect="auto", interpolation="nearest",
+                  extent=(0, grid["v0_bins"] * dv, 0, grid["force_bins"] * dn / 1000.0), zorder=3)
+        ax.set_xlim(0, v_max)
+        ax.set_ylim(0, n_max / 1000.0)
+        ax.set_title("%s: %.1f s in %d cells of %.1f m/s x %g N" %
+                     (corner, float(total.sum()), len(used), dv, dn), fontsize=10)
+        if n == ncols - 1:  # one legend, right of the first row
+            handles, _ = ax.get_legend_handles_labels()
+            handles += [Patch(color=P.PATH_COLORS[s], label="reported " + s) for s in DC.STATES]
+            ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                      framealpha=0.9)
+    fig.suptitle(title, fontsize=11)
+    paths = P.save(fig, out, "heatmap")
+    return paths
+
+
+def write_html(out, results, totals, n_ep, timing, border_note):
+    bad = [r for r in results if r["status"] != "ok"]
+    rows = "".join("<tr><td>%s</td>%s<td>%.1f</td></tr>" % (
+        c, "".join("<td>%.1f</td>" % x for x in totals[c]), sum(totals[c]))
+        for c in DC.CORNERS if c in totals)
+    prob = "".join("<tr><td>%s</td><td>%s</td><td>%s</td></tr>" % (
+        html.escape(r["log"]), r["status"], html.escape(r["reason"])) for r in bad)
+    page = """<!DOCTYPE html>
+<html><head><meta charset="utf-8"><title>Fleet report</title>
+<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}
+td,th{border:1px solid #aaa;padding:2px 8px;text-align:right}td:first-child{text-align:left}</style>
+</head><body>
+<h1>Fleet report</h1>
+<p>%d logs: %d ok, %d with malformed lines, %d failed; %d episodes.
+Replayed on %s (%d workers) in %.2f s: %.1f logs/s.</p>
+<h2>Time in each state per corner [s]</h2>
+<table><tr><th>corner</th>%s<th>total</th></tr>%s</table>
+<p>Per log: <a href="state_time.csv">state_time.csv</a>; episodes: <a href="episodes.csv">episodes.csv</a>;
+cells: <a href="cells.csv">cells.csv</a>.</p>
+<h2>Where the brakes operated</h2>
+<p>Time in each (v0, N) cell, coloured by the state the monitor reported longest there
+(more opaque: more time), over the stability map. %s</p>
+<p><img src="heatmap.png" alt="heat map"> (<a href="heatmap.svg">SVG</a>)</p>
+<h2>Logs with problems</h2>
+<table><tr><th>log</th><th>status</th><th>reason</th></tr>%s</table>
+</body></html>
+""" % (len(results), sum(r["status"] == "ok" for r in results),
+       sum(r["status"] == "partial" for r in results),
+       sum(r["status"] == "failed" for r in results), n_ep, html.escape(timing["where"]),
+       timing["workers"], timing["job_s"], len(results) / max(timing["job_s"], 1e-9),
+       "".join("<th>%s</th>" % s for s in DC.STATES), rows, html.escape(border_note),
+       prob or "<tr><td colspan=3>none</td></tr>")
+    with open(os.path.join(out, "index.html"), "w", encoding="utf-8") as f:
+        f.write(page)
+
+
+def find_logs(args):
+    logs = list(args.logs)
+    if args.dir:
+        for path in sorted(glob.glob(os.path.join(args.dir, "**", "*.log"), recursive=True)):
+            logs.append(path)
+    return [os.path.abspath(x) for x in logs]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("logs", nargs="*", metavar="LOG")
+    ap.add_argument("--dir", help="every *.log below DIR")
+    ap.add_argument("--calib", help="calibration text file (replay's --calib and the map's brake)")
+    ap.add_argument("--scheduler", help="address of an existing Dask scheduler (tcp://HOST:PORT)")
+    ap.add_argument("-o", "--out", default=os.path.join(DC.ROOT, "build", "fleet-report"))
+    ap.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+                    help="LocalCluster worker processes (default: CPUs)")
+    ap.add_argument("--sim", default=DC.SIM, help="squeal-sim (default: build/host/squeal-sim)")
+    ap.add_argument("--timeout", type=float, default=600.0, help="seconds per log (default 600)")
+    args = ap.parse_args()
+    logs = find_logs(args)
+    if not logs or args.workers < 1:
+        ap.error("give LOG files or --dir DIR with *.log files, and --workers >= 1")
+    try:
+        p, criterion = DC.brake(DC.read_calib(args.calib))
+    except DC.CalibError as e:
+        print("fleet: %s" % e, file=sys.stderr)
+        return 2
+    args.sim = os.path.abspath(args.sim)
+    args.calib = os.path.abspath(args.calib) if args.calib else None
+    if args.calib:  # one clear error instead of the same one for every log
+        chk = subprocess.run([args.sim, "replay", "-", "--no-output", "--calib", args.calib],
+                             stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE)
+        if chk.returncode != 0:
+            print("fleet: %s" % chk.stderr.decode("utf-8", "replace").strip().splitlines()[0],
+                  file=sys.stderr)
+            return 2
+    try:
+        results, timing = run_tasks(logs, args)
+    except ImportError as e:
+        print("fleet: Dask is missing (%s): apt-get install python3-dask python3-distributed" % e,
+              file=sys.stderr)
+        return 1
+    except (OSError, TimeoutError) as e:
+        print("fleet: cannot reach the Dask scheduler %s: %s" % (args.scheduler or "(local)", e),
+              file=sys.stderr)
+        return 1
+    os.makedirs(args.out, exist_ok=True)
+    totals, n_ep = write_csvs(args.out, results)
+    cells, grid = cells_of(results)
+    write_cells(args.out, cells, grid)
+    border_note = ("Borders: Hopf border and %s stability limit from the closed forms of "
+                   "shared/model.md (scipy, tools/plots/plotlib.py) for a = %g s/m, D = %g, "
+                   "w0 = %g rad/s, m = %g kg, dmu = %g%s." %
+                   (criterion, p["slope"], p["damping"], p["omega0"], p["mass"], p["delta_mu"],
+                    " (from %s)" % args.calib if args.calib else " (the paper's brake)"))
+    draw_heatmap(args.out, cells, grid, p, criterion,
+                 "%d logs: time per (v0, N) cell by reported state" % len(results))
+    write_html(args.out, results, totals, n_ep, timing, border_note)
+    counts = {s: sum(r["status"] == s for r in results) for s in ("ok", "partial", "failed")}
+    rate = len(results) / max(timing["job_s"], 1e-9)
+    with open(os.path.join(args.out, "fleet.json"), "w") as f:
+        json.dump(dict(timing, logs=len(results), episodes=n_ep, logs_per_s=rate,
+                       borders=border_note, **counts), f, indent=1)
+    print("fleet: %d logs (ok %d, partial %d, failed %d), %d episodes; %s, %d workers: "
+          "%.2f s, %.1f logs/s (wall with start-up %.2f s); report in %s" %
+          (len(results), counts["ok"], counts["partial"], counts["failed"], n_ep, timing["where"],
+           timing["workers"], timing["job_s"], rate, timing["wall_s"], args.out))
+    for r in results:
+        if r["status"] != "ok":
+            print("  %s: %s: %s" % (r["log"], r["status"], r["reason"]))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,305 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Live view of a drive: for each corner, the operating point moving over
+its stability map, coloured by the state the monitor reports, with the Hopf
+margin and the warning level over the last seconds.
+
+usage: live_view.py (--iface IF | --log FILE [--rate X]) [--calib FILE]
+                    [--snapshot FILE.png --after S] [--window S]
+                    [--v-max MPS] [--force-max N] [--interface NAME]
+
+Input: the monitor's frames SquealStatus (state, warning, Hopf margin),
+SquealDetail (v0) and SquealDetail2 (pad force) of corners FL, FR, RL, RR
+(corner k on the calibration's identifiers + 0x10 k), decoded with canmatrix
+from firmware/protocol/squeal.dbc; other frames are ignored.
+  --iface IF     a CAN interface (python-can, --interface socketcan by default)
+  --log FILE     a candump -L log (e.g. the output of squeal-sim replay), played
+                 at --rate X times its own speed (default 1; 0: as fast as it
+                 reads; with --snapshot the default is 0)
+  --calib FILE   calibration text file: the brake of the map, the identifiers
+  --snapshot FILE.png --after S
+                 headless: draw one picture S seconds into the drive (log time,
+                 or wall time on an interface; the end of a shorter log) and exit
+The map is the closed-form one of shared/model.md (scipy, tools/plots/plotlib.py).
+Exit status: 0 done, 1 input error (unreadable log, interface), 2 bad usage.
+"""
+import argparse
+import collections
+import math
+import os
+import sys
+import time
+import warnings
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import matplotlib  # noqa: E402
+_GUI_BACKEND = matplotlib.get_backend()
+import drive_common as DC  # noqa: E402  (plotlib selects Agg)
+
+P = DC.P
+KINDS = ("SquealStatus", "SquealDetail", "SquealDetail2")
+
+
+def load_dbc(path=DC.DBC):
+    import logging
+    logging.getLogger("canmatrix").setLevel(logging.ERROR)  # "xls is not supported" etc.
+    import canmatrix.formats
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        dbs = canmatrix.formats.loadp(path)
+    return list(dbs.values())[0]
+
+
+class Corner:
+    """What one corner reported: the latest values and a time window."""
+
+    def __init__(self, name, window_s):
+        self.name = name
+        self.window_s = window_s
+        self.v0 = self.force = self.margin = None
+        self.state, self.warning = "fault", 0
+        self.trail = collections.deque()   # (t, v0, force, state)
+        self.hist = collections.deque()    # (t, margin or nan, warning)
+
+    def trim(self, now):
+        for dq in (self.trail, self.hist):
+            while dq and dq[0][0] < now - self.window_s:
+                dq.popleft()
+
+
+class LiveView:
+    def __init__(self, calib, window_s=10.0, v_max=14.0, n_max=20000.0):
+        self.p, self.criterion = DC.brake(calib)
+        self.ids = {}
+        for k, ids in enumerate(DC.corner_ids(calib)):
+            for kind, cid in zip(KINDS, ids):
+                self.ids[cid] = (DC.CORNERS[k], kind)
+        self.db = load_dbc()
+        self.msgs = {kind: self.db.frame_by_name(kind) for kind in KINDS}
+        self.window_s, self.v_max, self.n_max = window_s, v_max, n_max
+        self.corners = {}
+        self.now = None
+        self.frames = 0
+        self.fig = None
+        self.drawn_corners = ()
+
+    # ---- input ----------------------------------------------------------
+    def _decode(self, kind, data):
+        msg = self.msgs[kind]
+        if len(data) != msg.size:
+            return None
+        out = {}
+        for name, d in msg.decode(bytes(data)).items():
+            na = msg.signal_by_name(name).values.get(d.raw_value) == "not_available"
+            out[name] = None if na else float(d.phys_value)
+        return out
+
+    def on_frame(self, t, can_id, data):
+        """One frame at bus time t [s]; True if it was one of ours."""
+        key = self.ids.get(can_id)
+        if key is None:
+            return False
+        name, kind = key
+        sig = self._decode(kind, data)
+        if sig is None:
+            return False
+        c = self.corners.setdefault(name, Corner(name, self.window_s))
+        self.now = t
+        self.frames += 1
+        if kind == "SquealStatus":
+            raw = int(sig["SquealState"])
+            c.state = DC.STATES[raw] if raw < 4 else "fault"
+            c.warning = int(sig["WarningLevel"])
+            c.margin = sig["HopfMargin_mps"]
+            c.hist.append((t, math.nan if c.margin is None else c.margin, c.warning))
+        elif kind == "SquealDetail":
+            c.v0 = sig["V0_mps"]
+        else:
+            c.force = sig["Force_N"]
+        if kind != "SquealStatus" and c.v0 is not None and c.force is not None:
+            c.trail.append((t, c.v0, c.force, c.state))
+        c.trim(t)
+        return True
+
+    # ---- drawing ----------------------------------------------------------
+    def _build(self):
+        plt = P.plt
+        names = [n for n in DC.CORNERS if n in self.corners] or ["FL"]
+        if self.fig is not None:
+            plt.close(self.fig)
+        self.fig = plt.figure(figsize=(11.0, 4.2 * len(names)), dpi=80)
+        gs = self.fig.add_gridspec(2 * len(names), 2, width_ratios=(1.25, 1.0), hspace=0.45,
+                                   wspace=0.25)
+        self.axes = {}
+        for i, name in enumerate(names):
+            ax = self.fig.add_subplot(gs[2 * i:2 * i + 2, 0])
+            DC.draw_map(ax, self.p, self.v_max, self.n_max, self.criterion, legend=(i == 0))
+            trail = ax.scatter([], [], s=9, zorder=4)
+            point = ax.scatter([], [], s=190, edgecolors="k", linewidths=1.6, zorder=5)
+            title = ax.set_title(name, fontsize=10, loc="left")
+            am = self.fig.add_subplot(gs[2 * i, 1])
+            aw = self.fig.add_subplot(gs[2 * i + 1, 1], sharex=am)
+            (mline,) = am.plot([], [], color="#2166ac")
+            am.axhline(0.0, color=P.LINE_HOPF["color"], lw=1.0)
+            am.set_ylabel("Hopf margin [m/s]", fontsize=8)
+            (wline,) = aw.step([], [], where="post", color="#b2182b")
+            aw.set_ylim(-0.3, 3.3)
+            aw.set_yticks([0, 1, 2, 3])
+            aw.set_yticklabels(["none", "advisory", "warning", "critical"], fontsize=7)
+            aw.set_xlabel("time [s] (0 = now)", fontsize=8)
+            for a in (am, aw):
+                a.set_xlim(-self.window_s, 0.0)
+                a.grid(alpha=0.3)
+            self.axes[name] = dict(map=ax, trail=trail, point=point, title=title, margin=am,
+                                   mline=mline, warn=aw, wline=wline)
+        self.drawn_corners = tuple(names)
+
+    def draw(self):
+        from matplotlib.colors import to_rgba
+        names = tuple(n for n in DC.CORNERS if n in self.corners) or ("FL",)
+        if self.fig is None or names != self.drawn_corners:
+            self._build()
+        now = self.now if self.now is not None else 0.0
+        for name, a in self.axes.items():
+            c = self.corners.get(name)
+            if c is None:
+                a["title"].set_text("%s: no frames yet" % name)
+                continue
+            if c.trail:
+                a["trail"].set_offsets([(v, n / 1000.0) for _, v, n, _ in c.trail])
+                a["trail"].set_facecolors([to_rgba(P.PATH_COLORS[s], 0.55) for *_, s in c.trail])
+            if c.v0 is not None and c.force is not None:
+                a["point"].set_offsets([(min(c.v0, self.v_max), min(c.force, self.n_max) / 1000.0)])
+                a["point"].set_facecolors([P.PATH_COLORS[c.state]])
+            ts = [t - now for t, _, _ in c.hist]
+            a["mline"].set_data(ts, [m for _, m, _ in c.hist])
+            a["wline"].set_data(ts, [w for _, _, w in c.hist])
+            ms = [m for _, m, _ in c.hist if not math.isnan(m)]
+            if ms:
+                lo, hi = min(ms + [0.0]), max(ms + [0.0])
+                a["margin"].set_ylim(lo - 0.1 * (hi - lo) - 0.05, hi + 0.1 * (hi - lo) + 0.05)
+            a["title"].set_text("%s  t = %.2f s: %s, warning %d, v0 %s m/s, N %s N, margin %s m/s" % (
+                name, now, c.state, c.warning, _fmt(c.v0), _fmt(c.force, 0), _fmt(c.margin)))
+        return self.fig
+
+
+def _fmt(x, nd=2):
+    return "-" if x is None else "%.*f" % (nd, x)
+
+
+# ---- sources ---------------------------------------------------------------
+
+def run_log(view, path, rate, after_s=None, on_tick=None):
+    """Feed a candump -L log; stop after after_s seconds of log time."""
+    import can
+    t_first = None
+    wall0 = time.monotonic()
+    next_draw = 0.0
+    for msg in can.LogReader(path):
+        if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id:
+            continue
+        if t_first is None:
+            t_first = msg.timestamp
+        t = msg.timestamp - t_first
+        if after_s is not None and t > after_s:
+            break
+        if rate > 0:
+            wait = t / rate - (time.monotonic() - wall0)
+            if wait > 0:
+                time.sleep(wait)
+        view.on_frame(t, msg.arbitration_id, msg.data)
+        if on_tick is not None and time.monotonic() >= next_draw:
+            on_tick()
+            next_draw = time.monotonic() + 0.1
+    return t_first is not None
+
+
+def run_bus(view, bus, after_s=None, on_tick=None, stop=lambda: False):
+    """Frames from a python-can bus; bus time = wall time since the start."""
+    wall0 = time.monotonic()
+    next_draw = 0.0
+    while not stop():
+        t = time.monotonic() - wall0
+        if after_s is not None and t >= after_s:
+            break
+        msg = bus.recv(timeout=0.05)
+        if msg is not None and not (msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id):
+            view.on_frame(time.monotonic() - wall0, msg.arbitration_id, msg.data)
+        if on_tick is not None and time.monotonic() >= next_draw:
+            on_tick()
+            next_draw = time.monotonic() + 0.1
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    src = ap.add_mutually_exclusive_group(required=True)
+    src.add_argument("--iface", help="CAN interface (e.g. vcan0, can0)")
+    src.add_argument("--log", help="candump -L log")
+    ap.add_argument("--rate", type=float, help="playback speed of --log (default 1; 0 = no waiting)")
+    ap.add_argument("--calib", help="calibration text file")
+    ap.add_argument("--snapshot", help="write one PNG after --after seconds and exit")
+    ap.add_argument("--after", type=float, help="seconds into the drive for --snapshot")
+    ap.add_argument("--window", type=float, default=10.0, help="seconds of history (default 10)")
+    ap.add_argument("--v-max", type=float, default=14.0, help="map's v0 range [m/s] (default 14)")
+    ap.add_argument("--force-max", type=float, default=20000.0, help="map's force range [N] (default 20000)")
+    ap.add_argument("--interface", default="socketcan", help="python-can interface of --iface")
+    args = ap.parse_args(argv)
+    if (args.snapshot is None) != (args.after is None):
+        ap.error("--snapshot FILE.png and --after S go together")
+    if (args.after is not None and args.after < 0) or args.window <= 0 or args.v_max <= 0 \
+            or args.force_max <= 0 or (args.rate is not None and args.rate < 0):
+        ap.error("--after, --rate must be >= 0; --window, --v-max, --force-max > 0")
+    if args.rate is not None and args.iface:
+        ap.error("--rate goes with --log")
+    try:
+        view = LiveView(DC.read_calib(args.calib), args.window, args.v_max, args.force_max)
+    except DC.CalibError as e:
+        print("live_view: %s" % e, file=sys.stderr)
+        return 2
+    headless = args.snapshot is not None
+    plt = P.plt
+    tick = None
+    if not headless:
+        plt.switch_backend(_GUI_BACKEND)
+        plt.ion()
+
+        def tick():
+            view.draw()
+            plt.pause(0.001)
+    rate = args.rate if args.rate is not None else (0.0 if headless else 1.0)
+    try:
+        if args.log:
+            if not os.path.isfile(args.log):
+                print("live_view: %s: no such log file" % args.log, file=sys.stderr)
+                return 1
+            if not run_log(view, args.log, rate, args.after, tick):
+                print("live_view: %s: no CAN frames" % args.log, file=sys.stderr)
+        else:
+            import can
+            with can.Bus(interface=args.interface, channel=args.iface) as bus:
+                run_bus(view, bus, args.after, tick)
+    except (ValueError, OSError, can_errors()) as e:
+        print("live_view: %s: %s" % (args.log or args.iface, e), file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 0
+    fig = view.draw()
+    if headless:
+        fig.savefig(args.snapshot, dpi=fig.dpi)
+        print("live_view: %d frames, %s at t = %.2f s -> %s" % (
+            view.frames, ", ".join("%s %s" % (c.name, c.state) for c in view.corners.values()) or "no corner",
+            view.now or 0.0, args.snapshot))
+    else:
+        plt.ioff()
+        plt.show()
+    return 0
+
+
+def can_errors():
+    import can
+    return can.CanError
+
+
+if __name__ == "__main__":
+    sys.exit(main())
