@@ -409,14 +409,14 @@ static int decode_iface(decoder_t *d, const char *iface)
 		fprintf(stderr, "squeal-sim decode: %s\n", hal_linux_strerror());
 		return 1;
 	}
-	rc = hal_linux_open(iface, NULL);
+	rc = hal_linux_open(0U, iface, NULL);
 	if (rc != SQ_OK) {
 		fprintf(stderr, "squeal-sim decode: %s\n", hal_linux_strerror());
 		return 1;
 	}
 	while (!stop_flag) {
 		hal_idle_until(hal_time_us() + 200000U);
-		while (!stop_flag && (hal_can_receive(&hf) == SQ_OK)) {
+		while (!stop_flag && (hal_can_receive(0U, &hf) == SQ_OK)) {
 			memset(&f, 0, sizeof(f));
 			f.t_ns = hf.timestamp_us * 1000U;
 			f.id = hf.id;

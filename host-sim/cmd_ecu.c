@@ -229,7 +229,7 @@ static void ecu_summary(const uint64_t state_us[5], uint64_t run_us)
 	hal_linux_can_stats_t st;
 	unsigned int i;
 
-	hal_linux_can_get_stats(&st);
+	hal_linux_can_get_stats(0U, &st);
 	fprintf(stderr, "squeal-sim ecu: summary after %.3f s (key=value)\n",
 		(double)run_us / 1e6);
 	fprintf(stderr, "state=%s warning=%u state_changes=%" PRIu32
@@ -295,7 +295,7 @@ int cmd_ecu(int argc, char **argv)
 	}
 	memset(&opts, 0, sizeof(opts));
 	opts.rcvbuf_bytes = a.rcvbuf_bytes;
-	if (hal_linux_open(a.iface, &opts) != SQ_OK) {
+	if (hal_linux_open(0U, a.iface, &opts) != SQ_OK) {
 		fprintf(stderr, "squeal-sim ecu: %s\n", hal_linux_strerror());
 		remove_calibration();
 		return 1;

@@ -47,7 +47,7 @@ build/$(1)/fw/%.o: %.c
 build/$(1)/app/%.o: %.c
 	@mkdir -p $$(@D)
 	$$(FUZZ_CC) $$(WARN) -D_GNU_SOURCE $$(CFLAGS_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -Itests/fuzz -MMD -MP -c $$< -o $$@
-build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS))
+build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS)) build/$(1)/app/$$(HAL_CONTRACT_HOST:.c=.o)
 	@rm -f $$@
 	ar rcs $$@ $$^
 endef

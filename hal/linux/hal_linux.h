@@ -62,13 +62,13 @@ typedef struct {
  *   SQ_EINVAL    bad name, or not a CAN interface (e.g. "lo")
  *   SQ_EIO       permission denied or another system error
  */
-int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts);
+int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *opts);
 
 /* Close the socket (hal_can_* then return SQ_ENETDOWN). Safe to repeat. */
 void hal_linux_close(void);
 
 /* The socket, for a caller's own poll() (-1 when closed). */
-int hal_linux_can_fd(void);
+int hal_linux_can_fd(uint8_t bus);
 
 /* Counters beyond hal_can_status_t, for tests and the host tools. */
 typedef struct {
@@ -86,10 +86,10 @@ typedef struct {
 	uint32_t tx_worst_us;    /* longest hal_can_send() call                  */
 } hal_linux_can_stats_t;
 
-void hal_linux_can_get_stats(hal_linux_can_stats_t *stats);
+void hal_linux_can_get_stats(uint8_t bus, hal_linux_can_stats_t *stats);
 
 /* Back to accepting every data frame (undoes hal_can_set_rx_filter). */
-int hal_linux_can_accept_all(void);
+int hal_linux_can_accept_all(uint8_t bus);
 
 /* ---- errors --------------------------------------------------------------- */
 

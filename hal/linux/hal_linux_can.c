@@ -76,9 +76,15 @@ static struct {
 	struct can_filter filters[HAL_CAN_MAX_FILTERS];
 } can = { .fd = -1, .status = { .state = HAL_CAN_STATE_STOPPED } };
 
-int hal_linux_can_fd(void)
+static int bus_check(uint8_t bus)
 {
-	return can.fd;
+	HAL_REQUIRE(bus < HAL_CAN_BUSES);
+	return (bus == 0U) ? SQ_OK : SQ_ENODEV;
+}
+
+int hal_linux_can_fd(uint8_t bus)
+{
+	return (bus == 0U) ? can.fd : -1;
 }
 
 void hal_linux_close(void)
@@ -110,33 +116,42 @@ static int apply_filter(void)
 	return SQ_OK;
 }
 
-int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
+int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_can_set_rx_filter(ids, count);
-	}
 	uint32_t i;
 
-	if (count > HAL_CAN_MAX_FILTERS || (ids == NULL && count > 0U)) {
-		return SQ_EINVAL;
+	HAL_REQUIRE((count <= HAL_CAN_MAX_FILTERS) && ((filters != NULL) || (count == 0U)));
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	if (hal_vbus_active()) {
+		return hal_vbus_can_set_rx_filter(filters, count);
 	}
 	for (i = 0; i < count; i++) {
-		if (ids[i] > CAN_SFF_MASK) {
+		const bool ext = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U;
+		const uint32_t max = ext ? CAN_EFF_MASK : CAN_SFF_MASK;
+
+		if (filters[i].id > max || filters[i].mask > max) {
 			return SQ_EINVAL;
 		}
 	}
 	for (i = 0; i < count; i++) {
-		/* Same id, standard format, data frame (EFF and RTR must be 0). */
-		can.filters[i].can_id = ids[i];
-		can.filters[i].can_mask = CAN_SFF_MASK | CAN_EFF_FLAG | CAN_RTR_FLAG;
+		const bool ext = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U;
+
+		/* The kind (EFF flag) always matches exactly; RTR is not masked. */
+		can.filters[i].can_id = filters[i].id | (ext ? CAN_EFF_FLAG : 0U);
+		can.filters[i].can_mask = filters[i].mask | CAN_EFF_FLAG;
 	}
 	can.filter_count = count;
 	can.filter_set = true;
 	return apply_filter();
 }
 
-int hal_linux_can_accept_all(void)
+int hal_linux_can_accept_all(uint8_t bus)
 {
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
 	can.filter_set = false;
 	can.filter_count = 0U;
 	return apply_filter();
@@ -158,7 +173,7 @@ static int set_int_opt(int fd, int level, int name, int value, const char *what)
 	return 0;
 }
 
-int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
+int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *opts)
 {
 	static const hal_linux_can_opts_t defaults = { 0 };
 	const can_err_mask_t err_mask = ERR_MASK;
@@ -167,6 +182,9 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 	size_t len;
 	int fd;
 
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
 	hal_linux_close();
 	if (opts == NULL) {
 		opts = &defaults;
@@ -274,8 +292,19 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 	return SQ_OK;
 }
 
-int hal_can_set_bitrate(uint32_t bitrate_kbps)
+int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 {
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	return (mode == HAL_CAN_MODE_NORMAL) ? SQ_OK : SQ_ENOTSUP;
+}
+
+int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
+{
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
 	if (hal_vbus_active()) {
 		return (bitrate_kbps == 0U || bitrate_kbps > 1000U) ? SQ_EINVAL : SQ_OK;
 	}
@@ -284,13 +313,14 @@ int hal_can_set_bitrate(uint32_t bitrate_kbps)
 	return SQ_ENOTSUP;
 }
 
-int hal_can_get_status(hal_can_status_t *status)
+int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 {
+	HAL_REQUIRE(status != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
 	if (hal_vbus_active()) {
 		return hal_vbus_can_get_status(status);
-	}
-	if (status == NULL) {
-		return SQ_EINVAL;
 	}
 	*status = can.status;
 	if (can.fd < 0) {
@@ -299,9 +329,9 @@ int hal_can_get_status(hal_can_status_t *status)
 	return SQ_OK;
 }
 
-void hal_linux_can_get_stats(hal_linux_can_stats_t *stats)
+void hal_linux_can_get_stats(uint8_t bus, hal_linux_can_stats_t *stats)
 {
-	if (stats != NULL) {
+	if ((stats != NULL) && (bus == 0U)) {
 		*stats = can.stats;
 	}
 }
@@ -398,15 +428,16 @@ static uint64_t frame_stamp_us(const struct msghdr *msg)
 	return stamp_us;
 }
 
-int hal_can_receive(hal_can_frame_t *frame)
+int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_can_receive(frame);
-	}
 	int skipped;
 
-	if (frame == NULL) {
-		return SQ_EINVAL;
+	HAL_REQUIRE(frame != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	if (hal_vbus_active()) {
+		return hal_vbus_can_receive(frame);
 	}
 	if (can.fd < 0) {
 		return SQ_ENETDOWN;
@@ -505,16 +536,20 @@ static void note_tx_time(uint64_t start_us)
 	}
 }
 
-int hal_can_send(const hal_can_frame_t *frame)
+int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_can_send(frame);
-	}
 	struct can_frame cf;
 	uint64_t start_us;
 	uint32_t attempt;
 
-	if (frame == NULL || frame->dlc > CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U) {
+	HAL_REQUIRE(frame != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	if (hal_vbus_active()) {
+		return hal_vbus_can_send(frame);
+	}
+	if (frame->dlc > CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U) {
 		return SQ_EINVAL;
 	}
 	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U ? frame->id > CAN_EFF_MASK : frame->id > CAN_SFF_MASK) {

@@ -123,7 +123,7 @@ void hal_idle_until(uint64_t deadline_us)
 	uint64_t now_us = hal_time_us();
 	uint64_t wait_us;
 	struct timespec ts;
-	int can_fd = hal_linux_can_fd();
+	int can_fd = hal_linux_can_fd(0U);
 
 	watchdog_check(now_us);
 	if (stop_flag != NULL && *stop_flag) {

@@ -13,7 +13,7 @@ static struct {
 	uint32_t tx_head;
 	uint32_t tx_count;
 	bool filter_set;
-	uint32_t filter[HAL_CAN_MAX_FILTERS];
+	hal_can_filter_t filter[HAL_CAN_MAX_FILTERS];
 	uint32_t filter_count;
 	hal_can_status_t status;
 	uint8_t calib[HAL_CALIB_MAX_LEN];
@@ -53,11 +53,11 @@ static bool filter_accepts(const hal_can_frame_t *f)
 	if (!vb.filter_set || ((f->flags & HAL_CAN_FLAG_ERR) != 0U)) {
 		return true; /* error frames have their own (always-on) filter */
 	}
-	if ((f->flags & (HAL_CAN_FLAG_EXT | HAL_CAN_FLAG_RTR)) != 0U) {
-		return false; /* the filters match standard data frames only */
-	}
 	for (i = 0; i < vb.filter_count; i++) {
-		if (vb.filter[i] == f->id) {
+		const hal_can_filter_t *flt = &vb.filter[i];
+
+		if ((((flt->flags ^ f->flags) & HAL_CAN_FLAG_EXT) == 0U) &&
+		    ((f->id & flt->mask) == (flt->id & flt->mask))) {
 			return true;
 		}
 	}
@@ -155,18 +155,19 @@ void hal_vbus_set_status(const hal_can_status_t *status)
 	}
 }
 
-int hal_vbus_can_set_rx_filter(const uint32_t *ids, uint32_t count)
+int hal_vbus_can_set_rx_filter(const hal_can_filter_t *filters, uint32_t count)
 {
 	uint32_t i;
 
-	if ((count > HAL_CAN_MAX_FILTERS) || ((ids == NULL) && (count > 0U))) {
-		return SQ_EINVAL;
-	}
 	for (i = 0; i < count; i++) {
-		if (ids[i] > 0x7FFU) {
+		const uint32_t max = ((filters[i].flags & HAL_CAN_FLAG_EXT) != 0U) ? 0x1FFFFFFFU : 0x7FFU;
+
+		if ((filters[i].id > max) || (filters[i].mask > max)) {
 			return SQ_EINVAL;
 		}
-		vb.filter[i] = ids[i];
+	}
+	for (i = 0; i < count; i++) {
+		vb.filter[i] = filters[i];
 	}
 	vb.filter_count = count;
 	vb.filter_set = true;

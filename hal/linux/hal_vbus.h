@@ -58,7 +58,7 @@ void hal_vbus_get_stats(hal_vbus_stats_t *stats);
 int hal_vbus_can_send(const hal_can_frame_t *frame);
 int hal_vbus_can_receive(hal_can_frame_t *frame);
 int hal_vbus_can_get_status(hal_can_status_t *status);
-int hal_vbus_can_set_rx_filter(const uint32_t *ids, uint32_t count);
+int hal_vbus_can_set_rx_filter(const hal_can_filter_t *filters, uint32_t count);
 uint64_t hal_vbus_time_us(void);
 int hal_vbus_calib_read(uint8_t *buf, uint32_t len);
 int hal_vbus_calib_write(const uint8_t *buf, uint32_t len);

@@ -37,7 +37,7 @@ fi
 # layers included; their deviations are listed separately), in groups that
 # share include paths: the ECU HALs take chip.h from their chip directory
 # exactly as mk/target.mk compiles them.
-incs=(-Ifirmware/common -Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor
+incs=(-Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor
       -Ifirmware/app -Ihal)
 groups=(core stm32f4 stm32f103)
 files_core() { find firmware hal/linux -name '*.c' | sort; }

@@ -14,7 +14,7 @@ static struct {
 	uint32_t rx_head;
 	uint32_t rx_count;
 	bool filter_on;
-	uint32_t filter_ids[HAL_CAN_MAX_FILTERS];
+	hal_can_filter_t filters[HAL_CAN_MAX_FILTERS];
 	uint32_t filter_count;
 	bool filter_set;
 
@@ -127,7 +127,7 @@ uint32_t test_hal_rx_filter(uint32_t *ids, uint32_t max)
 	uint32_t i;
 
 	for (i = 0U; (ids != NULL) && (i < th.filter_count) && (i < max); i++) {
-		ids[i] = th.filter_ids[i];
+		ids[i] = th.filters[i].id;
 	}
 	return th.filter_set ? th.filter_count : 0U;
 }
@@ -139,21 +139,28 @@ static bool filter_pass(const hal_can_frame_t *f)
 	if (!th.filter_on || !th.filter_set || ((f->flags & HAL_CAN_FLAG_ERR) != 0U)) {
 		return true; /* error frames are never filtered */
 	}
-	if ((f->flags & HAL_CAN_FLAG_EXT) != 0U) {
-		return false;
-	}
 	for (i = 0U; i < th.filter_count; i++) {
-		if (th.filter_ids[i] == f->id) {
+		const hal_can_filter_t *flt = &th.filters[i];
+
+		if ((((flt->flags ^ f->flags) & HAL_CAN_FLAG_EXT) == 0U) &&
+		    ((f->id & flt->mask) == (flt->id & flt->mask))) {
 			return true;
 		}
 	}
 	return false;
 }
 
-int hal_can_receive(hal_can_frame_t *frame)
+static int bus_check(uint8_t bus)
 {
-	if (frame == NULL) {
-		return SQ_EINVAL;
+	HAL_REQUIRE(bus < HAL_CAN_BUSES);
+	return (bus == 0U) ? SQ_OK : SQ_ENODEV;
+}
+
+int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
+{
+	HAL_REQUIRE(frame != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
 	}
 	if (th.status.state == HAL_CAN_STATE_STOPPED) {
 		return SQ_ENETDOWN;
@@ -171,25 +178,39 @@ int hal_can_receive(hal_can_frame_t *frame)
 	return SQ_EAGAIN;
 }
 
-int hal_can_set_bitrate(uint32_t bitrate_kbps)
+int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 {
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	return (mode == HAL_CAN_MODE_NORMAL) ? SQ_OK : SQ_ENOTSUP;
+}
+
+int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
+{
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
 	return (bitrate_kbps == 0U || bitrate_kbps > 1000U) ? SQ_EINVAL : SQ_OK;
 }
 
-int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
+int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
 	uint32_t i;
 
-	if ((count > HAL_CAN_MAX_FILTERS) || ((ids == NULL) && (count > 0U))) {
-		return SQ_EINVAL;
+	HAL_REQUIRE((count <= HAL_CAN_MAX_FILTERS) && ((filters != NULL) || (count == 0U)));
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
 	}
 	for (i = 0U; i < count; i++) {
-		if (ids[i] > 0x7FFU) {
+		const uint32_t max = ((filters[i].flags & HAL_CAN_FLAG_EXT) != 0U) ? 0x1FFFFFFFU : 0x7FFU;
+
+		if ((filters[i].id > max) || (filters[i].mask > max)) {
 			return SQ_EINVAL;
 		}
 	}
 	for (i = 0U; i < count; i++) {
-		th.filter_ids[i] = ids[i];
+		th.filters[i] = filters[i];
 	}
 	th.filter_count = count;
 	th.filter_set = true;
@@ -198,9 +219,13 @@ int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
 
 /* ---- CAN TX --------------------------------------------------------------- */
 
-int hal_can_send(const hal_can_frame_t *frame)
+int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
-	if ((frame == NULL) || (frame->dlc > HAL_CAN_MAX_DLEN) ||
+	HAL_REQUIRE(frame != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	if ((frame->dlc > HAL_CAN_MAX_DLEN) ||
 	    (frame->id > (((frame->flags & HAL_CAN_FLAG_EXT) != 0U) ? 0x1FFFFFFFU : 0x7FFU))) {
 		return SQ_EINVAL;
 	}
@@ -249,10 +274,11 @@ uint32_t test_hal_tx_rejected(void)
 
 /* ---- CAN status ----------------------------------------------------------- */
 
-int hal_can_get_status(hal_can_status_t *status)
+int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 {
-	if (status == NULL) {
-		return SQ_EINVAL;
+	HAL_REQUIRE(status != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
 	}
 	*status = th.status;
 	return SQ_OK;
