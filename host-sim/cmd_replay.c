@@ -244,7 +244,7 @@ static void after_poll(replay_t *r)
 	unsigned from;
 	unsigned to;
 
-	while (hal_vbus_pop_tx(&f) == SQ_OK) {
+	while (hal_vbus_tx_pop(0U, &f) == SQ_OK) {
 		emit(r, &f);
 	}
 	from = state_index(r->state);
@@ -330,7 +330,8 @@ static void give_frame(replay_t *r, const candump_frame_t *f)
 	} else if (f->ext) {
 		hf.flags |= HAL_CAN_FLAG_EXT;
 	}
-	rc = hal_vbus_push_rx(&hf);
+	hf.timestamp_us = r->now_us; /* arrives now */
+	rc = hal_vbus_rx_push(0U, &hf);
 	if (rc == SQ_ENOENT) {
 		if ((hf.flags & HAL_CAN_FLAG_RTR) != 0U) {
 			r->filtered_rtr++;
@@ -524,7 +525,7 @@ static int load_calib(const char *path)
 		return -1;
 	}
 	if ((calib_encode(&cal, block, sizeof(block)) != SQ_OK) ||
-	    (hal_vbus_set_calib(block, sizeof(block)) != SQ_OK)) {
+	    (hal_vbus_calib_store(block, sizeof(block)) != SQ_OK)) {
 		fprintf(stderr, "squeal-sim replay: %s: cannot store the calibration\n", path);
 		return -1;
 	}
@@ -562,7 +563,7 @@ int cmd_replay(int argc, char **argv)
 		}
 	}
 	(void)setvbuf(stdout, outbuf, _IOFBF, sizeof(outbuf));
-	hal_vbus_enable();
+	hal_vbus_reset();
 	if ((a.calib_path != NULL) && (load_calib(a.calib_path) != 0)) {
 		if (in != stdin) {
 			(void)fclose(in);

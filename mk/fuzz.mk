@@ -111,7 +111,7 @@ TEST_PROGS += tests/fuzz/run-fuzz.sh
 # a flood of random and spoofed frames), both numeric builds, ASan+UBSan.
 # --wrap counts every call of hal_calib_write.
 define calib_wp_rules
-build/$(1)/test_calib_write_protection: build/$(1)/app/tests/fuzz/test_calib_write_protection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a
+build/$(1)/test_calib_write_protection: build/$(1)/app/tests/fuzz/test_calib_write_protection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
 	$$(CC) $$(OPT_$(1)) -Wl,--wrap=hal_calib_write -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,test test-fixed,$(eval $(call calib_wp_rules,$(v))))

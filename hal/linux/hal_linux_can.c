@@ -45,7 +45,6 @@
 #include <linux/can/raw.h>
 
 #include "hal_linux.h"
-#include "hal_vbus.h"
 
 #ifndef CAN_ERR_CNT
 #define CAN_ERR_CNT 0x00000200U
@@ -123,9 +122,6 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 	HAL_REQUIRE((count <= HAL_CAN_MAX_FILTERS) && ((filters != NULL) || (count == 0U)));
 	if (bus_check(bus) != SQ_OK) {
 		return SQ_ENODEV;
-	}
-	if (hal_vbus_active()) {
-		return hal_vbus_can_set_rx_filter(filters, count);
 	}
 	for (i = 0; i < count; i++) {
 		const bool ext = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U;
@@ -305,9 +301,6 @@ int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 	if (bus_check(bus) != SQ_OK) {
 		return SQ_ENODEV;
 	}
-	if (hal_vbus_active()) {
-		return (bitrate_kbps == 0U || bitrate_kbps > 1000U) ? SQ_EINVAL : SQ_OK;
-	}
 	/* the interface's bit rate is set by its administrator (ip link) */
 	(void)bitrate_kbps;
 	return SQ_ENOTSUP;
@@ -318,9 +311,6 @@ int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 	HAL_REQUIRE(status != NULL);
 	if (bus_check(bus) != SQ_OK) {
 		return SQ_ENODEV;
-	}
-	if (hal_vbus_active()) {
-		return hal_vbus_can_get_status(status);
 	}
 	*status = can.status;
 	if (can.fd < 0) {
@@ -436,9 +426,6 @@ int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 	if (bus_check(bus) != SQ_OK) {
 		return SQ_ENODEV;
 	}
-	if (hal_vbus_active()) {
-		return hal_vbus_can_receive(frame);
-	}
 	if (can.fd < 0) {
 		return SQ_ENETDOWN;
 	}
@@ -545,9 +532,6 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 	HAL_REQUIRE(frame != NULL);
 	if (bus_check(bus) != SQ_OK) {
 		return SQ_ENODEV;
-	}
-	if (hal_vbus_active()) {
-		return hal_vbus_can_send(frame);
 	}
 	if (frame->dlc > CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U) {
 		return SQ_EINVAL;

@@ -26,7 +26,6 @@
 #include <unistd.h>
 
 #include "hal_linux.h"
-#include "hal_vbus.h"
 
 static int wake_pipe[2] = { -1, -1 };
 static volatile bool *stop_flag;
@@ -115,9 +114,6 @@ static void watchdog_check(uint64_t now_us)
 
 void hal_idle_until(uint64_t deadline_us)
 {
-	if (hal_vbus_active()) {
-		return; /* the replay driver moves time */
-	}
 	struct pollfd fds[2];
 	nfds_t n = 0;
 	uint64_t now_us = hal_time_us();
