@@ -62,6 +62,9 @@ static const calib_field_t fields[] = {
 	F_U32(hyst_rho_ppm, 0, 1000000),
 	F_U32(rho_warn_ppm, 0, 1000000),
 	F_U16(watchdog_ms, 10, 10000),
+	F_U8(input_bus, 0, 1),
+	F_U8(output_bus, 0, 1),
+	F_U8(input_listen_only, 0, 1),
 };
 
 #define FIELD_COUNT (sizeof(fields) / sizeof(fields[0]))
@@ -107,6 +110,9 @@ void calib_default(calib_t *cal)
 	cal->hyst_rho_ppm = 20000U;        /* 0.02 in rho                     */
 	cal->rho_warn_ppm = 500000U;       /* 0.5                             */
 	cal->watchdog_ms = 100U;
+	cal->input_bus = 0U;          /* one bus, in normal mode: as before */
+	cal->output_bus = 0U;
+	cal->input_listen_only = 0U;
 }
 
 static int64_t field_get(const calib_t *cal, const calib_field_t *f)

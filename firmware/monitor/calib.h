@@ -29,7 +29,7 @@
 #include "squeal_model.h"
 
 #define CALIB_MAGIC 0x42435153UL /* "SQCB" little-endian */
-#define CALIB_VERSION 1U
+#define CALIB_VERSION 2U /* 2: input_bus, output_bus, input_listen_only */
 
 typedef struct {
 	/* model (fixed-build Q-formats, see squeal_model.h) */
@@ -74,10 +74,14 @@ typedef struct {
 	uint32_t rho_warn_ppm;       /* bistable: rho below -> level 2 500000 */
 	/* platform */
 	uint16_t watchdog_ms;        /* IWDG / software watchdog       100 */
+	/* buses (hal.h: 0 .. HAL_CAN_BUSES-1; version 2) */
+	uint8_t input_bus;           /* DiscSpeed/PadForce come from      0 */
+	uint8_t output_bus;          /* Squeal* frames go out on          0 */
+	uint8_t input_listen_only;   /* 1: never send on the input bus    0 */
 } calib_t;
 
 /* Size of the stored block: header 8 + fields + CRC 4. */
-#define CALIB_BLOCK_LEN 103U
+#define CALIB_BLOCK_LEN 106U
 
 /* Why a block was refused (calib_decode's *reason). */
 typedef enum {
