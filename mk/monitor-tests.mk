@@ -24,7 +24,7 @@ define monitor_test_rules
 build/$(1)/app/tests/unit/$(2).o: tests/unit/$(2).c $(MONITOR_EXPECT_H)
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Itests/support -Ibuild/monitor -MMD -MP -c $$< -o $$@
-build/$(1)/$(2): build/$(1)/app/tests/unit/$(2).o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
+build/$(1)/$(2): build/$(1)/app/tests/unit/$(2).o build/$(1)/app/tests/support/test_hal.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(MONITOR_TEST_VARIANTS),$(foreach t,$(MONITOR_TESTS),$(eval $(call monitor_test_rules,$(v),$(t)))))

@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "hal.h"
 #include "sq_status.h"
 
 #define HEADER_LEN 8U
@@ -71,9 +72,7 @@ static const calib_field_t fields[] = {
 
 void calib_default(calib_t *cal)
 {
-	if (cal == NULL) {
-		return;
-	}
+	HAL_REQUIRE(cal != NULL);
 	/* the model's defaults in fixed-build units, whatever this build is */
 	cal->mass_q16 = 1 << 16;
 	cal->omega0_q12 = 5000 << 12;
@@ -178,9 +177,7 @@ int calib_validate(const calib_t *cal)
 {
 	uint32_t i;
 
-	if (cal == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(cal != NULL);
 	for (i = 0U; i < FIELD_COUNT; i++) {
 		const int64_t v = field_get(cal, &fields[i]);
 
@@ -198,9 +195,7 @@ int calib_field_range(uint32_t offset, int64_t *min, int64_t *max)
 {
 	uint32_t i;
 
-	if ((min == NULL) || (max == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((min != NULL) && (max != NULL));
 	for (i = 0U; i < FIELD_COUNT; i++) {
 		if (fields[i].offset == offset) {
 			*min = fields[i].min;
@@ -236,9 +231,9 @@ int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len)
 	uint32_t pos = HEADER_LEN;
 	uint32_t i;
 
-	if ((cal == NULL) || (buf == NULL) || (buf_len < CALIB_BLOCK_LEN) ||
-	    (calib_validate(cal) != SQ_OK)) {
-		return SQ_EINVAL;
+	HAL_REQUIRE((cal != NULL) && (buf != NULL) && (buf_len >= CALIB_BLOCK_LEN));
+	if (calib_validate(cal) != SQ_OK) {
+		return SQ_EINVAL; /* out-of-range values: the data's fault */
 	}
 	put_le(&buf[0], (uint32_t)CALIB_MAGIC, 4U);
 	put_le(&buf[4], CALIB_VERSION, 2U);
@@ -264,9 +259,7 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 	uint32_t pos = HEADER_LEN;
 	uint32_t i;
 
-	if ((buf == NULL) || (cal == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((buf != NULL) && (cal != NULL));
 	calib_default(&tmp); /* every byte of tmp defined before use */
 	if (len < CALIB_BLOCK_LEN) {
 		err = CALIB_ERR_LENGTH;

@@ -96,15 +96,17 @@ typedef enum {
 /* The factory defaults (model.md section 8, the DBC's IDs and periods). */
 void calib_default(calib_t *cal);
 
-/* Range check of every field. SQ_OK or SQ_EINVAL. */
+/* Range check of every field. SQ_OK or SQ_EINVAL. NULL pointers given to
+ * any calib_* function are programming errors: hal_contract_failed(). */
 int calib_validate(const calib_t *cal);
 
-/* Serialize (always CALIB_BLOCK_LEN bytes). SQ_OK, SQ_EINVAL (NULL, short
- * buffer, or a calibration that does not validate). */
+/* Serialize (always CALIB_BLOCK_LEN bytes; a shorter buffer is a
+ * programming error). SQ_OK, SQ_EINVAL (a calibration that does not
+ * validate). */
 int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len);
 
 /* Parse and check a stored block. SQ_OK (*cal written), SQ_EBADMSG (with
- * *reason; *cal untouched), SQ_EINVAL (NULL). reason may be NULL. */
+ * *reason; *cal untouched). reason may be NULL. */
 int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 		 calib_error_t *reason);
 
@@ -112,7 +114,7 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
  * The valid stored range of the field at byte offset `offset` in calib_t
  * (offsetof), from the same table calib_validate() uses, so that other
  * front ends (the text file parser) need no copy of it.
- * SQ_OK, SQ_ENOENT (no field starts there), SQ_EINVAL (NULL).
+ * SQ_OK, SQ_ENOENT (no field starts there).
  */
 int calib_field_range(uint32_t offset, int64_t *min, int64_t *max);
 
