@@ -151,6 +151,14 @@ uint64_t squeal_app_poll(void)
 		}
 		monitor_on_frame(&app_monitor, &f);
 	}
+	/* a separate output bus delivers only its error frames (no filter
+	 * passes a data frame there): counted like the input bus's */
+	for (i = 0U; (i < RX_BUDGET) && (app_monitor.cal.output_bus != app_monitor.cal.input_bus); i++) {
+		if (hal_can_receive(app_monitor.cal.output_bus, &f) != SQ_OK) {
+			break;
+		}
+		monitor_on_frame(&app_monitor, &f);
+	}
 	if (now >= app_next_tick_us) {
 		const uint32_t t0 = hal_cycles();
 		uint32_t cpu = hal_cycles_per_us();
