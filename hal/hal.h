@@ -3,10 +3,11 @@
  * hal.h: the whole hardware boundary of the brake-squeal monitor.
  *
  * firmware/ sees the machine only through these plain functions. Every
- * backend (hal/stm32f4/ bare metal, hal/linux/ SocketCAN, the test HAL in
- * tests/support/) implements all of them with the same meaning and the same
- * return codes (sq_status.h: 0 or a negative SQ_E* code). No function blocks:
- * each returns at once or within a documented, bounded time.
+ * backend (hal/stm32f4/ bare metal, hal/linux/ SocketCAN, hal/vbus/ in
+ * memory; one per program, chosen at link time) implements all of them with
+ * the same meaning and the same return codes (sq_status.h: 0 or a negative
+ * SQ_E* code); tests/hal/conformance.c checks that on each. No function
+ * blocks: each returns at once or within a documented, bounded time.
  */
 #ifndef HAL_H
 #define HAL_H
