@@ -32,7 +32,7 @@ void hal_vbus_can_reset(void)
 {
 	uint32_t b;
 
-	memset(buses, 0, sizeof(buses));
+	(void)memset(buses, 0, sizeof(buses));
 	for (b = 0U; b < HAL_CAN_BUSES; b++) {
 		buses[b].status.state = HAL_CAN_STATE_ERROR_ACTIVE;
 		buses[b].status.mode = HAL_CAN_MODE_NORMAL;
@@ -329,6 +329,6 @@ void hal_vbus_get_stats(uint8_t bus, hal_vbus_stats_t *stats)
 	if (b != NULL) {
 		*stats = b->stats;
 	} else {
-		memset(stats, 0, sizeof(*stats));
+		(void)memset(stats, 0, sizeof(*stats));
 	}
 }

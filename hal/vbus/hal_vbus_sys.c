@@ -26,7 +26,7 @@ static struct {
 
 void hal_vbus_sys_reset(void)
 {
-	memset(&sys, 0, sizeof(sys));
+	(void)memset(&sys, 0, sizeof(sys));
 	sys.reset_reason = HAL_RESET_POWER_ON;
 }
 
@@ -84,9 +84,9 @@ int hal_vbus_calib_store(const uint8_t *block, uint32_t len)
 	if ((len > HAL_CALIB_MAX_LEN) || ((block == NULL) && (len > 0U))) {
 		return SQ_EINVAL;
 	}
-	memset(sys.calib, 0xFF, sizeof(sys.calib)); /* erased flash */
+	(void)memset(sys.calib, 0xFF, sizeof(sys.calib)); /* erased flash */
 	if (len > 0U) {
-		memcpy(sys.calib, block, len);
+		(void)memcpy(sys.calib, block, len);
 	}
 	sys.calib_len = len;
 	sys.calib_present = true;
@@ -110,7 +110,7 @@ uint32_t hal_vbus_calib_stored(uint8_t *buf, uint32_t max)
 		return 0U;
 	}
 	if (buf != NULL) {
-		memcpy(buf, sys.calib, (sys.calib_len < max) ? sys.calib_len : max);
+		(void)memcpy(buf, sys.calib, (sys.calib_len < max) ? sys.calib_len : max);
 	}
 	return sys.calib_len;
 }
@@ -127,7 +127,7 @@ int hal_calib_read(uint8_t *buf, uint32_t len)
 		return SQ_ENOENT;
 	}
 	/* like flash: the bytes beyond what was written read as erased */
-	memcpy(buf, sys.calib, len);
+	(void)memcpy(buf, sys.calib, len);
 	return SQ_OK;
 }
 
