@@ -151,13 +151,15 @@ uint64_t squeal_app_poll(void)
 		}
 		monitor_on_frame(&app_monitor, &f);
 	}
-	/* a separate output bus delivers only its error frames (no filter
-	 * passes a data frame there): counted like the input bus's */
+	/* a separate output bus: only its error frames count (its filter
+	 * passes no data frame; one that arrives anyway is not an input) */
 	for (i = 0U; (i < RX_BUDGET) && (app_monitor.cal.output_bus != app_monitor.cal.input_bus); i++) {
 		if (hal_can_receive(app_monitor.cal.output_bus, &f) != SQ_OK) {
 			break;
 		}
-		monitor_on_frame(&app_monitor, &f);
+		if ((f.flags & HAL_CAN_FLAG_ERR) != 0U) {
+			monitor_on_frame(&app_monitor, &f);
+		}
 	}
 	if (now >= app_next_tick_us) {
 		const uint32_t t0 = hal_cycles();
