@@ -147,13 +147,8 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 	if (c == NULL) {
 		return SQ_ENODEV;
 	}
-	for (i = 0; i < count; i++) {
-		const bool ext = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U;
-		const uint32_t max = ext ? CAN_EFF_MASK : CAN_SFF_MASK;
-
-		if (filters[i].id > max || filters[i].mask > max) {
-			return SQ_EINVAL;
-		}
+	if (!hal_can_filters_in_range(filters, count)) {
+		return SQ_EINVAL;
 	}
 	for (i = 0; i < count; i++) {
 		const bool ext = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U;

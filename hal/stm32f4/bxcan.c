@@ -311,13 +311,8 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 	if (bus_check(bus) != SQ_OK) {
 		return SQ_ENODEV;
 	}
-	for (b = 0; b < count; b++) {
-		const uint32_t max = ((filters[b].flags & HAL_CAN_FLAG_EXT) != 0U) ? HAL_CAN_EXT_ID_MAX
-										 : HAL_CAN_STD_ID_MAX;
-
-		if ((filters[b].id > max) || (filters[b].mask > max)) {
-			return SQ_EINVAL;
-		}
+	if (!hal_can_filters_in_range(filters, count)) {
+		return SQ_EINVAL;
 	}
 	CAN_FMR(CAN_BASE) |= CAN_FMR_FINIT;
 	CAN_FA1R(CAN_BASE) &= ~((1UL << CAN1_FILTER_BANKS) - 1U);

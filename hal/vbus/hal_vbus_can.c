@@ -167,11 +167,8 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 	if (b == NULL) {
 		return SQ_ENODEV;
 	}
-	for (i = 0U; i < count; i++) {
-		if ((filters[i].id > id_max(filters[i].flags)) ||
-		    (filters[i].mask > id_max(filters[i].flags))) {
-			return SQ_EINVAL;
-		}
+	if (!hal_can_filters_in_range(filters, count)) {
+		return SQ_EINVAL;
 	}
 	for (i = 0U; i < count; i++) {
 		b->filters[i] = filters[i];

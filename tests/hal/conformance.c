@@ -87,8 +87,10 @@ static bool same_frame(const hal_can_frame_t *a, const hal_can_frame_t *b)
 	       (memcmp(a->data, b->data, a->dlc) == 0);
 }
 
-/* Every frame bus has received, oldest first (at most max). */
-static uint32_t drain(uint8_t bus, hal_can_frame_t *out, uint32_t max)
+typedef int (*take_fn_t)(uint8_t bus, hal_can_frame_t *frame);
+
+/* Every frame `take` gives for bus, oldest first (at most max kept). */
+static uint32_t take_all(take_fn_t take, uint8_t bus, hal_can_frame_t *out, uint32_t max)
 {
 	hal_can_frame_t scratch;
 	uint32_t n = 0U;
@@ -97,7 +99,7 @@ static uint32_t drain(uint8_t bus, hal_can_frame_t *out, uint32_t max)
 	for (i = 0U; i < MAX_DRAIN; i++) {
 		hal_can_frame_t *f = (n < max) ? &out[n] : &scratch;
 
-		if (hal_can_receive(bus, f) != SQ_OK) {
+		if (take(bus, f) != SQ_OK) {
 			break;
 		}
 		n++;
@@ -105,22 +107,15 @@ static uint32_t drain(uint8_t bus, hal_can_frame_t *out, uint32_t max)
 	return n;
 }
 
-/* Every frame this node put on bus's wire (at most max). */
+/* What bus has received / what this node put on bus's wire. */
+static uint32_t drain(uint8_t bus, hal_can_frame_t *out, uint32_t max)
+{
+	return take_all(hal_can_receive, bus, out, max);
+}
+
 static uint32_t wire(uint8_t bus, hal_can_frame_t *out, uint32_t max)
 {
-	hal_can_frame_t scratch;
-	uint32_t n = 0U;
-	uint32_t i;
-
-	for (i = 0U; i < MAX_DRAIN; i++) {
-		hal_can_frame_t *f = (n < max) ? &out[n] : &scratch;
-
-		if (conf_wire_take(bus, f) != SQ_OK) {
-			break;
-		}
-		n++;
-	}
-	return n;
+	return take_all(conf_wire_take, bus, out, max);
 }
 
 static void inject_all(uint8_t bus, const hal_can_frame_t *f, uint32_t n)
