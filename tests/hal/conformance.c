@@ -66,6 +66,16 @@ static void skip(uint8_t bus, const char *what, const char *why)
 	n_skip++;
 }
 
+/* A fresh backend for one check; a failed set-up is that check's FAIL. */
+static bool set_up(uint8_t bus, const char *what)
+{
+	if (conf_backend_setup() != SQ_OK) {
+		report(false, bus, what, "harness set-up failed");
+		return false;
+	}
+	return true;
+}
+
 static hal_can_frame_t frame(uint32_t id, uint8_t flags, uint8_t dlc, uint8_t seed)
 {
 	hal_can_frame_t f;
@@ -175,8 +185,7 @@ static void check_filters(uint8_t bus)
 		bool ok = true;
 		int rc;
 
-		if (conf_backend_setup() != SQ_OK) {
-			report(false, bus, k->what, "harness set-up failed");
+		if (!set_up(bus, k->what)) {
 			continue;
 		}
 		rc = hal_can_set_rx_filter(bus, k->filter, k->count);
@@ -209,8 +218,7 @@ static void check_filter_range(uint8_t bus)
 	int r2;
 	int r3;
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, "filter: ids and masks out of range refused", "harness set-up failed");
+	if (!set_up(bus, "filter: ids and masks out of range refused")) {
 		return;
 	}
 	r1 = hal_can_set_rx_filter(bus, &bad_std, 1U);
@@ -238,8 +246,7 @@ static void check_receive_order_and_time(uint8_t bus)
 	bool order = true;
 	bool mono = true;
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, "receive order", "harness set-up failed");
+	if (!set_up(bus, "receive order")) {
 		return;
 	}
 	t0 = hal_time_us();
@@ -274,8 +281,7 @@ static void check_error_frame(uint8_t bus)
 	uint32_t n;
 	int rc;
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, what, "harness set-up failed");
+	if (!set_up(bus, what)) {
 		return;
 	}
 	/* error frames are never filtered: a filter that passes nothing else */
@@ -310,8 +316,7 @@ static void check_send(uint8_t bus)
 	int rc = SQ_OK;
 	bool same = true;
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, "send", "harness set-up failed");
+	if (!set_up(bus, "send")) {
 		return;
 	}
 	for (i = 0U; i < 3U; i++) {
@@ -344,8 +349,7 @@ static void check_tx_full(uint8_t bus)
 	uint32_t accepted = 0U;
 	int rc = SQ_OK;
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, what, "harness set-up failed");
+	if (!set_up(bus, what)) {
 		return;
 	}
 	if (conf_block_tx(bus, true) == SQ_ENOTSUP) {
@@ -384,8 +388,7 @@ static void check_bus_off(uint8_t bus)
 	int rc_on;
 	int rc;
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, what, "harness set-up failed");
+	if (!set_up(bus, what)) {
 		return;
 	}
 	(void)hal_can_get_status(bus, &st0);
@@ -426,8 +429,7 @@ static void check_listen_only(uint8_t bus)
 	int rc_mode;
 	int rc;
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, "listen-only", "harness set-up failed");
+	if (!set_up(bus, "listen-only")) {
 		return;
 	}
 	rc_mode = hal_can_set_mode(bus, HAL_CAN_MODE_LISTEN_ONLY);
@@ -474,8 +476,7 @@ static void check_isolation(uint8_t bus)
 	uint32_t wire_other;
 	int rc;
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, "isolation", "harness set-up failed");
+	if (!set_up(bus, "isolation")) {
 		return;
 	}
 	inject_all(bus, &in, 1U);
@@ -500,8 +501,7 @@ static void check_no_such_bus(uint8_t bus)
 	hal_can_status_t st;
 	int rc[5];
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, bus, "no such bus", "harness set-up failed");
+	if (!set_up(bus, "no such bus")) {
 		return;
 	}
 	rc[0] = hal_can_send(bus, &f);
@@ -523,8 +523,7 @@ static void check_contracts(void)
 	hal_can_frame_t r;
 	volatile uint32_t caught = 0U; /* kept across the handler's longjmp */
 
-	if (conf_backend_setup() != SQ_OK) {
-		report(false, 0U, "contracts", "harness set-up failed");
+	if (!set_up(0U, "contracts")) {
 		return;
 	}
 	memset(many, 0, sizeof(many));

@@ -75,6 +75,23 @@ static void drive(uint8_t bus)
 	}
 }
 
+/* boot, drive the input bus, check every input was used; the input bus's
+ * status afterwards */
+static hal_can_status_t run(uint8_t in, uint8_t out, uint8_t listen_only)
+{
+	const monitor_t *m = squeal_app_monitor();
+	hal_can_status_t st;
+
+	boot(in, out, listen_only);
+	drive(in);
+	assert_int_equal(m->speed.count.used, PAIRS);
+	assert_int_equal(m->force.count.used, PAIRS);
+	assert_int_equal(m->speed.count.e2e_wrong_crc, 0);
+	assert_int_equal(hal_can_get_status(in, &st), SQ_OK);
+	assert_int_equal(st.mode, (listen_only != 0U) ? HAL_CAN_MODE_LISTEN_ONLY : HAL_CAN_MODE_NORMAL);
+	return st;
+}
+
 static uint32_t sent_on_bus1(uint32_t id)
 {
 	hal_can_frame_t f;
@@ -88,80 +105,52 @@ static uint32_t sent_on_bus1(uint32_t id)
 
 static void test_inputs_on_bus1_listen_only_outputs_on_bus0(void **state)
 {
-	const monitor_t *m = squeal_app_monitor();
-	hal_can_status_t st;
+	const hal_can_status_t st = run(1U, 0U, 1U);
 	hal_vbus_stats_t vs;
 
 	(void)state;
-	boot(1U, 0U, 1U);
-	drive(1U);
-	assert_int_equal(m->speed.count.used, PAIRS);
-	assert_int_equal(m->force.count.used, PAIRS);
-	assert_int_equal(m->speed.count.e2e_wrong_crc, 0);
 	assert_true(test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, 0U) >= 0);
-	/* the input bus: listen-only, and never asked to send */
-	assert_int_equal(hal_can_get_status(1U, &st), SQ_OK);
-	assert_int_equal(st.mode, HAL_CAN_MODE_LISTEN_ONLY);
+	/* the listen-only input bus is never asked to send */
 	assert_int_equal(st.tx_refused_listen_only, 0);
 	hal_vbus_get_stats(1U, &vs);
 	assert_int_equal(vs.tx_frames, 0);
 	assert_int_equal(vs.tx_refused, 0);
-	assert_int_equal(sent_on_bus1(EXP_DBC_SQUEALSTATUS_ID), 0);
-	assert_int_equal(m->count.tx_errors, 0);
+	assert_int_equal(squeal_app_monitor()->count.tx_errors, 0);
 }
 
 static void test_inputs_on_bus0_listen_only_outputs_on_bus1(void **state)
 {
-	const monitor_t *m = squeal_app_monitor();
-	hal_can_status_t st;
+	const hal_can_status_t st = run(0U, 1U, 1U);
 
 	(void)state;
-	boot(0U, 1U, 1U);
-	drive(0U);
-	assert_int_equal(m->speed.count.used, PAIRS);
-	assert_int_equal(m->force.count.used, PAIRS);
-	assert_int_equal(test_hal_tx_count(), 0);       /* nothing on bus 0 */
-	assert_int_equal(test_hal_tx_rejected(), 0);    /* not even tried   */
-	assert_int_equal(hal_can_get_status(0U, &st), SQ_OK);
-	assert_int_equal(st.mode, HAL_CAN_MODE_LISTEN_ONLY);
+	assert_int_equal(st.tx_refused_listen_only, 0);
+	assert_int_equal(test_hal_tx_count(), 0);    /* nothing on bus 0 */
+	assert_int_equal(test_hal_tx_rejected(), 0); /* not even tried   */
 	/* SquealStatus every 10 ms from T0 (status_period_ms 10, hand count) */
 	assert_true(sent_on_bus1(EXP_DBC_SQUEALSTATUS_ID) >= (PAIRS * IN_PERIOD_US + 100000U) / 10000U);
-	assert_int_equal(m->count.tx_errors, 0);
+	assert_int_equal(squeal_app_monitor()->count.tx_errors, 0);
 }
 
 static void test_listen_only_output_bus_refuses_and_counts(void **state)
 {
-	const monitor_t *m = squeal_app_monitor();
-	hal_can_status_t st;
+	/* a configuration that cannot send: counted, never silent */
+	const hal_can_status_t st = run(0U, 0U, 1U);
 
 	(void)state;
-	boot(0U, 0U, 1U); /* a configuration that cannot send: counted, never silent */
-	drive(0U);
-	assert_int_equal(m->speed.count.used, PAIRS);
 	assert_int_equal(test_hal_tx_count(), 0);
-	assert_int_equal(hal_can_get_status(0U, &st), SQ_OK);
 	assert_true(st.tx_refused_listen_only > 0U);
-	assert_int_equal(m->count.tx_errors, st.tx_refused_listen_only);
+	assert_int_equal(squeal_app_monitor()->count.tx_errors, st.tx_refused_listen_only);
 }
 
 static void test_defaults_are_one_bus_in_normal_mode(void **state)
 {
-	const monitor_t *m = squeal_app_monitor();
-	hal_can_status_t st;
+	hal_can_filter_t f[HAL_CAN_MAX_FILTERS];
 
 	(void)state;
-	boot(0U, 0U, 0U);
-	drive(0U);
-	assert_int_equal(m->speed.count.used, PAIRS);
+	(void)run(0U, 0U, 0U);
 	assert_true(test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, 0U) >= 0);
-	assert_int_equal(hal_can_get_status(0U, &st), SQ_OK);
-	assert_int_equal(st.mode, HAL_CAN_MODE_NORMAL);
 	assert_int_equal(sent_on_bus1(EXP_DBC_SQUEALSTATUS_ID), 0);
-	{
-		hal_can_filter_t f[HAL_CAN_MAX_FILTERS];
-
-		assert_int_equal(hal_vbus_rx_filters(1U, f, HAL_CAN_MAX_FILTERS), 0); /* bus 1 untouched */
-	}
+	assert_int_equal(hal_vbus_rx_filters(1U, f, HAL_CAN_MAX_FILTERS), 0); /* bus 1 untouched */
 }
 
 int main(void)
