@@ -54,9 +54,8 @@ int e2e_p01_crc(const e2e_p01_config_t *cfg, const uint8_t *data,
 
 void e2e_p01_tx_init(e2e_p01_tx_t *tx)
 {
-	if (tx != NULL) {
-		tx->counter = 0U;
-	}
+	HAL_REQUIRE(tx != NULL);
+	tx->counter = 0U;
 }
 
 int e2e_p01_protect(const e2e_p01_config_t *cfg, e2e_p01_tx_t *tx,
@@ -72,9 +71,7 @@ int e2e_p01_protect(const e2e_p01_config_t *cfg, e2e_p01_tx_t *tx,
 
 void e2e_p01_rx_reset(e2e_p01_rx_t *rx)
 {
-	if (rx == NULL) {
-		return;
-	}
+	HAL_REQUIRE(rx != NULL);
 	rx->last_valid_counter = 0U;
 	rx->max_delta_counter = 0U;
 	rx->lost_data = 0U;
@@ -87,9 +84,7 @@ void e2e_p01_rx_init(e2e_p01_rx_t *rx)
 {
 	size_t i;
 
-	if (rx == NULL) {
-		return;
-	}
+	HAL_REQUIRE(rx != NULL);
 	e2e_p01_rx_reset(rx);
 	for (i = 0; i < (size_t)E2E_P01_STATUS_COUNT; i++) {
 		rx->status_count[i] = 0U;
