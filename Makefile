@@ -18,7 +18,7 @@ CC := gcc
 endif
 NUMERIC ?= float
 
-FW_DIRS := firmware/common firmware/model firmware/protocol firmware/monitor firmware/app
+FW_DIRS := firmware/model firmware/protocol firmware/monitor firmware/app
 FW_SRCS := $(sort $(wildcard $(addsuffix /*.c,$(FW_DIRS))))
 FW_INC := $(addprefix -I,$(FW_DIRS)) -Ihal
 
@@ -53,11 +53,16 @@ build/$(1)/fw/%.o: %.c
 	$$(CC) $$(WARN) $$(FW_FLAGS) $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(if $$(filter fixed,$$(NUM_$(1))),$$(FIXED_ONLY_INT)) $$(FW_INC) -MMD -MP -c $$< -o $$@
 build/$(1)/app/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -MMD -MP -c $$< -o $$@
-build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS))
+	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Ihal/vbus -Itests/support -MMD -MP -c $$< -o $$@
+build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS)) build/$(1)/app/$$(HAL_CONTRACT_HOST:.c=.o)
 	@rm -f $$@
 	ar rcs $$@ $$^
 endef
+# On the host the firmware library carries hal.h's default contract handler
+# (print FILE:LINE, abort) as its own member, so every host program that
+# links libfirmware.a has one; a HAL backend library or a test that defines
+# hal_contract_failed itself is linked first and wins.
+HAL_CONTRACT_HOST := hal/host/hal_contract_abort.c
 $(foreach v,$(VARIANTS),$(eval $(call variant_rules,$(v))))
 
 LDLIBS_host := -lm

@@ -3,10 +3,11 @@
  * hal.h: the whole hardware boundary of the brake-squeal monitor.
  *
  * firmware/ sees the machine only through these plain functions. Every
- * backend (hal/stm32f4/ bare metal, hal/linux/ SocketCAN, the test HAL in
- * tests/support/) implements all of them with the same meaning and the same
- * return codes (sq_status.h: 0 or a negative SQ_E* code). No function blocks:
- * each returns at once or within a documented, bounded time.
+ * backend (hal/stm32f4/ bare metal, hal/linux/ SocketCAN, hal/vbus/ in
+ * memory; one per program, chosen at link time) implements all of them with
+ * the same meaning and the same return codes (sq_status.h: 0 or a negative
+ * SQ_E* code); tests/hal/conformance.c checks that on each. No function
+ * blocks: each returns at once or within a documented, bounded time.
  */
 #ifndef HAL_H
 #define HAL_H
@@ -18,12 +19,25 @@
 
 /* ---- CAN ---------------------------------------------------------------- */
 
+/*
+ * Buses. Every CAN call names its bus: 0 .. HAL_CAN_BUSES-1 (the ECU's CAN1
+ * and CAN2; on Linux the interfaces given to the backend, e.g. can0 and can1).
+ * A bus index >= HAL_CAN_BUSES, or a NULL pointer, is a programming error:
+ * it goes to hal_contract_failed() and never returns an error code. A bus
+ * that is a valid index but does not exist on this platform (the STM32F103's
+ * bus 1, a Linux backend opened with one interface) answers SQ_ENODEV.
+ */
+#define HAL_CAN_BUSES 2U
+
 #define HAL_CAN_MAX_DLEN 8U
 
 /* Flags of a hal_can_frame_t (Zephyr-like: one frame type for every backend). */
 #define HAL_CAN_FLAG_EXT (1U << 0) /* 29-bit identifier                      */
 #define HAL_CAN_FLAG_RTR (1U << 1) /* remote frame: no data                  */
 #define HAL_CAN_FLAG_ERR (1U << 2) /* error frame: id holds the error class  */
+
+#define HAL_CAN_STD_ID_MAX 0x7FFUL
+#define HAL_CAN_EXT_ID_MAX 0x1FFFFFFFUL
 
 typedef struct {
 	uint32_t id;          /* 11 or 29 bit identifier                      */
@@ -42,51 +56,107 @@ typedef enum {
 	HAL_CAN_STATE_STOPPED = 4        /* not started / interface down        */
 } hal_can_state_t;
 
+/*
+ * Mode of one bus. LISTEN_ONLY: this node puts nothing on that bus, no data
+ * frame, no ACK bit, no error frame (bxCAN silent mode; on Linux the HAL
+ * refuses every send and the interface itself is set listen-only by the
+ * administrator: `ip link set can0 type can listen-only on`). Receiving is
+ * unchanged.
+ */
+typedef enum {
+	HAL_CAN_MODE_NORMAL = 0,
+	HAL_CAN_MODE_LISTEN_ONLY = 1
+} hal_can_mode_t;
+
 typedef struct {
 	hal_can_state_t state;
+	hal_can_mode_t mode;
 	uint8_t tx_error_count;   /* TEC */
 	uint8_t rx_error_count;   /* REC */
 	uint32_t bus_off_count;   /* bus-off events since start (cumulative)    */
 	uint32_t rx_overruns;     /* frames lost before firmware saw them       */
 	uint32_t tx_dropped;      /* frames the backend had to give up          */
+	uint32_t tx_refused_listen_only; /* sends refused: bus is listen-only  */
 	uint32_t error_frames;    /* error frames / controller problems seen    */
 } hal_can_status_t;
 
 /*
- * Queue one frame for sending. Never blocks.
+ * One acceptance filter: a received data or remote frame passes when
+ * (frame.id & mask) == (id & mask) and its kind (standard or extended,
+ * HAL_CAN_FLAG_EXT in flags) is the filter's. mask 0 with the EXT flag
+ * clear passes every standard frame. Error frames are never filtered.
+ */
+typedef struct {
+	uint32_t id;
+	uint32_t mask;
+	uint8_t flags;        /* HAL_CAN_FLAG_EXT or 0                        */
+} hal_can_filter_t;
+
+#define HAL_CAN_MAX_FILTERS 14U /* per bus (bxCAN: 28 banks split by CAN2SB) */
+
+/* True when every filter's id and mask fit its kind (11 or 29 bits): the
+ * SQ_EINVAL check of hal_can_set_rx_filter(), the same for every backend. */
+static inline bool hal_can_filters_in_range(const hal_can_filter_t *filters, uint32_t count)
+{
+	uint32_t i;
+	bool ok = true;
+
+	for (i = 0U; i < count; i++) {
+		const uint32_t max = ((filters[i].flags & HAL_CAN_FLAG_EXT) != 0U) ?
+			(uint32_t)HAL_CAN_EXT_ID_MAX : (uint32_t)HAL_CAN_STD_ID_MAX;
+
+		ok = ok && (filters[i].id <= max) && (filters[i].mask <= max);
+	}
+	return ok;
+}
+
+/*
+ * Queue one frame for sending on bus. Never blocks.
  * Returns SQ_OK, SQ_ENOBUFS (TX queue full: nothing queued),
- * SQ_ENETUNREACH (bus-off), SQ_ENETDOWN (stopped), SQ_EINVAL (bad frame).
+ * SQ_ENETUNREACH (bus-off), SQ_ENETDOWN (stopped), SQ_EPERM (the bus is
+ * listen-only: nothing sent, counted in tx_refused_listen_only),
+ * SQ_EINVAL (bad frame: DLC > 8, identifier out of range), SQ_ENODEV.
  */
-int hal_can_send(const hal_can_frame_t *frame);
+int hal_can_send(uint8_t bus, const hal_can_frame_t *frame);
 
 /*
- * Take the oldest received frame, if any. Never blocks.
+ * Take the oldest received frame of bus, if any. Never blocks.
  * Returns SQ_OK (frame filled, with timestamp), SQ_EAGAIN (nothing pending),
- * SQ_ENETDOWN (stopped), SQ_EINVAL (NULL).
+ * SQ_ENETDOWN (stopped), SQ_ENODEV.
  */
-int hal_can_receive(hal_can_frame_t *frame);
+int hal_can_receive(uint8_t bus, hal_can_frame_t *frame);
 
-/* Returns SQ_OK with *status filled, SQ_EINVAL (NULL). */
-int hal_can_get_status(hal_can_status_t *status);
-
-/*
- * Run the controller at this bit rate (kbit/s, from calibration). A no-op
- * when it already runs at that rate; otherwise the controller restarts
- * (pending TX frames are dropped, the RX filter is reset: set it after).
- * Returns SQ_OK; SQ_EINVAL (the clock cannot make that rate exactly enough);
- * SQ_EAGAIN (the controller did not start: HAL_FAULT_CAN_INIT is raised);
- * SQ_ENOTSUP where the bit rate belongs to the OS (Linux: `ip link set can0
- * type can bitrate ...`).
- */
-int hal_can_set_bitrate(uint32_t bitrate_kbps);
+/* Returns SQ_OK with *status filled, SQ_ENODEV. */
+int hal_can_get_status(uint8_t bus, hal_can_status_t *status);
 
 /*
- * Accept only these standard (11-bit) identifiers from now on (in hardware
- * where the controller can). count <= HAL_CAN_MAX_FILTERS.
- * Returns SQ_OK, SQ_EINVAL (too many / bad id), SQ_ENOTSUP.
+ * Run bus at this bit rate (kbit/s, from calibration). A no-op when it
+ * already runs at that rate; otherwise the controller restarts (pending TX
+ * frames are dropped, the RX filters are reset: set them after).
+ * Returns SQ_OK; SQ_EINVAL (the clock cannot make that rate exactly: the
+ * controller is left untouched, running as before); SQ_EAGAIN (the
+ * controller did not start: HAL_FAULT_CAN_INIT is raised); SQ_ENOTSUP where
+ * the bit rate belongs to the OS (Linux: `ip link set can0 type can bitrate
+ * ...`); SQ_ENODEV.
  */
-#define HAL_CAN_MAX_FILTERS 8U
-int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count);
+int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps);
+
+/*
+ * Accept only frames that pass one of these filters from now on (in
+ * hardware where the controller can). count 0 accepts nothing but error
+ * frames. count > HAL_CAN_MAX_FILTERS is a programming error.
+ * Returns SQ_OK, SQ_EINVAL (an id or mask out of range for its kind),
+ * SQ_ENOTSUP, SQ_ENODEV.
+ */
+int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters,
+			  uint32_t count);
+
+/*
+ * Set the bus's mode (default NORMAL). On the ECU this restarts the
+ * controller like a bit-rate change (set filters after it).
+ * Returns SQ_OK, SQ_EAGAIN (controller did not restart), SQ_ENODEV.
+ */
+int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode);
 
 /* ---- time ---------------------------------------------------------------- */
 
@@ -150,5 +220,22 @@ hal_reset_reason_t hal_reset_reason(void);
 #define HAL_FAULT_CAN_INIT       (1U << 1) /* CAN controller did not start   */
 #define HAL_FAULT_CALIB_STORAGE  (1U << 2) /* calibration storage unusable   */
 uint32_t hal_platform_faults(void);
+
+/* ---- contracts ----------------------------------------------------------- */
+
+/*
+ * The one handler for programming errors (a NULL pointer, a bad bus index, a
+ * bad configuration), never for bad data. It does not return: the ECU
+ * records the fault (file, line) in no-init RAM and resets through the
+ * watchdog path; host builds print FILE:LINE and abort. Use HAL_REQUIRE().
+ */
+_Noreturn void hal_contract_failed(const char *file, uint32_t line);
+
+#define HAL_REQUIRE(cond)                                              \
+	do {                                                           \
+		if (!(cond)) {                                         \
+			hal_contract_failed(__FILE__, (uint32_t)__LINE__); \
+		}                                                      \
+	} while (0)
 
 #endif /* HAL_H */

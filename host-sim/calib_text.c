@@ -127,12 +127,18 @@ static const key_desc_t keys[] = {
 	  "bistable with basin ratio below this -> warning level 2"),
 	K("watchdog_ms", watchdog_ms, KIND_INT, 1.0, "ms",
 	  "watchdog timeout"),
+	K("input_bus", input_bus, KIND_INT, 1.0, "",
+	  "bus the inputs come from (0 = CAN1 / --iface, 1 = CAN2 / --out-iface)"),
+	K("output_bus", output_bus, KIND_INT, 1.0, "",
+	  "bus the Squeal* frames go out on"),
+	K("input_listen_only", input_listen_only, KIND_BOOL, 1.0, "",
+	  "input bus listen-only: nothing sent on it, no ACK (yes/no)"),
 };
 
 #define KEY_COUNT (sizeof(keys) / sizeof(keys[0]))
 #define LINE_MAX_LEN 512
 
-_Static_assert(KEY_COUNT == 35U, "one key per calib_t field");
+_Static_assert(KEY_COUNT == 38U, "one key per calib_t field");
 
 size_t calib_text_key_count(void)
 {

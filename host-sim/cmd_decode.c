@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * squeal-sim decode [LOG|-|--iface IF] [--csv]: the frames of squeal.dbc as
- * physical values, from a candump -L log, stdin, or a CAN interface.
+ * squeal-sim decode [LOG|-|--iface IF] [--bus NAME] [--csv]: the frames of
+ * squeal.dbc as physical values, from a candump -L log, stdin, or a CAN
+ * interface. --bus NAME takes only the log's frames of interface NAME (the
+ * firmware's input bus 0 in a multi-bus log); default every interface.
  *
  * Values come from the firmware's descriptor tables (msg_table,
  * msg_sig_table, checked against the DBC by tests/protocol/): physical =
@@ -382,7 +384,7 @@ static int flush_line(decoder_t *d)
 static void decode_usage(FILE *f)
 {
 	fprintf(f,
-		"usage: squeal-sim decode [LOG|-] [--csv]\n"
+		"usage: squeal-sim decode [LOG|-] [--bus NAME] [--csv]\n"
 		"       squeal-sim decode --iface IF [--csv]\n\n"
 		"Prints every frame of the monitor's messages and inputs (squeal.dbc) as\n"
 		"physical values with names and state names, checking E2E (CRC with the\n"
@@ -392,7 +394,9 @@ static void decode_usage(FILE *f)
 		"  --csv       one CSV row per frame: time_s,id,message,counter,e2e,\n"
 		"              every signal of the DBC (empty if not in the frame,\n"
 		"              NA if not available),raw\n"
-		"  --iface IF  read from a CAN interface (vcan0, can0, ...)\n\n"
+		"  --iface IF  read from a CAN interface (vcan0, can0, ...)\n"
+		"  --bus NAME  of a log, only the frames of interface NAME (one bus of a\n"
+		"              multi-bus log; default: every interface)\n\n"
 		"Malformed log lines are reported on stderr as LOG:LINE: message.\n"
 		"Exit status: 0 done, 1 input error, 2 bad usage.\n");
 }
@@ -409,14 +413,14 @@ static int decode_iface(decoder_t *d, const char *iface)
 		fprintf(stderr, "squeal-sim decode: %s\n", hal_linux_strerror());
 		return 1;
 	}
-	rc = hal_linux_open(iface, NULL);
+	rc = hal_linux_open(0U, iface, NULL);
 	if (rc != SQ_OK) {
 		fprintf(stderr, "squeal-sim decode: %s\n", hal_linux_strerror());
 		return 1;
 	}
 	while (!stop_flag) {
 		hal_idle_until(hal_time_us() + 200000U);
-		while (!stop_flag && (hal_can_receive(&hf) == SQ_OK)) {
+		while (!stop_flag && (hal_can_receive(0U, &hf) == SQ_OK)) {
 			memset(&f, 0, sizeof(f));
 			f.t_ns = hf.timestamp_us * 1000U;
 			f.id = hf.id;
@@ -440,7 +444,7 @@ static int decode_iface(decoder_t *d, const char *iface)
 	return 0;
 }
 
-static int decode_log(decoder_t *d, const char *path)
+static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 {
 	static candump_reader_t reader;
 	const char *name = path;
@@ -473,6 +477,9 @@ static int decode_log(decoder_t *d, const char *path)
 		}
 		switch (candump_parse_line(line, len, &f, &err, &col)) {
 		case CANDUMP_LINE_FRAME:
+			if ((bus_name != NULL) && (strcmp(f.iface, bus_name) != 0)) {
+				break; /* another bus of the log */
+			}
 			decode_frame(d, &f);
 			if (flush_line(d) != 0) {
 				status = 1;
@@ -501,9 +508,10 @@ static int decode_log(decoder_t *d, const char *path)
 
 int cmd_decode(int argc, char **argv)
 {
-	enum { OPT_CSV = 256, OPT_IFACE, OPT_HELP };
+	enum { OPT_CSV = 256, OPT_IFACE, OPT_BUS, OPT_HELP };
 	static const struct option options[] = {
 		{ "csv", no_argument, NULL, OPT_CSV },
+		{ "bus", required_argument, NULL, OPT_BUS },
 		{ "iface", required_argument, NULL, OPT_IFACE },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ NULL, 0, NULL, 0 },
@@ -512,6 +520,7 @@ int cmd_decode(int argc, char **argv)
 	static char outbuf[1U << 16];
 	static decoder_t d;
 	const char *iface = NULL;
+	const char *bus_name = NULL;
 	const char *path = NULL;
 	size_t i;
 	int c;
@@ -528,6 +537,9 @@ int cmd_decode(int argc, char **argv)
 		case OPT_IFACE:
 			iface = optarg;
 			break;
+		case OPT_BUS:
+			bus_name = optarg;
+			break;
 		case OPT_HELP:
 		case 'h':
 			decode_usage(stdout);
@@ -539,6 +551,10 @@ int cmd_decode(int argc, char **argv)
 	}
 	if (optind < argc) {
 		path = argv[optind++];
+	}
+	if ((iface != NULL) && (bus_name != NULL)) {
+		fprintf(stderr, "squeal-sim decode: --bus picks an interface of a log, not with --iface\n");
+		return 2;
 	}
 	if ((optind < argc) || ((iface != NULL) && (path != NULL))) {
 		fprintf(stderr, "squeal-sim decode: give one LOG, -, or --iface IF\n");
@@ -563,5 +579,5 @@ int cmd_decode(int argc, char **argv)
 	if (iface != NULL) {
 		return decode_iface(&d, iface);
 	}
-	return decode_log(&d, path);
+	return decode_log(&d, path, bus_name);
 }

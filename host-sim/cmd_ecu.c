@@ -36,6 +36,8 @@
 
 typedef struct {
 	const char *iface;
+	const char *out_iface; /* bus 1: the outputs go there (output_bus 1) */
+	bool listen_only;      /* the input bus is listen-only              */
 	const char *calib_path;
 	bool verbose;
 	double duration_s; /* < 0: until SIGINT/SIGTERM */
@@ -48,13 +50,18 @@ static char ecu_calib_tmp[64];
 static void ecu_usage(FILE *f)
 {
 	fprintf(f,
-		"usage: squeal-sim ecu --iface IF [--calib FILE] [--duration S]\n"
-		"         [--rcvbuf BYTES] [--verbose]\n\n"
+		"usage: squeal-sim ecu --iface IF [--out-iface IF2] [--listen-only]\n"
+		"         [--calib FILE] [--duration S] [--rcvbuf BYTES] [--verbose]\n\n"
 		"Runs the monitor firmware on a SocketCAN interface (vcan0, can0, ...) in\n"
 		"real time: reads DiscSpeed/PadForce, sends SquealStatus, SquealDetail,\n"
 		"SquealDetail2 and SquealDiag, until SIGINT or SIGTERM. The interface must\n"
 		"exist and be up (no root needed). On exit a summary goes to stderr.\n\n"
-		"  --iface IF      the CAN interface (required)\n"
+		"  --iface IF      the CAN interface (required): bus 0, the inputs\n"
+		"  --out-iface IF2 a second interface, bus 1: the outputs go there\n"
+		"                  (calibration output_bus = 1)\n"
+		"  --listen-only   never send on the input bus (input_listen_only = yes);\n"
+		"                  set the interface itself listen-only too: ip link set\n"
+		"                  can0 type can listen-only on (no ACK, no error frames)\n"
 		"  --calib FILE    calibration text file (docs/calib-example.txt lists\n"
 		"                  every key); a bad file is refused with its line number\n"
 		"  --duration S    stop by itself after S seconds\n"
@@ -69,9 +76,12 @@ static void ecu_usage(FILE *f)
 
 static int ecu_parse(int argc, char **argv, ecu_args_t *a)
 {
-	enum { OPT_IFACE = 256, OPT_CALIB, OPT_VERBOSE, OPT_DURATION, OPT_RCVBUF, OPT_HELP };
+	enum { OPT_IFACE = 256, OPT_OUT_IFACE, OPT_LISTEN_ONLY, OPT_CALIB, OPT_VERBOSE, OPT_DURATION,
+	       OPT_RCVBUF, OPT_HELP };
 	static const struct option options[] = {
 		{ "iface", required_argument, NULL, OPT_IFACE },
+		{ "out-iface", required_argument, NULL, OPT_OUT_IFACE },
+		{ "listen-only", no_argument, NULL, OPT_LISTEN_ONLY },
 		{ "calib", required_argument, NULL, OPT_CALIB },
 		{ "verbose", no_argument, NULL, OPT_VERBOSE },
 		{ "duration", required_argument, NULL, OPT_DURATION },
@@ -90,6 +100,12 @@ static int ecu_parse(int argc, char **argv, ecu_args_t *a)
 		switch (c) {
 		case OPT_IFACE:
 			a->iface = optarg;
+			break;
+		case OPT_OUT_IFACE:
+			a->out_iface = optarg;
+			break;
+		case OPT_LISTEN_ONLY:
+			a->listen_only = true;
 			break;
 		case OPT_CALIB:
 			a->calib_path = optarg;
@@ -137,22 +153,42 @@ static int ecu_parse(int argc, char **argv, ecu_args_t *a)
 	return 0;
 }
 
-/* Text file -> binary block in a private temporary file -> HAL storage. */
-static int install_calibration(const char *path)
+/*
+ * Text file (or the defaults) with the command line's bus settings -> binary
+ * block in a private temporary file -> HAL storage. --out-iface puts the
+ * outputs on bus 1, --listen-only makes the input bus listen-only; a file
+ * that names bus 1 without --out-iface is refused (that bus has no
+ * interface).
+ */
+static int install_calibration(const ecu_args_t *a)
 {
 	calib_t cal;
 	uint8_t block[CALIB_BLOCK_LEN];
 	char err[300];
 	const char *dir = getenv("TMPDIR");
+	const char *what = (a->calib_path != NULL) ? a->calib_path : "calibration";
 	ssize_t n;
 	int fd;
 
-	if (calib_text_load(path, &cal, err, sizeof(err)) != SQ_OK) {
+	if (a->calib_path == NULL) {
+		calib_default(&cal);
+	} else if (calib_text_load(a->calib_path, &cal, err, sizeof(err)) != SQ_OK) {
 		fprintf(stderr, "squeal-sim ecu: %s\n", err);
 		return -1;
 	}
+	if (a->out_iface != NULL) {
+		cal.output_bus = 1U;
+	}
+	if (a->listen_only) {
+		cal.input_listen_only = 1U;
+	}
+	if ((a->out_iface == NULL) && ((cal.input_bus != 0U) || (cal.output_bus != 0U))) {
+		fprintf(stderr, "squeal-sim ecu: %s: bus 1 (input_bus/output_bus) needs --out-iface\n",
+			what);
+		return -1;
+	}
 	if (calib_encode(&cal, block, sizeof(block)) != SQ_OK) {
-		fprintf(stderr, "squeal-sim ecu: %s: calibration does not encode\n", path);
+		fprintf(stderr, "squeal-sim ecu: %s: calibration does not encode\n", what);
 		return -1;
 	}
 	if ((dir == NULL) || (dir[0] == '\0') || (strlen(dir) > 40U)) {
@@ -229,7 +265,7 @@ static void ecu_summary(const uint64_t state_us[5], uint64_t run_us)
 	hal_linux_can_stats_t st;
 	unsigned int i;
 
-	hal_linux_can_get_stats(&st);
+	hal_linux_can_get_stats(0U, &st);
 	fprintf(stderr, "squeal-sim ecu: summary after %.3f s (key=value)\n",
 		(double)run_us / 1e6);
 	fprintf(stderr, "state=%s warning=%u state_changes=%" PRIu32
@@ -263,6 +299,20 @@ static void ecu_summary(const uint64_t state_us[5], uint64_t run_us)
 		st.rx_frames, st.rx_err_frames, st.rx_kernel_drops, st.tx_frames,
 		st.tx_retries, st.tx_dropped, st.tx_worst_us,
 		hal_linux_watchdog_expiries());
+	if (hal_linux_can_fd(1U) >= 0) {
+		hal_linux_can_get_stats(1U, &st);
+		fprintf(stderr, "out_hal_rx_err_frames=%" PRIu64 " out_hal_tx_frames=%" PRIu64
+			" out_hal_tx_retries=%" PRIu64 " out_hal_tx_dropped=%" PRIu64 "\n",
+			st.rx_err_frames, st.tx_frames, st.tx_retries, st.tx_dropped);
+	}
+	{
+		hal_can_status_t in;
+
+		if (hal_can_get_status(m->cal.input_bus, &in) == SQ_OK) {
+			fprintf(stderr, "in_listen_only=%d in_tx_refused_listen_only=%" PRIu32 "\n",
+				(in.mode == HAL_CAN_MODE_LISTEN_ONLY) ? 1 : 0, in.tx_refused_listen_only);
+		}
+	}
 }
 
 int cmd_ecu(int argc, char **argv)
@@ -284,8 +334,8 @@ int cmd_ecu(int argc, char **argv)
 		fprintf(stderr, "squeal-sim ecu: %s\n", hal_linux_strerror());
 		return 1;
 	}
-	if (a.calib_path != NULL) {
-		if (install_calibration(a.calib_path) != 0) {
+	if ((a.calib_path != NULL) || (a.out_iface != NULL) || a.listen_only) {
+		if (install_calibration(&a) != 0) {
 			remove_calibration();
 			return 1;
 		}
@@ -295,8 +345,10 @@ int cmd_ecu(int argc, char **argv)
 	}
 	memset(&opts, 0, sizeof(opts));
 	opts.rcvbuf_bytes = a.rcvbuf_bytes;
-	if (hal_linux_open(a.iface, &opts) != SQ_OK) {
+	if ((hal_linux_open(0U, a.iface, &opts) != SQ_OK) ||
+	    ((a.out_iface != NULL) && (hal_linux_open(1U, a.out_iface, &opts) != SQ_OK))) {
 		fprintf(stderr, "squeal-sim ecu: %s\n", hal_linux_strerror());
+		hal_linux_close();
 		remove_calibration();
 		return 1;
 	}

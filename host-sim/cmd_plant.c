@@ -538,12 +538,12 @@ static int run_live(plant_t *p)
 		fprintf(stderr, "squeal-sim plant: %s\n", hal_linux_strerror());
 		return 1;
 	}
-	if (hal_linux_open(p->a.iface, NULL) != SQ_OK) {
+	if (hal_linux_open(0U, p->a.iface, NULL) != SQ_OK) {
 		fprintf(stderr, "squeal-sim plant: %s\n", hal_linux_strerror());
 		return 1;
 	}
 	/* a sender: receive nothing (the socket queue would only fill up) */
-	(void)hal_can_set_rx_filter(NULL, 0U);
+	(void)hal_can_set_rx_filter(0U, NULL, 0U);
 	start_ns = mono_ns();
 	while (!plant_stop) {
 		int rc;
@@ -560,7 +560,7 @@ static int run_live(plant_t *p)
 		if (plant_stop) {
 			break;
 		}
-		rc = hal_can_send(&p->s[n].pending);
+		rc = hal_can_send(0U, &p->s[n].pending);
 		if (rc == SQ_OK) {
 			p->s[n].sent++;
 		} else {

@@ -20,8 +20,17 @@
  * jumps, without the ticks in between (a mix of relative and absolute
  * timestamps would otherwise tick for decades).
  *
- * Output: every frame the ECU sends, as candump -L lines on stdout (the
- * log's first interface name or --iface-out); the summary on stderr.
+ * Buses: without --bus every frame of the log is on the firmware's bus 0 (as
+ * on a single-bus ECU); with --bus NAME the frames of interface NAME are
+ * bus 0 and those of every other interface bus 1, so a two-bus log replays
+ * with the calibration's input_bus/output_bus. Frames of a bus the firmware
+ * uses neither for input nor output are counted (other_bus), not offered.
+ *
+ * Output: every frame the ECU sends, as candump -L lines on stdout, named
+ * after the bus it was sent on: bus 0 is --bus NAME (or the log's first
+ * interface), bus 1 the first other interface of the log ("bus1" until one
+ * is seen); --iface-out NAME names every output line instead. The summary
+ * goes to stderr.
  * Memory is constant: the log is streamed line by line.
  */
 #include <errno.h>
@@ -58,6 +67,7 @@ typedef struct {
 	const char *log_name;
 	const char *calib_path;
 	const char *iface_out;
+	const char *bus_name; /* the log interface that is bus 0; NULL: all */
 	uint64_t tail_us;
 	uint64_t max_gap_us;
 	bool rss;
@@ -81,6 +91,7 @@ typedef struct {
 	uint64_t filtered_rtr;
 	uint64_t filtered_ext;
 	uint64_t rx_overflow;
+	uint64_t other_bus;
 	uint64_t pushed;
 	/* time */
 	bool started;
@@ -94,8 +105,9 @@ typedef struct {
 	uint8_t warning;
 	uint64_t into_level[N_LEVELS];
 	uint64_t transitions[N_STATES][N_STATES];
-	/* output */
-	char iface[CANDUMP_IFACE_MAX + 1U];
+	/* output: the name of each bus in the output log */
+	char iface[HAL_CAN_BUSES][CANDUMP_IFACE_MAX + 1U];
+	bool bus1_named;
 	uint64_t out_frames;
 	uint64_t out_by_msg[MSG_COUNT + 1U];
 	bool out_error;
@@ -111,9 +123,13 @@ static unsigned state_index(uint8_t s)
 static void replay_usage(FILE *f)
 {
 	fprintf(f,
-		"usage: squeal-sim replay LOG|- [--calib FILE] [--iface-out NAME]\n"
-		"         [--tail-ms MS] [--max-gap S] [--rss]\n"
-		"         [--summary-json FILE|-] [--no-output]\n\n"
+		"usage: squeal-sim replay LOG|- [--calib FILE] [--bus NAME]
+"
+		"         [--iface-out NAME] [--tail-ms MS] [--max-gap S] [--rss]
+"
+		"         [--summary-json FILE|-] [--no-output]
+
+"
 		"Feeds a candump -L log (a file, or - for stdin) through the firmware in\n"
 		"virtual time taken from the log's timestamps, offline. Writes every frame\n"
 		"the ECU sends as a candump -L log on stdout, and a summary on stderr:\n"
@@ -121,8 +137,12 @@ static void replay_usage(FILE *f)
 		"raised, state changes. Malformed lines are reported as LOG:LINE: message\n"
 		"and skipped. The same log gives the same output, byte for byte.\n\n"
 		"  --calib FILE     calibration text file (docs/calib-example.txt)\n"
+		"  --bus NAME       the log's interface NAME is the firmware's bus 0, every\n"
+		"                   other interface bus 1 (calibration input_bus and\n"
+		"                   output_bus pick); default: all frames on bus 0\n"
 		"  --iface-out NAME interface name of the output lines (default: the\n"
-		"                   log's first interface)\n"
+		"                   output bus's: --bus NAME or the log's first\n"
+		"                   interface for bus 0, another of its interfaces for 1)\n"
 		"  --tail-ms MS     run on after the last frame (default 100)\n"
 		"  --max-gap S      a gap between frames longer than S seconds is\n"
 		"                   skipped instead of simulated (default 3600)\n"
@@ -155,10 +175,11 @@ static int parse_u64(const char *flag, const char *text, uint64_t max, uint64_t 
 
 static int replay_parse(int argc, char **argv, replay_args_t *a)
 {
-	enum { OPT_CALIB = 256, OPT_IFACE_OUT, OPT_TAIL, OPT_GAP, OPT_RSS, OPT_HELP,
+	enum { OPT_CALIB = 256, OPT_IFACE_OUT, OPT_BUS, OPT_TAIL, OPT_GAP, OPT_RSS, OPT_HELP,
 	       OPT_SUMMARY_JSON, OPT_NO_OUTPUT };
 	static const struct option options[] = {
 		{ "calib", required_argument, NULL, OPT_CALIB },
+		{ "bus", required_argument, NULL, OPT_BUS },
 		{ "iface-out", required_argument, NULL, OPT_IFACE_OUT },
 		{ "tail-ms", required_argument, NULL, OPT_TAIL },
 		{ "max-gap", required_argument, NULL, OPT_GAP },
@@ -180,13 +201,18 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 			a->calib_path = optarg;
 			break;
 		case OPT_IFACE_OUT:
+		case OPT_BUS:
 			if ((strlen(optarg) == 0U) || (strlen(optarg) > CANDUMP_IFACE_MAX) ||
 			    (strpbrk(optarg, " \t\n") != NULL)) {
-				fprintf(stderr, "squeal-sim replay: --iface-out needs 1..%u characters without blanks\n",
-					CANDUMP_IFACE_MAX);
+				fprintf(stderr, "squeal-sim replay: %s needs 1..%u characters without blanks\n",
+					(c == OPT_BUS) ? "--bus" : "--iface-out", CANDUMP_IFACE_MAX);
 				return 2;
 			}
-			a->iface_out = optarg;
+			if (c == OPT_BUS) {
+				a->bus_name = optarg;
+			} else {
+				a->iface_out = optarg;
+			}
 			break;
 		case OPT_TAIL:
 			if (parse_u64("--tail-ms", optarg, 86400000ULL, &v) != 0) {
@@ -233,7 +259,7 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 
 /* ---- output ------------------------------------------------------------------ */
 
-static void emit(replay_t *r, const hal_can_frame_t *hf)
+static void emit(replay_t *r, uint8_t bus, const hal_can_frame_t *hf)
 {
 	candump_frame_t f;
 	char line[CANDUMP_FORMAT_MAX + 2U];
@@ -251,7 +277,7 @@ static void emit(replay_t *r, const hal_can_frame_t *hf)
 	}
 	memset(&f, 0, sizeof(f));
 	f.t_ns = hf->timestamp_us * 1000U;
-	memcpy(f.iface, r->iface, sizeof(f.iface));
+	memcpy(f.iface, r->iface[bus], sizeof(f.iface));
 	f.kind = ((hf->flags & HAL_CAN_FLAG_RTR) != 0U) ? CANDUMP_KIND_RTR : CANDUMP_KIND_CLASSIC;
 	f.ext = (hf->flags & HAL_CAN_FLAG_EXT) != 0U;
 	f.id = hf->id;
@@ -274,9 +300,12 @@ static void after_poll(replay_t *r)
 	hal_can_frame_t f;
 	unsigned from;
 	unsigned to;
+	uint8_t bus;
 
-	while (hal_vbus_pop_tx(&f) == SQ_OK) {
-		emit(r, &f);
+	for (bus = 0U; bus < HAL_CAN_BUSES; bus++) {
+		while (hal_vbus_tx_pop(bus, &f) == SQ_OK) {
+			emit(r, bus, &f);
+		}
 	}
 	from = state_index(r->state);
 	to = state_index(m->state);
@@ -323,9 +352,13 @@ static void start(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
 	r->next_tick_us = r->t0_us;
 	hal_vbus_set_time_us(r->t0_us);
 	if (a->iface_out != NULL) {
-		(void)snprintf(r->iface, sizeof(r->iface), "%s", a->iface_out);
+		(void)snprintf(r->iface[0], sizeof(r->iface[0]), "%s", a->iface_out);
+		(void)snprintf(r->iface[1], sizeof(r->iface[1]), "%s", a->iface_out);
+		r->bus1_named = true;
 	} else {
-		memcpy(r->iface, f->iface, sizeof(r->iface));
+		(void)snprintf(r->iface[0], sizeof(r->iface[0]), "%s",
+			       (a->bus_name != NULL) ? a->bus_name : f->iface);
+		(void)snprintf(r->iface[1], sizeof(r->iface[1]), "%s", "bus1");
 	}
 	(void)squeal_app_init();
 	m = squeal_app_monitor();
@@ -338,10 +371,30 @@ static void start(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
 	r->warning = m->warning;
 }
 
-static void give_frame(replay_t *r, const candump_frame_t *f)
+/* The firmware bus of a log frame (see the top of this file). */
+static uint8_t bus_of_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
 {
+	if ((a->bus_name == NULL) || (strcmp(f->iface, a->bus_name) == 0)) {
+		return 0U;
+	}
+	if (!r->bus1_named) {
+		(void)snprintf(r->iface[1], sizeof(r->iface[1]), "%s", f->iface);
+		r->bus1_named = true;
+	}
+	return 1U;
+}
+
+static void give_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
+{
+	const calib_t *cal = &squeal_app_monitor()->cal;
+	const uint8_t bus = bus_of_frame(r, f, a);
 	hal_can_frame_t hf;
 	int rc;
+
+	if ((bus != cal->input_bus) && (bus != cal->output_bus)) {
+		r->other_bus++; /* a bus the firmware does not use */
+		return;
+	}
 
 	switch (f->kind) {
 	case CANDUMP_KIND_FD:
@@ -366,7 +419,8 @@ static void give_frame(replay_t *r, const candump_frame_t *f)
 	} else if (f->ext) {
 		hf.flags |= HAL_CAN_FLAG_EXT;
 	}
-	rc = hal_vbus_push_rx(&hf);
+	hf.timestamp_us = r->now_us; /* arrives now */
+	rc = hal_vbus_rx_push(bus, &hf);
 	if (rc == SQ_ENOENT) {
 		if ((hf.flags & HAL_CAN_FLAG_RTR) != 0U) {
 			r->filtered_rtr++;
@@ -414,7 +468,7 @@ static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t 
 		set_time(r, t_us);
 	}
 	run_until(r, t_us);
-	give_frame(r, f);
+	give_frame(r, f, a);
 }
 
 /* ---- summary ------------------------------------------------------------------- */
@@ -497,6 +551,9 @@ static void summary(const replay_t *r, const replay_args_t *a)
 	fprintf(o, "    error_frames        %u\n", m->count.error_frames);
 	fprintf(o, "    remote_or_extended  %u\n", m->count.rtr_or_ext);
 	fprintf(o, "    rx_overflow         %llu\n", (unsigned long long)r->rx_overflow);
+	if (a->bus_name != NULL) {
+		fprintf(o, "    other_bus           %llu\n", (unsigned long long)r->other_bus);
+	}
 	fprintf(o, "  e2e_frames_lost       %llu (counter gaps: DiscSpeed %u, PadForce %u)\n",
 		(unsigned long long)sp->e2e_lost + fo->e2e_lost, sp->e2e_lost, fo->e2e_lost);
 	fprintf(o, "  stale_events          %llu (DiscSpeed %u, PadForce %u)\n",
@@ -718,7 +775,7 @@ static int load_calib(const char *path)
 		return -1;
 	}
 	if ((calib_encode(&cal, block, sizeof(block)) != SQ_OK) ||
-	    (hal_vbus_set_calib(block, sizeof(block)) != SQ_OK)) {
+	    (hal_vbus_calib_store(block, sizeof(block)) != SQ_OK)) {
 		fprintf(stderr, "squeal-sim replay: %s: cannot store the calibration\n", path);
 		return -1;
 	}
@@ -760,7 +817,7 @@ int cmd_replay(int argc, char **argv)
 		}
 	}
 	(void)setvbuf(stdout, outbuf, _IOFBF, sizeof(outbuf));
-	hal_vbus_enable();
+	hal_vbus_reset();
 	if ((a.calib_path != NULL) && (load_calib(a.calib_path) != 0)) {
 		if (in != stdin) {
 			(void)fclose(in);

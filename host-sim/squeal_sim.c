@@ -3,12 +3,45 @@
  * squeal-sim: the Linux programs around the brake-squeal monitor firmware,
  * one binary with subcommands (architecture.md section 4).
  */
+#include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "squeal_model.h"
 #include "sim_commands.h"
 #include "oscsim/oscsim_cmd.h"
+
+/*
+ * replay runs the firmware on the in-memory HAL, linked into its own
+ * program (a backend is chosen at link time): squeal-replay, next to this
+ * executable, takes over this process with the same arguments.
+ */
+static int cmd_replay_exec(int argc, char **argv)
+{
+	char path[PATH_MAX];
+	ssize_t n = readlink("/proc/self/exe", path, sizeof(path) - 1U);
+	char *slash;
+
+	(void)argc;
+	if (n <= 0) {
+		fprintf(stderr, "squeal-sim replay: cannot find this program: %s\n", strerror(errno));
+		return 1;
+	}
+	path[n] = '\0';
+	slash = strrchr(path, '/');
+	if ((slash == NULL) ||
+	    ((size_t)(slash - path) + sizeof("/squeal-replay") > sizeof(path))) {
+		fprintf(stderr, "squeal-sim replay: path too long: %s\n", path);
+		return 1;
+	}
+	memcpy(slash, "/squeal-replay", sizeof("/squeal-replay"));
+	(void)execv(path, argv);
+	fprintf(stderr, "squeal-sim replay: cannot run %s: %s (make builds it)\n", path,
+		strerror(errno));
+	return 1;
+}
 
 typedef struct {
 	const char *name;
@@ -21,7 +54,7 @@ static const command_t commands[] = {
 	{ "sweep", cmd_sweep, "classify a table of operating points (demo)" },
 	{ "ecu", cmd_ecu, "the monitor firmware on a SocketCAN interface" },
 	{ "plant", cmd_plant, "send DiscSpeed/PadForce from a scenario (or write a log)" },
-	{ "replay", cmd_replay, "feed a candump log through the firmware in virtual time" },
+	{ "replay", cmd_replay_exec, "feed a candump log through the firmware in virtual time" },
 	{ "decode", cmd_decode, "print CAN frames as physical values (log or interface)" },
 	{ "map", oscsim_cmd_map, "stability map: model vs simulation (CSV)" },
 	{ "simulate", oscsim_cmd_simulate, "simulate the stick-slip oscillator at one point" },

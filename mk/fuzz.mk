@@ -47,7 +47,7 @@ build/$(1)/fw/%.o: %.c
 build/$(1)/app/%.o: %.c
 	@mkdir -p $$(@D)
 	$$(FUZZ_CC) $$(WARN) -D_GNU_SOURCE $$(CFLAGS_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -Itests/fuzz -MMD -MP -c $$< -o $$@
-build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS))
+build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS)) build/$(1)/app/$$(HAL_CONTRACT_HOST:.c=.o)
 	@rm -f $$@
 	ar rcs $$@ $$^
 endef
@@ -111,7 +111,7 @@ TEST_PROGS += tests/fuzz/run-fuzz.sh
 # a flood of random and spoofed frames), both numeric builds, ASan+UBSan.
 # --wrap counts every call of hal_calib_write.
 define calib_wp_rules
-build/$(1)/test_calib_write_protection: build/$(1)/app/tests/fuzz/test_calib_write_protection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a
+build/$(1)/test_calib_write_protection: build/$(1)/app/tests/fuzz/test_calib_write_protection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
 	$$(CC) $$(OPT_$(1)) -Wl,--wrap=hal_calib_write -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,test test-fixed,$(eval $(call calib_wp_rules,$(v))))

@@ -1,13 +1,24 @@
 # SPDX-License-Identifier: MIT
-# The Linux HAL (SocketCAN, clock, signals, calibration file) as one static
-# library per build variant: build/<variant>/libhal_linux.a.
-HAL_LINUX_SRCS := $(sort $(wildcard hal/linux/*.c))
+# The host HAL backends as one static library per build variant; a program
+# links ONE of them (both define every hal.h function), nothing switches at
+# run time:
+#   build/<variant>/libhal_linux.a  SocketCAN, clock, signals, calibration
+#                                   file (hal/linux/)
+#   build/<variant>/libhal_vbus.a   the in-memory backend: virtual clock and
+#                                   buses (hal/vbus/): squeal-replay, the unit
+#                                   tests (tests/support/test_hal.o on top),
+#                                   the conformance suite's vbus run
+# Both carry the host's contract handler (hal/host/).
+HAL_LINUX_SRCS := $(sort $(wildcard hal/linux/*.c)) $(HAL_CONTRACT_HOST)
+HAL_VBUS_SRCS := $(sort $(wildcard hal/vbus/*.c)) $(HAL_CONTRACT_HOST)
 
-define hal_linux_rules
-build/$(1)/libhal_linux.a: $$(patsubst %.c,build/$(1)/app/%.o,$$(HAL_LINUX_SRCS))
+# variant, library name, sources
+define hal_host_lib
+build/$(1)/libhal_$(2).a: $$(patsubst %.c,build/$(1)/app/%.o,$(3))
 	@rm -f $$@
 	ar rcs $$@ $$^
 endef
-$(foreach v,$(VARIANTS),$(eval $(call hal_linux_rules,$(v))))
+$(foreach v,$(VARIANTS),$(eval $(call hal_host_lib,$(v),linux,$(HAL_LINUX_SRCS))))
+$(foreach v,$(VARIANTS),$(eval $(call hal_host_lib,$(v),vbus,$(HAL_VBUS_SRCS))))
 
 ALL_TARGETS += build/host/libhal_linux.a build/host-fixed/libhal_linux.a

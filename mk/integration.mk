@@ -29,3 +29,7 @@ TEST_PROGS += tests/integration/run-vcan.sh
 # make bench: live latency and highest zero-loss input rate in the guest
 tests/integration/bench-live.sh: build/host/squeal-sim
 BENCH_PROGS += tests/integration/bench-live.sh
+
+# ecu on two buses (vcan0 listen-only inputs, vcan1 outputs) in the guest
+tests/integration/run-two-bus.sh: build/host/squeal-sim
+TEST_PROGS += tests/integration/run-two-bus.sh

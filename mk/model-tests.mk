@@ -7,7 +7,7 @@
 #   make golden                           regenerate the golden vectors
 
 MODEL_TEST_VARIANTS := test test-fixed
-MODEL_TEST_SUPPORT := tests/support/sq_num.c
+MODEL_TEST_SUPPORT := tests/support/sq_num.c tests/support/test_contract.c
 
 define model_test_rules
 build/$(1)/test_model: build/$(1)/app/tests/unit/test_model.o $$(patsubst %.c,build/$(1)/app/%.o,$$(MODEL_TEST_SUPPORT)) build/$(1)/libfirmware.a

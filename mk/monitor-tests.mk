@@ -14,7 +14,7 @@
 #   build/host/monitor_step_cost  callgrind driver (make monitor-cost)
 
 MONITOR_TEST_VARIANTS := test test-fixed
-MONITOR_TESTS := test_monitor test_monitor_faults test_calib test_app test_monitor_bounds
+MONITOR_TESTS := test_monitor test_monitor_faults test_calib test_app test_monitor_bounds test_app_buses
 MONITOR_EXPECT_H := build/monitor/monitor_expect.h
 
 $(MONITOR_EXPECT_H): tests/monitor/gen_monitor_expect.py tests/reference/squeal_reference.py firmware/protocol/squeal.dbc
@@ -24,9 +24,10 @@ $(MONITOR_EXPECT_H): tests/monitor/gen_monitor_expect.py tests/reference/squeal_
 define monitor_test_rules
 build/$(1)/app/tests/unit/$(2).o: tests/unit/$(2).c $(MONITOR_EXPECT_H)
 	@mkdir -p $$(@D)
-	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Itests/support -Ibuild/monitor -MMD -MP -c $$< -o $$@
+	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Itests/support -Ihal/vbus -Ibuild/monitor -MMD -MP -c $$< -o $$@
 build/$(1)/$(2): build/$(1)/app/tests/unit/$(2).o build/$(1)/app/tests/support/test_hal.o \
-		build/$(1)/app/tests/support/test_app_drive.o build/$(1)/libfirmware.a
+		build/$(1)/app/tests/support/test_app_drive.o build/$(1)/app/tests/support/test_contract.o \
+		build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(MONITOR_TEST_VARIANTS),$(foreach t,$(MONITOR_TESTS),$(eval $(call monitor_test_rules,$(v),$(t)))))
@@ -36,7 +37,7 @@ TEST_PROGS += $(foreach v,$(MONITOR_TEST_VARIANTS),$(foreach t,$(MONITOR_TESTS),
 # Cost of the 1 ms task (callgrind), figures for `make bench`.
 MONITOR_COST_VARIANTS := host host-fixed
 define monitor_cost_rules
-build/$(1)/monitor_step_cost: build/$(1)/app/tests/monitor/monitor_step_cost.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a
+build/$(1)/monitor_step_cost: build/$(1)/app/tests/monitor/monitor_step_cost.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lm
 endef
 $(foreach v,$(MONITOR_COST_VARIANTS),$(eval $(call monitor_cost_rules,$(v))))

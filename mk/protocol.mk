@@ -12,7 +12,7 @@
 PROTOCOL_TEST_BIN := build/test/tests/unit/test_protocol
 PROTOCOL_EMIT := build/test/tests/protocol/emit_frames
 
-$(PROTOCOL_TEST_BIN): build/test/app/tests/unit/test_protocol.o build/test/libfirmware.a
+$(PROTOCOL_TEST_BIN): build/test/app/tests/unit/test_protocol.o build/test/app/tests/support/test_contract.o build/test/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
 

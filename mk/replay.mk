@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 # Offline replay of candump logs and the decoder (issue 4):
 #   host-sim/candump_log.c   candump -L parser/writer and streaming reader
-#   host-sim/cmd_replay.c    squeal-sim replay LOG|-   (virtual time, hal_vbus)
+#   host-sim/cmd_replay.c    squeal-sim replay LOG|-   (virtual time, hal/vbus;
+#                            program build/<v>/squeal-replay)
 #   host-sim/cmd_decode.c    squeal-sim decode [LOG|-|--iface IF] [--csv]
 #   build/test/test_candump_log     cmocka, ASan+UBSan
 #   tests/replay/test_replay.py     replay/decode end to end (python-can,
@@ -11,14 +12,25 @@
 #   host-sim/replay_summary.c, json_writer.c   replay --summary-json (issue 13)
 #   build/test/test_json_writer     cmocka: the JSON writer's output and misuse
 #   tests/replay/test_summary_json.py  the JSON vs Python's json + canmatrix
-REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_replay.c host-sim/cmd_decode.c
-# replay --summary-json (issue 13): episodes per corner, a bounded JSON writer
-REPLAY_SIM_SRCS += host-sim/replay_summary.c host-sim/json_writer.c
+REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_decode.c
 SIM_SRCS += $(REPLAY_SIM_SRCS)
 
 # host.mk's rule expands its prerequisites when it is read (before this
 # file): name ours explicitly so they are built.
 $(foreach v,$(VARIANTS),$(eval build/$(v)/squeal-sim: $(patsubst %.c,build/$(v)/app/%.o,$(REPLAY_SIM_SRCS))))
+
+# replay runs the firmware on the in-memory HAL: its own program,
+# build/<v>/squeal-replay (libhal_vbus.a instead of libhal_linux.a), which
+# `squeal-sim replay` execs from its own directory, so it is built with it.
+REPLAY_SRCS := host-sim/squeal_replay.c host-sim/cmd_replay.c host-sim/candump_log.c \
+	host-sim/calib_text.c host-sim/replay_summary.c host-sim/json_writer.c
+define replay_program
+build/$(1)/squeal-replay: $$(patsubst %.c,build/$(1)/app/%.o,$$(REPLAY_SRCS)) build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lm
+build/$(1)/squeal-sim: build/$(1)/squeal-replay
+endef
+$(foreach v,$(VARIANTS),$(eval $(call replay_program,$(v))))
+ALL_TARGETS += build/host/squeal-replay build/host-fixed/squeal-replay
 
 build/test/test_candump_log: build/test/app/tests/unit/test_candump_log.o build/test/app/host-sim/candump_log.o
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka

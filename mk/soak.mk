@@ -19,7 +19,7 @@ define soak_test_rules
 build/$(1)/app/tests/unit/test_fault_injection.o: tests/unit/test_fault_injection.c build/monitor/monitor_expect.h
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Itests/support -Ibuild/monitor -MMD -MP -c $$< -o $$@
-build/$(1)/test_fault_injection: build/$(1)/app/tests/unit/test_fault_injection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a
+build/$(1)/test_fault_injection: build/$(1)/app/tests/unit/test_fault_injection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(SOAK_TEST_VARIANTS),$(eval $(call soak_test_rules,$(v))))

@@ -8,7 +8,7 @@ $(VCAN_SELFTEST): build/test/app/tests/vcan/selftest_hal_linux.o build/test/libh
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^
 
-$(VCAN_HOSTTEST): build/test/app/tests/vcan/test_hal_linux_host.o build/test/libhal_linux.a
+$(VCAN_HOSTTEST): build/test/app/tests/vcan/test_hal_linux_host.o build/test/app/tests/support/test_contract.o build/test/libhal_linux.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
 

@@ -41,38 +41,60 @@ static bool load_calibration(calib_t *cal)
 	return rc != SQ_ENOENT;
 }
 
+/* Keep the first error of init; SQ_ENOTSUP is fine where the platform owns
+ * the setting (Linux: the bit rate belongs to `ip link`). */
+static void note_init(int *first_error, int rc, bool enotsup_ok)
+{
+	if ((rc != SQ_OK) && !(enotsup_ok && (rc == SQ_ENOTSUP)) && (*first_error == SQ_OK)) {
+		*first_error = rc;
+	}
+}
+
+/* Inputs from cal.input_bus (listen-only if cal.input_listen_only), outputs
+ * on cal.output_bus; the defaults (0, 0, normal) are the single-bus ECU. */
+static int start_buses(const calib_t *cal)
+{
+	const uint8_t in = cal->input_bus;
+	const uint8_t out = cal->output_bus;
+	hal_can_filter_t filters[2];
+	int first_error = SQ_OK;
+
+	/* bit rate first: a restart of the controller resets its filters */
+	note_init(&first_error, hal_can_set_bitrate(in, cal->bitrate_kbps), true);
+	if (out != in) {
+		note_init(&first_error, hal_can_set_bitrate(out, cal->bitrate_kbps), true);
+	}
+	if (cal->input_listen_only != 0U) {
+		/* not supported means the node would ACK on the input bus: an
+		 * error, never ignored */
+		note_init(&first_error, hal_can_set_mode(in, HAL_CAN_MODE_LISTEN_ONLY), false);
+	}
+	filters[0] = (hal_can_filter_t){ cal->disc_speed_id, HAL_CAN_STD_ID_MAX, 0U };
+	filters[1] = (hal_can_filter_t){ cal->pad_force_id, HAL_CAN_STD_ID_MAX, 0U };
+	note_init(&first_error, hal_can_set_rx_filter(in, filters, 2U), true);
+	if (out != in) {
+		/* nothing to receive on the output bus but its error frames */
+		note_init(&first_error, hal_can_set_rx_filter(out, NULL, 0U), true);
+	}
+	return first_error;
+}
+
 int squeal_app_init(void)
 {
 	calib_t cal;
 	bool calib_invalid;
-	uint32_t ids[2];
 	int rc;
 	int first_error = SQ_OK;
 
 	calib_invalid = load_calibration(&cal);
 	rc = monitor_init(&app_monitor, &cal, calib_invalid, hal_platform_faults(),
 			  hal_time_us());
-	if (rc != SQ_OK) {
-		first_error = rc;
-	}
+	note_init(&first_error, rc, false);
 	if (calib_invalid && (first_error == SQ_OK)) {
 		first_error = SQ_EBADMSG;
 	}
-	/* bit rate first: a restart of the controller resets its filters */
-	rc = hal_can_set_bitrate(app_monitor.cal.bitrate_kbps);
-	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
-		first_error = rc;
-	}
-	ids[0] = app_monitor.cal.disc_speed_id;
-	ids[1] = app_monitor.cal.pad_force_id;
-	rc = hal_can_set_rx_filter(ids, 2U);
-	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
-		first_error = rc;
-	}
-	rc = hal_watchdog_start(app_monitor.cal.watchdog_ms);
-	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
-		first_error = rc;
-	}
+	note_init(&first_error, start_buses(&app_monitor.cal), false);
+	note_init(&first_error, hal_watchdog_start(app_monitor.cal.watchdog_ms), true);
 	app_next_tick_us = hal_time_us();
 	app_init_rc = first_error;
 	return first_error;
@@ -89,12 +111,31 @@ static void transmit(void)
 		if (monitor_peek_tx(&app_monitor, &f) != SQ_OK) {
 			break;
 		}
-		rc = hal_can_send(&f);
+		rc = hal_can_send(app_monitor.cal.output_bus, &f);
 		if (rc == SQ_ENOBUFS) {
 			break; /* stays queued: retried next tick */
 		}
 		monitor_tx_done(&app_monitor, rc);
 	}
+}
+
+/* The CAN status the monitor sees: the input bus's, and with a separate
+ * output bus both together (counters added, bus-off if either is). */
+static int bus_status(hal_can_status_t *st)
+{
+	const uint8_t in = app_monitor.cal.input_bus;
+	const uint8_t out = app_monitor.cal.output_bus;
+	hal_can_status_t o;
+	int rc = hal_can_get_status(in, st);
+
+	if ((rc == SQ_OK) && (out != in) && (hal_can_get_status(out, &o) == SQ_OK)) {
+		st->bus_off_count += o.bus_off_count;
+		st->rx_overruns += o.rx_overruns;
+		if (o.state == HAL_CAN_STATE_BUS_OFF) {
+			st->state = HAL_CAN_STATE_BUS_OFF;
+		}
+	}
+	return rc;
 }
 
 uint64_t squeal_app_poll(void)
@@ -105,16 +146,26 @@ uint64_t squeal_app_poll(void)
 	uint32_t i;
 
 	for (i = 0U; i < RX_BUDGET; i++) {
-		if (hal_can_receive(&f) != SQ_OK) {
+		if (hal_can_receive(app_monitor.cal.input_bus, &f) != SQ_OK) {
 			break;
 		}
 		monitor_on_frame(&app_monitor, &f);
+	}
+	/* a separate output bus: only its error frames count (its filter
+	 * passes no data frame; one that arrives anyway is not an input) */
+	for (i = 0U; (i < RX_BUDGET) && (app_monitor.cal.output_bus != app_monitor.cal.input_bus); i++) {
+		if (hal_can_receive(app_monitor.cal.output_bus, &f) != SQ_OK) {
+			break;
+		}
+		if ((f.flags & HAL_CAN_FLAG_ERR) != 0U) {
+			monitor_on_frame(&app_monitor, &f);
+		}
 	}
 	if (now >= app_next_tick_us) {
 		const uint32_t t0 = hal_cycles();
 		uint32_t cpu = hal_cycles_per_us();
 
-		if (hal_can_get_status(&st) == SQ_OK) {
+		if (bus_status(&st) == SQ_OK) {
 			monitor_on_can_status(&app_monitor, &st);
 		}
 		monitor_step(&app_monitor, now);

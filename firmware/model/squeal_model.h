@@ -135,7 +135,8 @@ typedef struct {
 
 /*
  * Check a calibration against the documented domain.
- * Returns SQ_OK, or SQ_EINVAL if params is NULL or any field is outside it.
+ * Returns SQ_OK, or SQ_EINVAL if any field is outside it (params NULL is a
+ * programming error: hal_contract_failed, hal.h).
  */
 int squeal_model_params_check(const squeal_params_t *params);
 
@@ -143,8 +144,8 @@ int squeal_model_params_check(const squeal_params_t *params);
  * Classify one operating point.
  * Returns SQ_OK with out->state one of STABLE, BISTABLE, UNSTABLE or
  * NOT_SLIDING; SQ_EINVAL with out->state = INVALID (all values 0, no flags)
- * when params or point is outside the domain or criterion is unknown;
- * SQ_EINVAL without touching anything when a pointer is NULL.
+ * when params or point is outside the domain or criterion is unknown. A
+ * NULL pointer is a programming error (hal_contract_failed, hal.h).
  * Pure function: no state, no side effects, bounded time.
  */
 int squeal_model_classify(const squeal_params_t *params,

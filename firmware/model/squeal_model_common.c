@@ -3,6 +3,8 @@
 #include "squeal_model.h"
 #include "squeal_model_internal.h"
 
+#include "hal.h"
+
 #include <stddef.h>
 
 /*
@@ -12,9 +14,7 @@
  */
 void squeal_model_default_params(squeal_params_t *params)
 {
-	if (params == NULL) {
-		return;
-	}
+	HAL_REQUIRE(params != NULL);
 #if defined(SQUEAL_NUMERIC_FIXED)
 	params->mass_kg = 1 << SQUEAL_Q_MASS;
 	params->omega0_radps = 5000 << SQUEAL_Q_OMEGA0;
@@ -94,9 +94,7 @@ int squeal_model_classify(const squeal_params_t *params,
 {
 	squeal_case_t c;
 
-	if ((params == NULL) || (point == NULL) || (out == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((params != NULL) && (point != NULL) && (out != NULL));
 	c = squeal_model_case(params, point);
 	if ((c == SQUEAL_CASE_INVALID) ||
 	    ((criterion != SQUEAL_CRITERION_EXACT) &&

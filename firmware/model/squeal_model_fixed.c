@@ -22,6 +22,8 @@
 #include "squeal_model.h"
 #include "squeal_model_internal.h"
 
+#include "hal.h"
+
 /* Domain limits in raw units of each field's Q-format (squeal_model.h). */
 #define MASS_MAX_RAW ((int32_t)10000 << SQUEAL_Q_MASS)
 #define OMEGA0_MAX_RAW ((int32_t)500000 << SQUEAL_Q_OMEGA0)
@@ -48,9 +50,7 @@ static bool in_range(int32_t x, int32_t lo, int32_t hi)
 
 int squeal_model_params_check(const squeal_params_t *params)
 {
-	if (params == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(params != NULL);
 	if (!in_range(params->mass_kg, 1, MASS_MAX_RAW) ||
 	    !in_range(params->omega0_radps, 1, OMEGA0_MAX_RAW) ||
 	    !in_range(params->damping, 1, DAMPING_MAX_RAW) ||

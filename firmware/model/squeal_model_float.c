@@ -23,6 +23,8 @@
 #include "squeal_model.h"
 #include "squeal_model_internal.h"
 
+#include "hal.h"
+
 /* Domain limits (see squeal_model.h). */
 #define MASS_MAX_KG 10000.0f
 #define OMEGA0_MAX_RADPS 500000.0f
@@ -89,9 +91,7 @@ static bool in_range(float x, float lo, float hi)
 
 int squeal_model_params_check(const squeal_params_t *params)
 {
-	if (params == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(params != NULL);
 	if (!in_range(params->mass_kg, FLT_TRUE_MIN, MASS_MAX_KG) ||
 	    !in_range(params->omega0_radps, FLT_TRUE_MIN, OMEGA0_MAX_RADPS) ||
 	    !in_range(params->damping, FLT_TRUE_MIN, DAMPING_MAX) ||

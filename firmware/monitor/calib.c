@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "hal.h"
 #include "sq_status.h"
 
 #define HEADER_LEN 8U
@@ -62,15 +63,16 @@ static const calib_field_t fields[] = {
 	F_U32(hyst_rho_ppm, 0, 1000000),
 	F_U32(rho_warn_ppm, 0, 1000000),
 	F_U16(watchdog_ms, 10, 10000),
+	F_U8(input_bus, 0, 1),
+	F_U8(output_bus, 0, 1),
+	F_U8(input_listen_only, 0, 1),
 };
 
 #define FIELD_COUNT (sizeof(fields) / sizeof(fields[0]))
 
 void calib_default(calib_t *cal)
 {
-	if (cal == NULL) {
-		return;
-	}
+	HAL_REQUIRE(cal != NULL);
 	/* the model's defaults in fixed-build units, whatever this build is */
 	cal->mass_q16 = 1 << 16;
 	cal->omega0_q12 = 5000 << 12;
@@ -107,6 +109,9 @@ void calib_default(calib_t *cal)
 	cal->hyst_rho_ppm = 20000U;        /* 0.02 in rho                     */
 	cal->rho_warn_ppm = 500000U;       /* 0.5                             */
 	cal->watchdog_ms = 100U;
+	cal->input_bus = 0U;          /* one bus, in normal mode: as before */
+	cal->output_bus = 0U;
+	cal->input_listen_only = 0U;
 }
 
 static int64_t field_get(const calib_t *cal, const calib_field_t *f)
@@ -172,9 +177,7 @@ int calib_validate(const calib_t *cal)
 {
 	uint32_t i;
 
-	if (cal == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(cal != NULL);
 	for (i = 0U; i < FIELD_COUNT; i++) {
 		const int64_t v = field_get(cal, &fields[i]);
 
@@ -192,9 +195,7 @@ int calib_field_range(uint32_t offset, int64_t *min, int64_t *max)
 {
 	uint32_t i;
 
-	if ((min == NULL) || (max == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((min != NULL) && (max != NULL));
 	for (i = 0U; i < FIELD_COUNT; i++) {
 		if (fields[i].offset == offset) {
 			*min = fields[i].min;
@@ -230,9 +231,9 @@ int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len)
 	uint32_t pos = HEADER_LEN;
 	uint32_t i;
 
-	if ((cal == NULL) || (buf == NULL) || (buf_len < CALIB_BLOCK_LEN) ||
-	    (calib_validate(cal) != SQ_OK)) {
-		return SQ_EINVAL;
+	HAL_REQUIRE((cal != NULL) && (buf != NULL) && (buf_len >= CALIB_BLOCK_LEN));
+	if (calib_validate(cal) != SQ_OK) {
+		return SQ_EINVAL; /* out-of-range values: the data's fault */
 	}
 	put_le(&buf[0], (uint32_t)CALIB_MAGIC, 4U);
 	put_le(&buf[4], CALIB_VERSION, 2U);
@@ -258,9 +259,7 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 	uint32_t pos = HEADER_LEN;
 	uint32_t i;
 
-	if ((buf == NULL) || (cal == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((buf != NULL) && (cal != NULL));
 	calib_default(&tmp); /* every byte of tmp defined before use */
 	if (len < CALIB_BLOCK_LEN) {
 		err = CALIB_ERR_LENGTH;

@@ -29,7 +29,7 @@
 #include "squeal_model.h"
 
 #define CALIB_MAGIC 0x42435153UL /* "SQCB" little-endian */
-#define CALIB_VERSION 1U
+#define CALIB_VERSION 2U /* 2: input_bus, output_bus, input_listen_only */
 
 typedef struct {
 	/* model (fixed-build Q-formats, see squeal_model.h) */
@@ -74,10 +74,14 @@ typedef struct {
 	uint32_t rho_warn_ppm;       /* bistable: rho below -> level 2 500000 */
 	/* platform */
 	uint16_t watchdog_ms;        /* IWDG / software watchdog       100 */
+	/* buses (hal.h: 0 .. HAL_CAN_BUSES-1; version 2) */
+	uint8_t input_bus;           /* DiscSpeed/PadForce come from      0 */
+	uint8_t output_bus;          /* Squeal* frames go out on          0 */
+	uint8_t input_listen_only;   /* 1: never send on the input bus    0 */
 } calib_t;
 
 /* Size of the stored block: header 8 + fields + CRC 4. */
-#define CALIB_BLOCK_LEN 103U
+#define CALIB_BLOCK_LEN 106U
 
 /* Why a block was refused (calib_decode's *reason). */
 typedef enum {
@@ -92,15 +96,17 @@ typedef enum {
 /* The factory defaults (model.md section 8, the DBC's IDs and periods). */
 void calib_default(calib_t *cal);
 
-/* Range check of every field. SQ_OK or SQ_EINVAL. */
+/* Range check of every field. SQ_OK or SQ_EINVAL. NULL pointers given to
+ * any calib_* function are programming errors: hal_contract_failed(). */
 int calib_validate(const calib_t *cal);
 
-/* Serialize (always CALIB_BLOCK_LEN bytes). SQ_OK, SQ_EINVAL (NULL, short
- * buffer, or a calibration that does not validate). */
+/* Serialize (always CALIB_BLOCK_LEN bytes; a shorter buffer is a
+ * programming error). SQ_OK, SQ_EINVAL (a calibration that does not
+ * validate). */
 int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len);
 
 /* Parse and check a stored block. SQ_OK (*cal written), SQ_EBADMSG (with
- * *reason; *cal untouched), SQ_EINVAL (NULL). reason may be NULL. */
+ * *reason; *cal untouched). reason may be NULL. */
 int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 		 calib_error_t *reason);
 
@@ -108,7 +114,7 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
  * The valid stored range of the field at byte offset `offset` in calib_t
  * (offsetof), from the same table calib_validate() uses, so that other
  * front ends (the text file parser) need no copy of it.
- * SQ_OK, SQ_ENOENT (no field starts there), SQ_EINVAL (NULL).
+ * SQ_OK, SQ_ENOENT (no field starts there).
  */
 int calib_field_range(uint32_t offset, int64_t *min, int64_t *max);
 

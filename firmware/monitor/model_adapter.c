@@ -3,6 +3,8 @@
 
 #include <stddef.h>
 
+#include "hal.h"
+
 #if defined(SQUEAL_NUMERIC_FIXED)
 
 /* round(v * mul / 2^q) for v >= 0 or < 0, clamped to int32 */
@@ -71,9 +73,7 @@ int model_adapter_eval(const squeal_params_t *params,
 	squeal_result_t r;
 	int rc;
 
-	if ((params == NULL) || (out == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((params != NULL) && (out != NULL));
 	if ((v0_umps < 0) || (force_mn < 0)) {
 		/* the model would say invalid too; keep integers out of UB */
 		v0_umps = -1;

@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "hal.h"
 #include "sq_status.h"
 
 #define US_PER_MS 1000U
@@ -61,9 +62,7 @@ int monitor_init(monitor_t *me, const calib_t *cal, bool calib_invalid,
 {
 	int rc = SQ_OK;
 
-	if (me == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(me != NULL);
 	*me = (monitor_t){ 0 };
 	if ((cal != NULL) && (calib_validate(cal) == SQ_OK)) {
 		me->cal = *cal;
@@ -266,7 +265,8 @@ static void force_frame(monitor_t *me, const hal_can_frame_t *f)
 
 void monitor_on_frame(monitor_t *me, const hal_can_frame_t *frame)
 {
-	if ((me == NULL) || (frame == NULL) || !me->started) {
+	HAL_REQUIRE((me != NULL) && (frame != NULL));
+	if (!me->started) {
 		return;
 	}
 	if ((frame->flags & HAL_CAN_FLAG_ERR) != 0U) {
@@ -290,9 +290,7 @@ void monitor_on_frame(monitor_t *me, const hal_can_frame_t *frame)
 
 void monitor_on_can_status(monitor_t *me, const hal_can_status_t *status)
 {
-	if ((me == NULL) || (status == NULL)) {
-		return;
-	}
+	HAL_REQUIRE((me != NULL) && (status != NULL));
 	if ((status->state == HAL_CAN_STATE_BUS_OFF) || (status->bus_off_count != 0U)) {
 		me->bus_off_seen = true;
 	}
@@ -302,7 +300,8 @@ void monitor_on_can_status(monitor_t *me, const hal_can_status_t *status)
 
 void monitor_report_task_time(monitor_t *me, uint32_t task_us)
 {
-	if ((me != NULL) && (task_us > me->worst_task_us)) {
+	HAL_REQUIRE(me != NULL);
+	if (task_us > me->worst_task_us) {
 		me->worst_task_us = task_us;
 	}
 }
@@ -592,9 +591,7 @@ uint16_t monitor_fault_bits(const monitor_t *me)
 {
 	uint32_t b = 0U;
 
-	if (me == NULL) {
-		return 0U;
-	}
+	HAL_REQUIRE(me != NULL);
 	if ((me->speed.faults & (INPUT_FAULT_STALE | INPUT_FAULT_NEVER_SEEN)) != 0U) {
 		b |= MSG_FAULT_SPEED_STALE;
 	}
@@ -696,7 +693,8 @@ void monitor_step(monitor_t *me, uint64_t now_us)
 {
 	uint8_t warning;
 
-	if ((me == NULL) || !me->started) {
+	HAL_REQUIRE(me != NULL);
+	if (!me->started) {
 		return;
 	}
 	if (now_us > me->now_us) {
@@ -735,9 +733,7 @@ void monitor_step(monitor_t *me, uint64_t now_us)
 
 int monitor_peek_tx(const monitor_t *me, hal_can_frame_t *frame)
 {
-	if ((me == NULL) || (frame == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((me != NULL) && (frame != NULL));
 	if (me->txq_count == 0U) {
 		return SQ_EAGAIN;
 	}
@@ -747,7 +743,8 @@ int monitor_peek_tx(const monitor_t *me, hal_can_frame_t *frame)
 
 void monitor_tx_done(monitor_t *me, int hal_rc)
 {
-	if ((me == NULL) || (me->txq_count == 0U)) {
+	HAL_REQUIRE(me != NULL);
+	if (me->txq_count == 0U) {
 		return;
 	}
 	if (hal_rc == SQ_OK) {

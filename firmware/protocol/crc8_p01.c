@@ -7,6 +7,8 @@
  */
 #include "crc8_p01.h"
 
+#include "hal.h"
+
 /* crc8_table[i] = CRC register after shifting byte i through an all-zero
  * register: i.e. the polynomial division remainder of i * x^8. */
 static const uint8_t crc8_table[256] = {
@@ -48,9 +50,7 @@ uint8_t crc8_p01_update(uint8_t crc, const uint8_t *data, size_t len)
 {
 	size_t i;
 
-	if (data == NULL) {
-		return crc;
-	}
+	HAL_REQUIRE((data != NULL) || (len == 0U));
 	for (i = 0; i < len; i++) {
 		crc = crc8_table[(uint8_t)(crc ^ data[i])];
 	}

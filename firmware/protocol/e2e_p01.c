@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "crc8_p01.h"
+#include "hal.h"
 #include "sq_status.h"
 
 #define COUNTER_MODULO 15U /* counters 0..14 */
@@ -44,28 +45,24 @@ static uint8_t frame_crc(const e2e_p01_config_t *cfg, const uint8_t *data,
 int e2e_p01_crc(const e2e_p01_config_t *cfg, const uint8_t *data,
 		uint8_t len, uint8_t *crc)
 {
-	if (e2e_p01_config_check(cfg) != SQ_OK || data == NULL || crc == NULL ||
-	    len != cfg->data_len) {
-		return SQ_EINVAL;
-	}
+	/* a bad configuration or length is the caller's error, not the data's */
+	HAL_REQUIRE((e2e_p01_config_check(cfg) == SQ_OK) && (data != NULL) && (crc != NULL));
+	HAL_REQUIRE(len == cfg->data_len);
 	*crc = frame_crc(cfg, data, len);
 	return SQ_OK;
 }
 
 void e2e_p01_tx_init(e2e_p01_tx_t *tx)
 {
-	if (tx != NULL) {
-		tx->counter = 0U;
-	}
+	HAL_REQUIRE(tx != NULL);
+	tx->counter = 0U;
 }
 
 int e2e_p01_protect(const e2e_p01_config_t *cfg, e2e_p01_tx_t *tx,
 		    uint8_t *data, uint8_t len)
 {
-	if (e2e_p01_config_check(cfg) != SQ_OK || tx == NULL || data == NULL ||
-	    len != cfg->data_len || tx->counter > E2E_P01_COUNTER_MAX) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((e2e_p01_config_check(cfg) == SQ_OK) && (tx != NULL) && (data != NULL));
+	HAL_REQUIRE((len == cfg->data_len) && (tx->counter <= E2E_P01_COUNTER_MAX));
 	data[1] = (uint8_t)((data[1] & 0xF0U) | tx->counter);
 	data[0] = frame_crc(cfg, data, len);
 	tx->counter = (uint8_t)((tx->counter + 1U) % COUNTER_MODULO);
@@ -74,9 +71,7 @@ int e2e_p01_protect(const e2e_p01_config_t *cfg, e2e_p01_tx_t *tx,
 
 void e2e_p01_rx_reset(e2e_p01_rx_t *rx)
 {
-	if (rx == NULL) {
-		return;
-	}
+	HAL_REQUIRE(rx != NULL);
 	rx->last_valid_counter = 0U;
 	rx->max_delta_counter = 0U;
 	rx->lost_data = 0U;
@@ -89,9 +84,7 @@ void e2e_p01_rx_init(e2e_p01_rx_t *rx)
 {
 	size_t i;
 
-	if (rx == NULL) {
-		return;
-	}
+	HAL_REQUIRE(rx != NULL);
 	e2e_p01_rx_reset(rx);
 	for (i = 0; i < (size_t)E2E_P01_STATUS_COUNT; i++) {
 		rx->status_count[i] = 0U;
@@ -145,9 +138,9 @@ e2e_p01_status_t e2e_p01_check(const e2e_p01_config_t *cfg,
 {
 	e2e_p01_status_t st;
 
-	if (rx == NULL || e2e_p01_config_check(cfg) != SQ_OK) {
-		return E2E_P01_STATUS_WRONGCRC;
-	}
+	/* A NULL or invalid configuration is a programming error, never a
+	 * wrong CRC: a bad frame and a bad build must not look alike. */
+	HAL_REQUIRE((rx != NULL) && (e2e_p01_config_check(cfg) == SQ_OK));
 	/* Each call is one receive cycle: the tolerated jump grows, so frames
 	 * lost while nothing (or nothing valid) arrived are tolerated. */
 	if (rx->max_delta_counter < E2E_P01_COUNTER_MAX) {

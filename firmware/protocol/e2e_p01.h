@@ -93,14 +93,15 @@ void e2e_p01_tx_init(e2e_p01_tx_t *tx);
  * Protect a packed frame in place: write tx->counter into the low nibble of
  * data[1] (high nibble kept), the CRC into data[0], then advance the
  * counter (14 -> 0). len must equal cfg->data_len.
- * Returns SQ_OK, or SQ_EINVAL (NULL, bad config, len mismatch, counter > 14
- * in tx) with data untouched and the counter not advanced.
+ * Returns SQ_OK. A NULL pointer, a bad config, a len mismatch or a counter
+ * > 14 in tx is a programming error: hal_contract_failed() (hal.h).
  */
 int e2e_p01_protect(const e2e_p01_config_t *cfg, e2e_p01_tx_t *tx,
 		    uint8_t *data, uint8_t len);
 
 /* The CRC protect would write, for a frame whose bytes 1..len-1 are final.
- * Returns SQ_OK and *crc, or SQ_EINVAL. */
+ * Returns SQ_OK and *crc; NULL, a bad config or a len mismatch is a
+ * programming error (hal_contract_failed). */
 int e2e_p01_crc(const e2e_p01_config_t *cfg, const uint8_t *data,
 		uint8_t len, uint8_t *crc);
 
@@ -113,8 +114,9 @@ void e2e_p01_rx_reset(e2e_p01_rx_t *rx);
 
 /*
  * Check one received frame (or data == NULL: no frame this cycle) and
- * update rx (state, status, status_count). Returns the status; an invalid
- * cfg or a NULL rx gives E2E_P01_STATUS_WRONGCRC without touching rx.
+ * update rx (state, status, status_count). Returns the status. An invalid
+ * cfg or a NULL rx is a programming error (hal_contract_failed, hal.h),
+ * never reported as a wrong CRC; a bad frame is WRONGCRC.
  */
 e2e_p01_status_t e2e_p01_check(const e2e_p01_config_t *cfg,
 			       e2e_p01_rx_t *rx,

@@ -8,6 +8,8 @@
  */
 #include "squeal_msgs.h"
 
+#include "hal.h"
+
 #include <limits.h>
 
 #include "sq_status.h"
@@ -279,9 +281,7 @@ int msg_disc_speed_pack(const msg_disc_speed_t *msg, uint8_t data[8], uint8_t *d
 {
 	int32_t raw[N_DS];
 
-	if (msg == NULL || data == NULL || dlc == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
 	raw[0] = msg->crc;
 	raw[1] = msg->counter;
 	raw[2] = msg->disc_speed_radps;
@@ -293,9 +293,7 @@ int msg_disc_speed_unpack(const uint8_t *data, uint8_t dlc, msg_disc_speed_t *ms
 	int32_t raw[N_DS];
 	int rc;
 
-	if (msg == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(msg != NULL);
 	rc = unpack_sigs(SIG_DS_CRC, N_DS, data, dlc, MSG_DISC_SPEED_DLC, raw);
 	if (rc != SQ_OK) {
 		return rc;
@@ -310,9 +308,7 @@ int msg_pad_force_pack(const msg_pad_force_t *msg, uint8_t data[8], uint8_t *dlc
 {
 	int32_t raw[N_PF];
 
-	if (msg == NULL || data == NULL || dlc == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
 	raw[0] = msg->crc;
 	raw[1] = msg->counter;
 	raw[2] = msg->pad_force_n;
@@ -324,9 +320,7 @@ int msg_pad_force_unpack(const uint8_t *data, uint8_t dlc, msg_pad_force_t *msg)
 	int32_t raw[N_PF];
 	int rc;
 
-	if (msg == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(msg != NULL);
 	rc = unpack_sigs(SIG_PF_CRC, N_PF, data, dlc, MSG_PAD_FORCE_DLC, raw);
 	if (rc != SQ_OK) {
 		return rc;
@@ -349,9 +343,7 @@ int msg_squeal_status_pack(const msg_squeal_status_t *msg, uint8_t data[8],
 {
 	int32_t raw[N_ST];
 
-	if (msg == NULL || data == NULL || dlc == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
 	if (!squeal_state_valid(msg->squeal_state)) {
 		return SQ_ERANGE;
 	}
@@ -371,9 +363,7 @@ int msg_squeal_status_unpack(const uint8_t *data, uint8_t dlc,
 	int32_t raw[N_ST];
 	int rc;
 
-	if (msg == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(msg != NULL);
 	rc = unpack_sigs(SIG_ST_CRC, N_ST, data, dlc, MSG_SQUEAL_STATUS_DLC, raw);
 	if (rc != SQ_OK) {
 		return rc;
@@ -392,9 +382,7 @@ int msg_squeal_detail_pack(const msg_squeal_detail_t *msg, uint8_t data[8],
 {
 	int32_t raw[N_DT];
 
-	if (msg == NULL || data == NULL || dlc == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
 	raw[0] = msg->crc;
 	raw[1] = msg->counter;
 	raw[2] = msg->v0_mps;
@@ -411,9 +399,7 @@ int msg_squeal_detail_unpack(const uint8_t *data, uint8_t dlc,
 	int32_t raw[N_DT];
 	int rc;
 
-	if (msg == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(msg != NULL);
 	rc = unpack_sigs(SIG_DT_CRC, N_DT, data, dlc, MSG_SQUEAL_DETAIL_DLC, raw);
 	if (rc != SQ_OK) {
 		return rc;
@@ -432,9 +418,7 @@ int msg_squeal_detail2_pack(const msg_squeal_detail2_t *msg, uint8_t data[8],
 {
 	int32_t raw[N_D2];
 
-	if (msg == NULL || data == NULL || dlc == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
 	raw[0] = msg->crc;
 	raw[1] = msg->counter;
 	raw[2] = msg->force_n;
@@ -450,9 +434,7 @@ int msg_squeal_detail2_unpack(const uint8_t *data, uint8_t dlc,
 	int32_t raw[N_D2];
 	int rc;
 
-	if (msg == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(msg != NULL);
 	rc = unpack_sigs(SIG_D2_CRC, N_D2, data, dlc, MSG_SQUEAL_DETAIL2_DLC, raw);
 	if (rc != SQ_OK) {
 		return rc;
@@ -473,9 +455,7 @@ int msg_squeal_diag_pack(const msg_squeal_diag_t *msg, uint8_t data[8],
 	int32_t raw[N_DG];
 	unsigned int i;
 
-	if (msg == NULL || data == NULL || dlc == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
 	if ((msg->fault_bits & ~MSG_FAULT_ALL) != 0U) {
 		return SQ_ERANGE;
 	}
@@ -507,9 +487,7 @@ int msg_squeal_diag_unpack(const uint8_t *data, uint8_t dlc,
 	unsigned int i;
 	int rc;
 
-	if (msg == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(msg != NULL);
 	rc = unpack_sigs(SIG_DG_CRC, N_DG, data, dlc, MSG_SQUEAL_DIAG_DLC, raw);
 	if (rc != SQ_OK) {
 		return rc;
@@ -566,9 +544,7 @@ int msg_disc_speed_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
 {
 	int rc;
 
-	if (cfg == NULL || rx == NULL || msg == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((cfg != NULL) && (rx != NULL) && (msg != NULL));
 	rc = receive_check(cfg, rx, data, dlc);
 	if (rc != SQ_OK) {
 		return rc;
@@ -582,9 +558,7 @@ int msg_pad_force_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
 {
 	int rc;
 
-	if (cfg == NULL || rx == NULL || msg == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((cfg != NULL) && (rx != NULL) && (msg != NULL));
 	rc = receive_check(cfg, rx, data, dlc);
 	if (rc != SQ_OK) {
 		return rc;
@@ -611,9 +585,7 @@ int msg_sig_get_raw(const msg_sig_desc_t *sig, const uint8_t *data,
 {
 	const msg_desc_t *m;
 
-	if (sig == NULL || data == NULL || raw == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((sig != NULL) && (data != NULL) && (raw != NULL));
 	m = msg_desc_find(sig->msg_id);
 	if (m == NULL) {
 		return SQ_EINVAL;

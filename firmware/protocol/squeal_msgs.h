@@ -188,12 +188,13 @@ typedef struct {
 
 /*
  * pack: write msg into data[0..dlc-1] (all 8 bytes of data are written,
- * bytes beyond the DLC as 0) and *dlc. Returns SQ_OK, SQ_EINVAL for a NULL
- * pointer, SQ_ERANGE for a field outside its range (data untouched then).
+ * bytes beyond the DLC as 0) and *dlc. Returns SQ_OK, SQ_ERANGE for a
+ * field outside its range (data untouched then); a NULL pointer is a
+ * programming error (hal_contract_failed, hal.h).
  * SquealDiag packs only the fields of msg->page.
  *
- * unpack: read a received frame into *msg. Returns SQ_OK, SQ_EINVAL for a
- * NULL pointer, SQ_EBADMSG for a wrong DLC, a counter of 15 or (SquealDiag)
+ * unpack: read a received frame into *msg (msg NULL: hal_contract_failed).
+ * Returns SQ_OK, SQ_EBADMSG for no data (NULL), a wrong DLC, a counter of 15 or (SquealDiag)
  * an unknown page; *msg is written only on SQ_OK. Values are not range
  * checked beyond that (plausibility is the monitor's job), but the CRC is
  * not checked either: use msg_*_receive() or e2e_p01_check() first.
@@ -217,7 +218,8 @@ int msg_squeal_diag_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_diag_t *
  * data == NULL means "nothing arrived this cycle") and unpack it only when
  * the status is usable. Returns SQ_OK with *msg written (rx->status is OK,
  * INITIAL or OKSOMELOST); SQ_EAGAIN for NONEWDATA; SQ_EBADMSG when the frame
- * must be discarded (rx->status tells why); SQ_EINVAL for NULL rx/cfg/msg.
+ * must be discarded (rx->status tells why). NULL rx/cfg/msg or an invalid
+ * cfg is a programming error (hal_contract_failed).
  * *msg is never written unless SQ_OK is returned.
  */
 int msg_disc_speed_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
@@ -273,7 +275,8 @@ const msg_desc_t *msg_desc_find(uint16_t id);
  * Raw value of one signal in a frame (sign-extended when signed).
  * Returns SQ_OK; SQ_ENOENT for a multiplexed signal that this frame does
  * not carry (other page); SQ_EBADMSG when dlc is not the message's DLC;
- * SQ_EINVAL for NULL pointers.
+ * SQ_EINVAL for a signal of no known message; NULL pointers are a
+ * programming error (hal_contract_failed).
  */
 int msg_sig_get_raw(const msg_sig_desc_t *sig, const uint8_t *data,
 		    uint8_t dlc, int32_t *raw);

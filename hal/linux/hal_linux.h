@@ -2,12 +2,14 @@
 /*
  * hal_linux.h: the Linux backend of hal/hal.h, and its set-up functions.
  *
- * CAN is a SocketCAN CAN_RAW socket on a named interface (vcan0, can0, a
- * PEAK/Kvaser/slcan adapter ...). Nothing here needs root or a capability:
- * the interface must exist and be up already (ip link ... up is the
- * administrator's job). Pieces, each in its own file so another backend
- * (the offline replay's virtual-time HAL) can take some and not others:
- *   hal_linux_can.c    CAN socket, filters, error frames, timestamps, TX retry
+ * CAN is one SocketCAN CAN_RAW socket per bus, each on a named interface
+ * (vcan0, can0, a PEAK/Kvaser/slcan adapter ...): bus 0 is the firmware's
+ * first bus, bus 1 (if opened) its second. Nothing here needs root or a
+ * capability: the interface must exist and be up already (ip link ... up is
+ * the administrator's job, as is `ip link set can0 type can listen-only on`
+ * for a bus the firmware only listens to). This backend is linked instead
+ * of the in-memory one (hal/vbus); nothing switches at run time. Pieces:
+ *   hal_linux_can.c    CAN sockets, filters, error frames, timestamps, TX retry
  *   hal_linux_time.c   hal_time_us, hal_cycles (CLOCK_MONOTONIC)
  *   hal_linux_idle.c   hal_idle_until, SIGINT/SIGTERM, software watchdog
  *   hal_linux_calib.c  calibration file, reset reason
@@ -20,7 +22,7 @@
  *	static volatile bool stop;
  *	hal_linux_install_signal_handlers(&stop);   SIGINT/SIGTERM end the loop
  *	hal_linux_set_calib_path("squeal.cal");
- *	if (hal_linux_open("vcan0", NULL) != SQ_OK)
+ *	if (hal_linux_open(0, "vcan0", NULL) != SQ_OK)
  *		fprintf(stderr, "%s\n", hal_linux_strerror()), exit(1);
  *	squeal_main(&stop);                          poll + hal_idle_until
  *	hal_linux_close();
@@ -49,11 +51,13 @@ typedef struct {
 } hal_linux_can_opts_t;
 
 /*
- * Open a CAN_RAW socket on ifname: all standard and extended data frames
+ * Open bus's CAN_RAW socket on ifname (bus < HAL_CAN_BUSES; bus 0 always
+ * exists, bus 1 exists for hal.h once an interface was named for it here,
+ * SQ_ENODEV until then): all standard and extended data frames
  * pass until hal_can_set_rx_filter(); error frames (bus-off, controller
  * problems, restarts, protocol/ACK/transceiver errors, counters; not lost
  * arbitration) are on. opts may be NULL for the defaults. Re-opening closes
- * the previous socket first.
+ * that bus's previous socket first; the bus's mode (hal_can_set_mode) stays.
  * Returns SQ_OK, or (with hal_linux_strerror() saying what and what to do):
  *   SQ_ENOTSUP   this kernel has no CAN (socket(PF_CAN) EAFNOSUPPORT or
  *                EPROTONOSUPPORT)
@@ -62,13 +66,14 @@ typedef struct {
  *   SQ_EINVAL    bad name, or not a CAN interface (e.g. "lo")
  *   SQ_EIO       permission denied or another system error
  */
-int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts);
+int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *opts);
 
-/* Close the socket (hal_can_* then return SQ_ENETDOWN). Safe to repeat. */
+/* Close every bus's socket (hal_can_* then return SQ_ENETDOWN). Safe to
+ * repeat. */
 void hal_linux_close(void);
 
-/* The socket, for a caller's own poll() (-1 when closed). */
-int hal_linux_can_fd(void);
+/* bus's socket, for a caller's own poll() (-1 when closed). */
+int hal_linux_can_fd(uint8_t bus);
 
 /* Counters beyond hal_can_status_t, for tests and the host tools. */
 typedef struct {
@@ -86,10 +91,10 @@ typedef struct {
 	uint32_t tx_worst_us;    /* longest hal_can_send() call                  */
 } hal_linux_can_stats_t;
 
-void hal_linux_can_get_stats(hal_linux_can_stats_t *stats);
+void hal_linux_can_get_stats(uint8_t bus, hal_linux_can_stats_t *stats);
 
 /* Back to accepting every data frame (undoes hal_can_set_rx_filter). */
-int hal_linux_can_accept_all(void);
+int hal_linux_can_accept_all(uint8_t bus);
 
 /* ---- errors --------------------------------------------------------------- */
 

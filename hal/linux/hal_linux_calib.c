@@ -22,7 +22,6 @@
 #include <unistd.h>
 
 #include "hal_linux.h"
-#include "hal_vbus.h"
 
 static char calib_path[PATH_MAX];
 static hal_reset_reason_t reset_reason = HAL_RESET_POWER_ON;
@@ -87,9 +86,6 @@ static int write_full(int fd, const uint8_t *buf, size_t len)
 
 int hal_calib_read(uint8_t *buf, uint32_t len)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_calib_read(buf, len);
-	}
 	uint8_t file_buf[HAL_CALIB_MAX_LEN + 1U];
 	ssize_t got;
 	int fd;
@@ -160,9 +156,6 @@ static int calib_write_fail(const char *tmp_path, const char *what, int err)
 
 int hal_calib_write(const uint8_t *buf, uint32_t len)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_calib_write(buf, len);
-	}
 	char tmp_path[PATH_MAX];
 	uint8_t check[HAL_CALIB_MAX_LEN];
 	int fd;

@@ -1,6 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * hal_linux_can.c: hal.h's CAN functions on a SocketCAN CAN_RAW socket.
+ * hal_linux_can.c: hal.h's CAN functions on SocketCAN: one CAN_RAW socket
+ * per bus (bus 0 .. HAL_CAN_BUSES-1, each opened on its own interface by
+ * hal_linux_open()), each with everything below. A bus in listen-only mode
+ * refuses every send (SQ_EPERM, counted in tx_refused_listen_only); the
+ * interface itself is made listen-only by its administrator.
  *
  * - Filters are the kernel's (CAN_RAW_FILTER): unwanted frames never reach
  *   the process. Filters set before hal_linux_open() are kept and applied.
@@ -45,7 +49,6 @@
 #include <linux/can/raw.h>
 
 #include "hal_linux.h"
-#include "hal_vbus.h"
 
 #ifndef CAN_ERR_CNT
 #define CAN_ERR_CNT 0x00000200U
@@ -61,8 +64,10 @@
 		  | CAN_ERR_ACK | CAN_ERR_BUSOFF | CAN_ERR_BUSERROR | CAN_ERR_RESTARTED \
 		  | CAN_ERR_CNT)
 
-static struct {
+typedef struct {
 	int fd;
+	bool named;                    /* an interface was given: the bus exists */
+	hal_can_mode_t mode;           /* the firmware's; kept over re-opens    */
 	char ifname[IFNAMSIZ];
 	uint32_t tx_max_tries;
 	uint32_t tx_budget_us;
@@ -74,72 +79,99 @@ static struct {
 	bool filter_set;
 	uint32_t filter_count;
 	struct can_filter filters[HAL_CAN_MAX_FILTERS];
-} can = { .fd = -1, .status = { .state = HAL_CAN_STATE_STOPPED } };
+} lc_t;
 
-int hal_linux_can_fd(void)
+#define LC_CLOSED { .fd = -1, .status = { .state = HAL_CAN_STATE_STOPPED } }
+_Static_assert(HAL_CAN_BUSES == 2U, "one initialiser per bus");
+static lc_t can[HAL_CAN_BUSES] = { LC_CLOSED, LC_CLOSED };
+
+/* The bus, or NULL for a valid index that has no interface: bus 0 always
+ * exists (stopped until opened), another bus once hal_linux_open() named
+ * an interface for it. */
+static lc_t *bus_of(uint8_t bus)
 {
-	return can.fd;
+	HAL_REQUIRE(bus < HAL_CAN_BUSES);
+	return ((bus == 0U) || can[bus].named) ? &can[bus] : NULL;
+}
+
+int hal_linux_can_fd(uint8_t bus)
+{
+	HAL_REQUIRE(bus < HAL_CAN_BUSES);
+	return can[bus].fd;
+}
+
+static void close_bus(lc_t *c)
+{
+	if (c->fd >= 0) {
+		(void)close(c->fd);
+	}
+	c->fd = -1;
+	c->status.state = HAL_CAN_STATE_STOPPED;
 }
 
 void hal_linux_close(void)
 {
-	if (can.fd >= 0) {
-		(void)close(can.fd);
+	uint32_t b;
+
+	for (b = 0U; b < HAL_CAN_BUSES; b++) {
+		close_bus(&can[b]);
 	}
-	can.fd = -1;
-	can.status.state = HAL_CAN_STATE_STOPPED;
 }
 
-static int apply_filter(void)
+static int apply_filter(lc_t *c)
 {
 	static const struct can_filter all = { .can_id = 0U, .can_mask = 0U };
 	const void *opt = &all;
 	socklen_t len = (socklen_t)sizeof(all);
 
-	if (can.fd < 0) {
+	if (c->fd < 0) {
 		return SQ_OK;
 	}
-	if (can.filter_set) {
-		opt = can.filter_count > 0U ? can.filters : NULL;
-		len = (socklen_t)(can.filter_count * sizeof(can.filters[0]));
+	if (c->filter_set) {
+		opt = c->filter_count > 0U ? c->filters : NULL;
+		len = (socklen_t)(c->filter_count * sizeof(c->filters[0]));
 	}
-	if (setsockopt(can.fd, SOL_CAN_RAW, CAN_RAW_FILTER, opt, len) != 0) {
-		hal_linux_set_error("%s: CAN_RAW_FILTER: %s", can.ifname, strerror(errno));
+	if (setsockopt(c->fd, SOL_CAN_RAW, CAN_RAW_FILTER, opt, len) != 0) {
+		hal_linux_set_error("%s: CAN_RAW_FILTER: %s", c->ifname, strerror(errno));
 		return SQ_EINVAL;
 	}
 	return SQ_OK;
 }
 
-int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
+int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_can_set_rx_filter(ids, count);
-	}
+	lc_t *c = bus_of(bus);
 	uint32_t i;
 
-	if (count > HAL_CAN_MAX_FILTERS || (ids == NULL && count > 0U)) {
+	HAL_REQUIRE((count <= HAL_CAN_MAX_FILTERS) && ((filters != NULL) || (count == 0U)));
+	if (c == NULL) {
+		return SQ_ENODEV;
+	}
+	if (!hal_can_filters_in_range(filters, count)) {
 		return SQ_EINVAL;
 	}
 	for (i = 0; i < count; i++) {
-		if (ids[i] > CAN_SFF_MASK) {
-			return SQ_EINVAL;
-		}
+		const bool ext = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U;
+
+		/* The kind (EFF flag) always matches exactly; RTR is not masked. */
+		c->filters[i].can_id = filters[i].id | (ext ? CAN_EFF_FLAG : 0U);
+		c->filters[i].can_mask = filters[i].mask | CAN_EFF_FLAG;
 	}
-	for (i = 0; i < count; i++) {
-		/* Same id, standard format, data frame (EFF and RTR must be 0). */
-		can.filters[i].can_id = ids[i];
-		can.filters[i].can_mask = CAN_SFF_MASK | CAN_EFF_FLAG | CAN_RTR_FLAG;
-	}
-	can.filter_count = count;
-	can.filter_set = true;
-	return apply_filter();
+	c->filter_count = count;
+	c->filter_set = true;
+	return apply_filter(c);
 }
 
-int hal_linux_can_accept_all(void)
+int hal_linux_can_accept_all(uint8_t bus)
 {
-	can.filter_set = false;
-	can.filter_count = 0U;
-	return apply_filter();
+	lc_t *c = bus_of(bus);
+
+	if (c == NULL) {
+		return SQ_ENODEV;
+	}
+	c->filter_set = false;
+	c->filter_count = 0U;
+	return apply_filter(c);
 }
 
 static int open_fail(int fd, int code)
@@ -149,16 +181,16 @@ static int open_fail(int fd, int code)
 	return code;
 }
 
-static int set_int_opt(int fd, int level, int name, int value, const char *what)
+static int set_int_opt(const lc_t *c, int fd, int level, int name, int value, const char *what)
 {
 	if (setsockopt(fd, level, name, &value, (socklen_t)sizeof(value)) != 0) {
-		hal_linux_set_error("%s: setsockopt %s: %s", can.ifname, what, strerror(errno));
+		hal_linux_set_error("%s: setsockopt %s: %s", c->ifname, what, strerror(errno));
 		return -1;
 	}
 	return 0;
 }
 
-int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
+int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *opts)
 {
 	static const hal_linux_can_opts_t defaults = { 0 };
 	const can_err_mask_t err_mask = ERR_MASK;
@@ -166,8 +198,11 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 	struct ifreq ifr;
 	size_t len;
 	int fd;
+	lc_t *c;
 
-	hal_linux_close();
+	HAL_REQUIRE(bus < HAL_CAN_BUSES);
+	c = &can[bus];
+	close_bus(c);
 	if (opts == NULL) {
 		opts = &defaults;
 	}
@@ -175,7 +210,8 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 		hal_linux_set_error("bad CAN interface name (1 to %d characters)", IFNAMSIZ - 1);
 		return SQ_EINVAL;
 	}
-	memcpy(can.ifname, ifname, len + 1U);
+	memcpy(c->ifname, ifname, len + 1U);
+	c->named = true;
 
 	fd = socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
 	if (fd < 0) {
@@ -240,12 +276,12 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 		hal_linux_set_error("%s: CAN_RAW_ERR_FILTER: %s", ifname, strerror(errno));
 		return open_fail(fd, SQ_EIO);
 	}
-	if (set_int_opt(fd, SOL_SOCKET, SO_TIMESTAMP, 1, "SO_TIMESTAMP") != 0
-	    || set_int_opt(fd, SOL_SOCKET, SO_RXQ_OVFL, 1, "SO_RXQ_OVFL") != 0
+	if (set_int_opt(c, fd, SOL_SOCKET, SO_TIMESTAMP, 1, "SO_TIMESTAMP") != 0
+	    || set_int_opt(c, fd, SOL_SOCKET, SO_RXQ_OVFL, 1, "SO_RXQ_OVFL") != 0
 	    || (opts->rcvbuf_bytes > 0
-		&& set_int_opt(fd, SOL_SOCKET, SO_RCVBUF, opts->rcvbuf_bytes, "SO_RCVBUF") != 0)
+		&& set_int_opt(c, fd, SOL_SOCKET, SO_RCVBUF, opts->rcvbuf_bytes, "SO_RCVBUF") != 0)
 	    || (opts->sndbuf_bytes > 0
-		&& set_int_opt(fd, SOL_SOCKET, SO_SNDBUF, opts->sndbuf_bytes, "SO_SNDBUF") != 0)) {
+		&& set_int_opt(c, fd, SOL_SOCKET, SO_SNDBUF, opts->sndbuf_bytes, "SO_SNDBUF") != 0)) {
 		return open_fail(fd, SQ_EIO);
 	}
 	if (bind(fd, (const struct sockaddr *)&addr, (socklen_t)sizeof(addr)) != 0) {
@@ -255,97 +291,112 @@ int hal_linux_open(const char *ifname, const hal_linux_can_opts_t *opts)
 		return open_fail(fd, err == ENODEV ? SQ_ENOENT : SQ_EIO);
 	}
 
-	can.fd = fd;
-	can.tx_max_tries = opts->tx_max_tries > 0U ? opts->tx_max_tries : DEFAULT_TX_TRIES;
-	if (can.tx_max_tries > 16U) {
-		can.tx_max_tries = 16U;
+	c->fd = fd;
+	c->tx_max_tries = opts->tx_max_tries > 0U ? opts->tx_max_tries : DEFAULT_TX_TRIES;
+	if (c->tx_max_tries > 16U) {
+		c->tx_max_tries = 16U;
 	}
-	can.tx_budget_us = opts->tx_budget_us > 0U ? opts->tx_budget_us : DEFAULT_TX_BUDGET_US;
-	memset(&can.status, 0, sizeof(can.status));
-	memset(&can.stats, 0, sizeof(can.stats));
-	can.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
-	can.last_drop_count = 0U;
-	can.last_stamp_us = 0U;
-	if (apply_filter() != SQ_OK) {
-		hal_linux_close();
+	c->tx_budget_us = opts->tx_budget_us > 0U ? opts->tx_budget_us : DEFAULT_TX_BUDGET_US;
+	memset(&c->status, 0, sizeof(c->status));
+	memset(&c->stats, 0, sizeof(c->stats));
+	c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+	c->last_drop_count = 0U;
+	c->last_stamp_us = 0U;
+	if (apply_filter(c) != SQ_OK) {
+		close_bus(c);
 		return SQ_EIO;
 	}
 	hal_linux_set_error("%s", "");
 	return SQ_OK;
 }
 
-int hal_can_set_bitrate(uint32_t bitrate_kbps)
+/* Listen-only is the HAL's promise not to send: the interface itself is
+ * set listen-only by its administrator (ip link set can0 type can
+ * listen-only on), which this process cannot do without a capability. */
+int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 {
-	if (hal_vbus_active()) {
-		return (bitrate_kbps == 0U || bitrate_kbps > 1000U) ? SQ_EINVAL : SQ_OK;
+	lc_t *c = bus_of(bus);
+
+	HAL_REQUIRE((mode == HAL_CAN_MODE_NORMAL) || (mode == HAL_CAN_MODE_LISTEN_ONLY));
+	if (c == NULL) {
+		return SQ_ENODEV;
+	}
+	c->mode = mode;
+	return SQ_OK;
+}
+
+int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
+{
+	if (bus_of(bus) == NULL) {
+		return SQ_ENODEV;
 	}
 	/* the interface's bit rate is set by its administrator (ip link) */
 	(void)bitrate_kbps;
 	return SQ_ENOTSUP;
 }
 
-int hal_can_get_status(hal_can_status_t *status)
+int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_can_get_status(status);
+	const lc_t *c = bus_of(bus);
+
+	HAL_REQUIRE(status != NULL);
+	if (c == NULL) {
+		return SQ_ENODEV;
 	}
-	if (status == NULL) {
-		return SQ_EINVAL;
-	}
-	*status = can.status;
-	if (can.fd < 0) {
+	*status = c->status;
+	status->mode = c->mode;
+	if (c->fd < 0) {
 		status->state = HAL_CAN_STATE_STOPPED;
 	}
 	return SQ_OK;
 }
 
-void hal_linux_can_get_stats(hal_linux_can_stats_t *stats)
+void hal_linux_can_get_stats(uint8_t bus, hal_linux_can_stats_t *stats)
 {
-	if (stats != NULL) {
-		*stats = can.stats;
-	}
+	HAL_REQUIRE((bus < HAL_CAN_BUSES) && (stats != NULL));
+	*stats = can[bus].stats;
 }
 
-static void count_error_frame(const struct can_frame *cf)
+static void count_error_frame(lc_t *c, const struct can_frame *cf)
 {
 	canid_t cls = cf->can_id & CAN_ERR_MASK;
 
-	can.status.error_frames++;
+	c->status.error_frames++;
 	if ((cls & CAN_ERR_BUSOFF) != 0U) {
-		if (can.status.state != HAL_CAN_STATE_BUS_OFF) {
-			can.status.bus_off_count++;
+		if (c->status.state != HAL_CAN_STATE_BUS_OFF) {
+			c->status.bus_off_count++;
 		}
-		can.status.state = HAL_CAN_STATE_BUS_OFF;
+		c->status.state = HAL_CAN_STATE_BUS_OFF;
 	}
 	if ((cls & CAN_ERR_CRTL) != 0U) {
 		uint8_t d1 = cf->data[1];
 
 		if ((d1 & CAN_ERR_CRTL_RX_OVERFLOW) != 0U) {
-			can.status.rx_overruns++;
-			can.stats.rx_ctrl_overflows++;
+			c->status.rx_overruns++;
+			c->stats.rx_ctrl_overflows++;
 		}
 		if ((d1 & CAN_ERR_CRTL_TX_OVERFLOW) != 0U) {
-			can.status.tx_dropped++;
+			c->status.tx_dropped++;
 		}
 		if ((d1 & (CAN_ERR_CRTL_RX_PASSIVE | CAN_ERR_CRTL_TX_PASSIVE)) != 0U) {
-			can.status.state = HAL_CAN_STATE_ERROR_PASSIVE;
+			c->status.state = HAL_CAN_STATE_ERROR_PASSIVE;
 		} else if ((d1 & (CAN_ERR_CRTL_RX_WARNING | CAN_ERR_CRTL_TX_WARNING)) != 0U) {
-			can.status.state = HAL_CAN_STATE_ERROR_WARNING;
+			c->status.state = HAL_CAN_STATE_ERROR_WARNING;
 		} else if ((d1 & CAN_ERR_CRTL_ACTIVE) != 0U) {
-			can.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+			c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
 		}
 	}
 	if ((cls & CAN_ERR_RESTARTED) != 0U) {
-		can.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+		c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
 	}
 	if ((cls & CAN_ERR_CNT) != 0U) {
-		can.status.tx_error_count = cf->data[6];
-		can.status.rx_error_count = cf->data[7];
+		c->status.tx_error_count = cf->data[6];
+		c->status.rx_error_count = cf->data[7];
 	}
 }
 
 /* The kernel's receive time on our clock, or now when there is none. */
-static uint64_t frame_stamp_us(const struct msghdr *msg)
+static uint64_t frame_stamp_us(lc_t *c, const struct msghdr *msg)
 {
 	const struct cmsghdr *cm;
 	uint64_t now_us = hal_time_us();
@@ -364,9 +415,9 @@ static uint64_t frame_stamp_us(const struct msghdr *msg)
 
 			memcpy(&drops, CMSG_DATA(cm), sizeof(drops));
 			/* Cumulative, wraps: the unsigned difference is right. */
-			can.status.rx_overruns += drops - can.last_drop_count;
-			can.stats.rx_kernel_drops += (uint32_t)(drops - can.last_drop_count);
-			can.last_drop_count = drops;
+			c->status.rx_overruns += drops - c->last_drop_count;
+			c->stats.rx_kernel_drops += (uint32_t)(drops - c->last_drop_count);
+			c->last_drop_count = drops;
 		} else if (cm->cmsg_type == SCM_TIMESTAMP) {
 			/* struct timeval: two 64-bit fields (64-bit ABIs and
 			 * SO_TIMESTAMP_NEW) or two 32-bit ones (old 32-bit). */
@@ -386,29 +437,28 @@ static uint64_t frame_stamp_us(const struct msghdr *msg)
 		}
 	}
 	if (!found) {
-		can.stats.ts_fallbacks++;
+		c->stats.ts_fallbacks++;
 	}
 	if (stamp_us > now_us) {
 		stamp_us = now_us;
 	}
-	if (stamp_us < can.last_stamp_us) {
-		stamp_us = can.last_stamp_us;
+	if (stamp_us < c->last_stamp_us) {
+		stamp_us = c->last_stamp_us;
 	}
-	can.last_stamp_us = stamp_us;
+	c->last_stamp_us = stamp_us;
 	return stamp_us;
 }
 
-int hal_can_receive(hal_can_frame_t *frame)
+int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_can_receive(frame);
-	}
+	lc_t *c = bus_of(bus);
 	int skipped;
 
-	if (frame == NULL) {
-		return SQ_EINVAL;
+	HAL_REQUIRE(frame != NULL);
+	if (c == NULL) {
+		return SQ_ENODEV;
 	}
-	if (can.fd < 0) {
+	if (c->fd < 0) {
 		return SQ_ENETDOWN;
 	}
 	for (skipped = 0; skipped < MAX_SKIP_PER_RECEIVE; skipped++) {
@@ -429,37 +479,37 @@ int hal_can_receive(hal_can_frame_t *frame)
 		msg.msg_iovlen = 1;
 		msg.msg_control = &ctrl;
 		msg.msg_controllen = sizeof(ctrl);
-		n = recvmsg(can.fd, &msg, MSG_DONTWAIT);
+		n = recvmsg(c->fd, &msg, MSG_DONTWAIT);
 		if (n < 0) {
 			int err = errno;
 
 			if (err == EAGAIN || err == EWOULDBLOCK || err == EINTR) {
 				return SQ_EAGAIN;
 			}
-			can.status.state = HAL_CAN_STATE_STOPPED;
-			hal_linux_set_error("%s: receive: %s", can.ifname, strerror(err));
+			c->status.state = HAL_CAN_STATE_STOPPED;
+			hal_linux_set_error("%s: receive: %s", c->ifname, strerror(err));
 			return SQ_ENETDOWN;
 		}
 		if ((size_t)n != sizeof(struct can_frame) || (msg.msg_flags & MSG_TRUNC) != 0
 		    || buf.cf.len > CAN_MAX_DLEN) {
-			can.stats.rx_skipped++;
+			c->stats.rx_skipped++;
 			continue;
 		}
 		memset(frame, 0, sizeof(*frame));
-		frame->timestamp_us = frame_stamp_us(&msg);
+		frame->timestamp_us = frame_stamp_us(c, &msg);
 		frame->dlc = buf.cf.len;
 		if ((buf.cf.can_id & CAN_ERR_FLAG) != 0U) {
-			count_error_frame(&buf.cf);
+			count_error_frame(c, &buf.cf);
 			frame->id = buf.cf.can_id & CAN_ERR_MASK;
 			frame->flags = HAL_CAN_FLAG_ERR;
 			memcpy(frame->data, buf.cf.data, frame->dlc);
-			can.stats.rx_err_frames++;
+			c->stats.rx_err_frames++;
 			return SQ_OK;
 		}
-		if (can.status.state == HAL_CAN_STATE_BUS_OFF
-		    || can.status.state == HAL_CAN_STATE_STOPPED) {
+		if (c->status.state == HAL_CAN_STATE_BUS_OFF
+		    || c->status.state == HAL_CAN_STATE_STOPPED) {
 			/* Receiving again: the controller is back on the bus. */
-			can.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+			c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
 		}
 		if ((buf.cf.can_id & CAN_EFF_FLAG) != 0U) {
 			frame->id = buf.cf.can_id & CAN_EFF_MASK;
@@ -472,14 +522,14 @@ int hal_can_receive(hal_can_frame_t *frame)
 		} else {
 			memcpy(frame->data, buf.cf.data, frame->dlc);
 		}
-		can.stats.rx_frames++;
+		c->stats.rx_frames++;
 		return SQ_OK;
 	}
 	return SQ_EAGAIN;
 }
 
 /* Wait up to wait_us: for POLLOUT after EAGAIN, plainly after ENOBUFS. */
-static void tx_backoff(bool wait_for_pollout, uint32_t wait_us)
+static void tx_backoff(const lc_t *c, bool wait_for_pollout, uint32_t wait_us)
 {
 	struct timespec ts = {
 		.tv_sec = (time_t)(wait_us / 1000000U),
@@ -487,7 +537,7 @@ static void tx_backoff(bool wait_for_pollout, uint32_t wait_us)
 	};
 
 	if (wait_for_pollout) {
-		struct pollfd pfd = { .fd = can.fd, .events = POLLOUT, .revents = 0 };
+		struct pollfd pfd = { .fd = c->fd, .events = POLLOUT, .revents = 0 };
 
 		(void)ppoll(&pfd, 1, &ts, NULL);
 	} else {
@@ -496,34 +546,40 @@ static void tx_backoff(bool wait_for_pollout, uint32_t wait_us)
 	}
 }
 
-static void note_tx_time(uint64_t start_us)
+static void note_tx_time(lc_t *c, uint64_t start_us)
 {
 	uint64_t took_us = hal_time_us() - start_us;
 
-	if (took_us > can.stats.tx_worst_us) {
-		can.stats.tx_worst_us = took_us > UINT32_MAX ? UINT32_MAX : (uint32_t)took_us;
+	if (took_us > c->stats.tx_worst_us) {
+		c->stats.tx_worst_us = took_us > UINT32_MAX ? UINT32_MAX : (uint32_t)took_us;
 	}
 }
 
-int hal_can_send(const hal_can_frame_t *frame)
+int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_can_send(frame);
-	}
+	lc_t *c = bus_of(bus);
 	struct can_frame cf;
 	uint64_t start_us;
 	uint32_t attempt;
 
-	if (frame == NULL || frame->dlc > CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U) {
+	HAL_REQUIRE(frame != NULL);
+	if (c == NULL) {
+		return SQ_ENODEV;
+	}
+	if (frame->dlc > CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U) {
 		return SQ_EINVAL;
 	}
 	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U ? frame->id > CAN_EFF_MASK : frame->id > CAN_SFF_MASK) {
 		return SQ_EINVAL;
 	}
-	if (can.fd < 0) {
+	if (c->mode == HAL_CAN_MODE_LISTEN_ONLY) {
+		c->status.tx_refused_listen_only++;
+		return SQ_EPERM;
+	}
+	if (c->fd < 0) {
 		return SQ_ENETDOWN;
 	}
-	if (can.status.state == HAL_CAN_STATE_BUS_OFF) {
+	if (c->status.state == HAL_CAN_STATE_BUS_OFF) {
 		return SQ_ENETUNREACH;
 	}
 	memset(&cf, 0, sizeof(cf));
@@ -540,20 +596,20 @@ int hal_can_send(const hal_can_frame_t *frame)
 
 	start_us = hal_time_us();
 	for (attempt = 1U;; attempt++) {
-		ssize_t n = send(can.fd, &cf, sizeof(cf), MSG_DONTWAIT);
+		ssize_t n = send(c->fd, &cf, sizeof(cf), MSG_DONTWAIT);
 		uint64_t elapsed_us;
 		uint32_t wait_us;
 		int err;
 
 		if (n == (ssize_t)sizeof(cf)) {
-			can.stats.tx_frames++;
-			note_tx_time(start_us);
+			c->stats.tx_frames++;
+			note_tx_time(c, start_us);
 			return SQ_OK;
 		}
 		err = n < 0 ? errno : EIO;
 		if (err == ENETDOWN || err == ENODEV || err == ENXIO) {
-			can.status.state = HAL_CAN_STATE_STOPPED;
-			hal_linux_set_error("%s: send: %s", can.ifname, strerror(err));
+			c->status.state = HAL_CAN_STATE_STOPPED;
+			hal_linux_set_error("%s: send: %s", c->ifname, strerror(err));
 			return SQ_ENETDOWN;
 		}
 		if (err == EINVAL) {
@@ -561,29 +617,29 @@ int hal_can_send(const hal_can_frame_t *frame)
 		}
 		if (err != ENOBUFS && err != EAGAIN && err != EWOULDBLOCK && err != EINTR) {
 			/* Anything else is lost too: counted, never silent. */
-			can.status.tx_dropped++;
-			can.stats.tx_dropped++;
-			hal_linux_set_error("%s: send: %s", can.ifname, strerror(err));
-			note_tx_time(start_us);
+			c->status.tx_dropped++;
+			c->stats.tx_dropped++;
+			hal_linux_set_error("%s: send: %s", c->ifname, strerror(err));
+			note_tx_time(c, start_us);
 			return SQ_ENETDOWN;
 		}
 		if (err == ENOBUFS) {
-			can.stats.tx_enobufs++;
+			c->stats.tx_enobufs++;
 		} else if (err != EINTR) {
-			can.stats.tx_eagain++;
+			c->stats.tx_eagain++;
 		}
 		elapsed_us = hal_time_us() - start_us;
-		if (attempt >= can.tx_max_tries || elapsed_us >= can.tx_budget_us) {
-			can.status.tx_dropped++;
-			can.stats.tx_dropped++;
-			note_tx_time(start_us);
+		if (attempt >= c->tx_max_tries || elapsed_us >= c->tx_budget_us) {
+			c->status.tx_dropped++;
+			c->stats.tx_dropped++;
+			note_tx_time(c, start_us);
 			return SQ_ENOBUFS;
 		}
-		wait_us = can.tx_budget_us >> (can.tx_max_tries - attempt);
-		if (wait_us > can.tx_budget_us - elapsed_us) {
-			wait_us = (uint32_t)(can.tx_budget_us - elapsed_us);
+		wait_us = c->tx_budget_us >> (c->tx_max_tries - attempt);
+		if (wait_us > c->tx_budget_us - elapsed_us) {
+			wait_us = (uint32_t)(c->tx_budget_us - elapsed_us);
 		}
-		can.stats.tx_retries++;
-		tx_backoff(err != ENOBUFS, wait_us);
+		c->stats.tx_retries++;
+		tx_backoff(c, err != ENOBUFS, wait_us);
 	}
 }

@@ -3,7 +3,7 @@
  * hal_linux_idle.c: sleeping until the next deadline, the shutdown signals,
  * and the software watchdog.
  *
- * hal_idle_until() is one ppoll() on the CAN socket and the read end of a
+ * hal_idle_until() is one ppoll() on every bus's CAN socket and the read end of a
  * self-pipe: it wakes on a frame (or a socket error such as ENETDOWN), on
  * SIGINT/SIGTERM (the handler writes a byte to the pipe, so a signal that
  * lands just before ppoll() still wakes it), or at the deadline (ppoll takes
@@ -26,7 +26,6 @@
 #include <unistd.h>
 
 #include "hal_linux.h"
-#include "hal_vbus.h"
 
 static int wake_pipe[2] = { -1, -1 };
 static volatile bool *stop_flag;
@@ -115,15 +114,12 @@ static void watchdog_check(uint64_t now_us)
 
 void hal_idle_until(uint64_t deadline_us)
 {
-	if (hal_vbus_active()) {
-		return; /* the replay driver moves time */
-	}
-	struct pollfd fds[2];
+	struct pollfd fds[HAL_CAN_BUSES + 1U];
 	nfds_t n = 0;
 	uint64_t now_us = hal_time_us();
 	uint64_t wait_us;
 	struct timespec ts;
-	int can_fd = hal_linux_can_fd();
+	uint8_t bus;
 
 	watchdog_check(now_us);
 	if (stop_flag != NULL && *stop_flag) {
@@ -141,11 +137,15 @@ void hal_idle_until(uint64_t deadline_us)
 	if (wait_us > 1000000U) {
 		wait_us = 1000000U;
 	}
-	if (can_fd >= 0) {
-		fds[n].fd = can_fd;
-		fds[n].events = POLLIN;
-		fds[n].revents = 0;
-		n++;
+	for (bus = 0U; bus < HAL_CAN_BUSES; bus++) {
+		const int can_fd = hal_linux_can_fd(bus);
+
+		if (can_fd >= 0) {
+			fds[n].fd = can_fd;
+			fds[n].events = POLLIN;
+			fds[n].revents = 0;
+			n++;
+		}
 	}
 	if (wake_pipe[0] >= 0) {
 		fds[n].fd = wake_pipe[0];

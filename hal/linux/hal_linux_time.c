@@ -9,7 +9,6 @@
 #include <time.h>
 
 #include "hal_linux.h"
-#include "hal_vbus.h"
 
 #define NS_PER_US 1000LL
 #define NS_PER_S 1000000000LL
@@ -28,19 +27,11 @@ static int64_t clock_ns(clockid_t clk)
 
 uint64_t hal_time_us(void)
 {
-	if (hal_vbus_active()) {
-		return hal_vbus_time_us();
-	}
 	return (uint64_t)(clock_ns(CLOCK_MONOTONIC) / NS_PER_US);
 }
 
 uint32_t hal_cycles(void)
 {
-	/* virtual time: the firmware takes no time, so task times (and the
-	 * replay's output) are deterministic */
-	if (hal_vbus_active()) {
-		return 0U;
-	}
 	return (uint32_t)((uint64_t)clock_ns(CLOCK_MONOTONIC) & 0xFFFFFFFFU);
 }
 

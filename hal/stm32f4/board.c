@@ -122,7 +122,7 @@ void stm32_test_event(const char *what, uint32_t value)
 		if (now < SQ_TARGET_TEST_RUN_MS) {
 			return;
 		}
-		if (hal_can_get_status(&st) != SQ_OK) {
+		if (hal_can_get_status(0U, &st) != SQ_OK) {
 			st.state = HAL_CAN_STATE_STOPPED;
 		}
 		semihost_print_u32("EVT summary uptime_ms=", now, NULL);

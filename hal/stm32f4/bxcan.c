@@ -27,7 +27,15 @@
 #define CAN1_FILTER_BANKS 14U    /* banks 0..13 (CAN2SB reset value 14)  */
 
 _Static_assert((RX_RING_LEN & (RX_RING_LEN - 1U)) == 0U, "ring length must be a power of two");
-_Static_assert(HAL_CAN_MAX_FILTERS <= 4U * CAN1_FILTER_BANKS, "more filters than CAN1 has banks");
+_Static_assert(HAL_CAN_MAX_FILTERS <= CAN1_FILTER_BANKS, "more filters than CAN1 has banks");
+
+/* This driver runs CAN1 only: bus 0. Any other valid bus is SQ_ENODEV; an
+ * index beyond HAL_CAN_BUSES is a programming error. */
+static int bus_check(uint8_t bus)
+{
+	HAL_REQUIRE(bus < HAL_CAN_BUSES);
+	return (bus == 0U) ? SQ_OK : SQ_ENODEV;
+}
 
 static struct {
 	bool started;                 /* controller reached init mode       */
@@ -164,8 +172,11 @@ int bxcan_start(uint32_t bitrate_bps)
 	return SQ_OK;
 }
 
-int hal_can_set_bitrate(uint32_t bitrate_kbps)
+int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 {
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
 	if ((bitrate_kbps == 0U) || (bitrate_kbps > 1000U)) {
 		return SQ_EINVAL;
 	}
@@ -186,12 +197,24 @@ static bool can_online(void)
 	return can.started && (CAN_MSR(CAN_BASE) & CAN_MSR_INAK) == 0U;
 }
 
-int hal_can_send(const hal_can_frame_t *frame)
+int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
+{
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	return (mode == HAL_CAN_MODE_NORMAL) ? SQ_OK : SQ_ENOTSUP;
+}
+
+int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
 	uint32_t primask;
 	uint32_t slot;
 
-	if (frame == NULL || frame->dlc > HAL_CAN_MAX_DLEN ||
+	HAL_REQUIRE(frame != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	if (frame->dlc > HAL_CAN_MAX_DLEN ||
 	    (frame->flags & HAL_CAN_FLAG_ERR) != 0U ||
 	    (frame->flags & ~(uint8_t)(HAL_CAN_FLAG_EXT | HAL_CAN_FLAG_RTR)) != 0U) {
 		return SQ_EINVAL;
@@ -218,12 +241,13 @@ int hal_can_send(const hal_can_frame_t *frame)
 	return SQ_OK;
 }
 
-int hal_can_receive(hal_can_frame_t *frame)
+int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
 	uint32_t tail;
 
-	if (frame == NULL) {
-		return SQ_EINVAL;
+	HAL_REQUIRE(frame != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
 	}
 	if (!can.started) {
 		return SQ_ENETDOWN;
@@ -239,13 +263,16 @@ int hal_can_receive(hal_can_frame_t *frame)
 	return SQ_OK;
 }
 
-int hal_can_get_status(hal_can_status_t *status)
+int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 {
 	uint32_t esr;
 
-	if (status == NULL) {
-		return SQ_EINVAL;
+	HAL_REQUIRE(status != NULL);
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
 	}
+	status->mode = HAL_CAN_MODE_NORMAL;
+	status->tx_refused_listen_only = 0U;
 	esr = can.started ? CAN_ESR(CAN_BASE) : 0U;
 	if (!can_online()) {
 		status->state = HAL_CAN_STATE_STOPPED;
@@ -267,39 +294,36 @@ int hal_can_get_status(hal_can_status_t *status)
 	return SQ_OK;
 }
 
-/* Identifier list mode, 16-bit scale: four standard identifiers per bank
- * (STID in bits 15:5, RTR, IDE and EXID[17:15] zero: data frames only). */
-int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
+/* One filter per bank, 32-bit mask mode: FR1 holds the identifier and FR2
+ * the mask in the RIR layout (STID 31:21 or EXID 31:3, IDE bit 2); IDE is
+ * always in the mask so a filter matches its own kind only, RTR never (data
+ * and remote frames alike). */
+static uint32_t filter_word(uint32_t id, bool ext)
 {
-	uint32_t banks;
-	uint32_t b;
-	uint32_t i;
+	return ext ? ((id << CAN_TIR_EXID_SHIFT) | CAN_TIR_IDE) : (id << CAN_TIR_STID_SHIFT);
+}
 
-	if (count > HAL_CAN_MAX_FILTERS || (count > 0U && ids == NULL)) {
+int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
+{
+	uint32_t b;
+
+	HAL_REQUIRE((count <= HAL_CAN_MAX_FILTERS) && ((count == 0U) || (filters != NULL)));
+	if (bus_check(bus) != SQ_OK) {
+		return SQ_ENODEV;
+	}
+	if (!hal_can_filters_in_range(filters, count)) {
 		return SQ_EINVAL;
 	}
-	for (i = 0; i < count; i++) {
-		if (ids[i] > 0x7FFUL) {
-			return SQ_EINVAL;
-		}
-	}
-	banks = (count + 3U) / 4U;
 	CAN_FMR(CAN_BASE) |= CAN_FMR_FINIT;
 	CAN_FA1R(CAN_BASE) &= ~((1UL << CAN1_FILTER_BANKS) - 1U);
-	for (b = 0; b < banks; b++) {
-		uint32_t v[4];
+	for (b = 0; b < count; b++) {
+		const bool ext = (filters[b].flags & HAL_CAN_FLAG_EXT) != 0U;
 
-		for (i = 0; i < 4U; i++) {
-			uint32_t k = 4U * b + i;
-
-			/* pad a partly used bank by repeating its first id */
-			v[i] = (k < count ? ids[k] : ids[4U * b]) << 5;
-		}
-		CAN_FM1R(CAN_BASE) |= 1UL << b;   /* list mode   */
-		CAN_FS1R(CAN_BASE) &= ~(1UL << b); /* 16-bit      */
+		CAN_FM1R(CAN_BASE) &= ~(1UL << b); /* mask mode   */
+		CAN_FS1R(CAN_BASE) |= 1UL << b;    /* 32-bit      */
 		CAN_FFA1R(CAN_BASE) &= ~(1UL << b); /* FIFO 0     */
-		CAN_FR1(CAN_BASE, b) = v[0] | (v[1] << 16);
-		CAN_FR2(CAN_BASE, b) = v[2] | (v[3] << 16);
+		CAN_FR1(CAN_BASE, b) = filter_word(filters[b].id, ext);
+		CAN_FR2(CAN_BASE, b) = filter_word(filters[b].mask, ext) | CAN_TIR_IDE;
 		CAN_FA1R(CAN_BASE) |= 1UL << b;
 	}
 	CAN_FMR(CAN_BASE) &= ~CAN_FMR_FINIT;

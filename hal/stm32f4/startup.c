@@ -170,6 +170,36 @@ void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return)
 #endif
 }
 
+/*
+ * hal.h's contract handler: a programming error is recorded like a fault
+ * (vector 0, pc = the file name's address, lr = the line) and the core
+ * resets; the next boot reports HAL_RESET_FAULT.
+ */
+_Noreturn void hal_contract_failed(const char *file, uint32_t line)
+{
+	uint32_t count = 1U;
+
+	if (fault_noinit.magic == STM32_FAULT_MAGIC || fault_noinit.magic == STM32_FAULT_ARMED) {
+		count = fault_noinit.count + 1U;
+	}
+	fault_noinit.vector = 0U;
+	fault_noinit.pc = (uint32_t)(uintptr_t)file;
+	fault_noinit.lr = line;
+	fault_noinit.cfsr = 0U;
+	fault_noinit.hfsr = 0U;
+	fault_noinit.fault_addr = 0U;
+	fault_noinit.count = count;
+	fault_noinit.magic = STM32_FAULT_MAGIC;
+	cm_dsb();
+#if defined(SQ_TARGET_TEST)
+	semihost_print_u32("EVT contract line=", line, "\n");
+#endif
+	SCB_AIRCR = SCB_AIRCR_VECTKEY | SCB_AIRCR_SYSRESETREQ;
+	for (;;) {
+		cm_dsb();
+	}
+}
+
 /* Called once at boot, before anything can fault again. */
 bool stm32_fault_record_take(stm32_fault_record_t *out)
 {

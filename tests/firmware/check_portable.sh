@@ -10,7 +10,7 @@ cd "$(dirname "$0")/../.."
 out=build/portable
 rm -rf "$out"; mkdir -p "$out"
 WARN="-std=c11 -Wall -Wextra -Wconversion -Wsign-conversion -Wshadow -Wstrict-prototypes -Wmissing-prototypes -Wundef -Wcast-align -Wdouble-promotion -Werror"
-INC="-Ifirmware/common -Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor -Ifirmware/app -Ihal"
+INC="-Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor -Ifirmware/app -Ihal"
 srcs=$(ls firmware/*/*.c firmware/*.c 2>/dev/null)
 pass=0; fail=0
 check() { if "$@"; then pass=$((pass+1)); else fail=$((fail+1)); echo "FAILED: $*"; fi; }

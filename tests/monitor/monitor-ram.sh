@@ -12,16 +12,16 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 flags="-std=c11 -ffreestanding -Os -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -fstack-usage
-	-Ifirmware/common -Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor -Ifirmware/app -Ihal"
+	-Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor -Ifirmware/app -Ihal"
 for f in firmware/app/squeal_app.c firmware/monitor/*.c; do
 	# shellcheck disable=SC2086
-	(cd "$tmp" && $ARM_CC $flags -I"$OLDPWD"/firmware/common -I"$OLDPWD"/firmware/model \
+	(cd "$tmp" && $ARM_CC $flags -I"$OLDPWD"/firmware/model \
 		-I"$OLDPWD"/firmware/protocol -I"$OLDPWD"/firmware/monitor -I"$OLDPWD"/firmware/app \
 		-I"$OLDPWD"/hal -c "$OLDPWD/$f" -o "$(basename "$f" .c).o")
 done
 printf '#include "monitor.h"\nchar monitor_t_size[sizeof(monitor_t)];\n' >"$tmp/s.c"
 # shellcheck disable=SC2086
-(cd "$tmp" && $ARM_CC $flags -I"$OLDPWD"/firmware/common -I"$OLDPWD"/firmware/model \
+(cd "$tmp" && $ARM_CC $flags -I"$OLDPWD"/firmware/model \
 	-I"$OLDPWD"/firmware/protocol -I"$OLDPWD"/firmware/monitor -I"$OLDPWD"/hal -c s.c -o s.o)
 arm-none-eabi-size "$tmp"/*.o | sed "s|$tmp/||" | grep -vP '\ts\.o$'
 hex=$(arm-none-eabi-nm -S "$tmp/s.o" | awk '/monitor_t_size/ {print $2}')

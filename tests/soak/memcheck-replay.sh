@@ -74,7 +74,9 @@ heap() { # valgrind log -> "allocs frees bytes"
 
 vg() { # sim log tag -> runs valgrind, output in $DIR/vg-tag.{out,txt,err}
 	local rc=0
-	valgrind --tool=memcheck --error-exitcode=1 --leak-check=full --show-leak-kinds=all \
+	# --trace-children: squeal-sim replay execs squeal-replay (the program
+	# linked with the in-memory HAL); the log is then that program's
+	valgrind --tool=memcheck --trace-children=yes --error-exitcode=1 --leak-check=full --show-leak-kinds=all \
 		--errors-for-leak-kinds=all --log-file="$DIR/vg-$3.txt" \
 		"$1" replay "$2" >"$DIR/vg-$3.out" 2>"$DIR/vg-$3.err" || rc=$?
 	echo "$rc"

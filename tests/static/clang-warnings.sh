@@ -30,7 +30,7 @@ warn=(-std=c11 -ffreestanding -Wall -Wextra -Wconversion -Wsign-conversion
       -Wdouble-promotion -Wformat=2 -Weverything -Werror
       -Wno-padded -Wno-covered-switch-default -Wno-switch-enum
       -Wno-empty-translation-unit)
-incs=(-Ifirmware/common -Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor
+incs=(-Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor
       -Ifirmware/app -Ihal)
 mapfile -t srcs < <(find firmware -name '*.c' | sort)
 

@@ -1,226 +1,100 @@
 /* SPDX-License-Identifier: MIT */
-/* In-memory HAL for unit tests: see test_hal.h. */
+/*
+ * The unit tests' layer on top of the in-memory backend (hal/vbus): see
+ * test_hal.h. Every hal.h function is the backend's; this file only adds
+ * what a test steers (fault injection: TX full, bus-off, stopped, clock
+ * jumps, calibration storage faults) and what it reads back (an indexed
+ * log of every frame sent, the filters set).
+ */
 #include "test_hal.h"
 
 #include <stddef.h>
 #include <string.h>
 
+#include "hal_vbus.h"
+
+_Static_assert(TEST_HAL_RX_CAP == HAL_VBUS_RX_LEN, "test_hal.h: RX capacity of hal_vbus");
+_Static_assert(TEST_HAL_CYCLES_PER_US == HAL_VBUS_CYCLES_PER_US, "test_hal.h: cycle rate of hal_vbus");
+
 static struct {
-	uint64_t now_us;
-	uint32_t cycles_per_call;
-	uint32_t cycles_extra;
-
-	hal_can_frame_t rx[TEST_HAL_RX_CAP];
-	uint32_t rx_head;
-	uint32_t rx_count;
-	bool filter_on;
-	uint32_t filter_ids[HAL_CAN_MAX_FILTERS];
-	uint32_t filter_count;
-	bool filter_set;
-
 	hal_can_frame_t tx[TEST_HAL_TX_CAP];
 	uint32_t tx_count;
 	bool tx_full;
-	uint32_t tx_rejected;
-
-	hal_can_status_t status;
-
-	uint8_t calib[HAL_CALIB_MAX_LEN];
-	uint32_t calib_len;
-	bool calib_present;
-	bool calib_read_error;
-
-	uint32_t wd_kicks;
-	uint32_t wd_timeout_ms;
-	uint32_t platform_faults;
-	hal_reset_reason_t reset_reason;
 } th;
+
+/* The node on bus 0 that takes what the firmware sends: the log. */
+static int log_sink(uint8_t bus, const hal_can_frame_t *frame)
+{
+	(void)bus;
+	if (th.tx_full || (th.tx_count >= TEST_HAL_TX_CAP)) {
+		return SQ_ENOBUFS;
+	}
+	th.tx[th.tx_count] = *frame;
+	th.tx_count++;
+	return SQ_OK;
+}
 
 void test_hal_reset(void)
 {
 	memset(&th, 0, sizeof(th));
-	th.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
-	th.reset_reason = HAL_RESET_POWER_ON;
+	hal_vbus_reset();
+	/* the tests prove that the firmware ignores unused identifiers itself;
+	 * test_hal_apply_rx_filter(true) turns the controller's filters on */
+	hal_vbus_enforce_filters(false);
+	hal_vbus_set_sink(0U, log_sink);
 }
 
 /* ---- clock ---------------------------------------------------------------- */
 
 void test_hal_set_time_us(uint64_t t_us)
 {
-	if (t_us > th.now_us) {
-		th.now_us = t_us; /* monotonic, as hal.h promises */
-	}
+	hal_vbus_set_time_us(t_us);
 }
 
 void test_hal_advance_us(uint64_t dt_us)
 {
-	th.now_us += dt_us;
+	hal_vbus_set_time_us(hal_time_us() + dt_us);
 }
 
 void test_hal_set_cycles_per_call(uint32_t cycles)
 {
-	th.cycles_per_call = cycles;
-}
-
-uint64_t hal_time_us(void)
-{
-	return th.now_us;
-}
-
-void hal_idle_until(uint64_t deadline_us)
-{
-	uint64_t t = deadline_us;
-
-	if ((th.rx_count > 0U) && (th.rx[th.rx_head].timestamp_us < t)) {
-		t = th.rx[th.rx_head].timestamp_us;
-	}
-	test_hal_set_time_us(t);
-}
-
-uint32_t hal_cycles(void)
-{
-	th.cycles_extra += th.cycles_per_call;
-	return (uint32_t)(th.now_us * TEST_HAL_CYCLES_PER_US) + th.cycles_extra;
-}
-
-uint32_t hal_cycles_per_us(void)
-{
-	return TEST_HAL_CYCLES_PER_US;
+	hal_vbus_set_cycles_per_call(cycles);
 }
 
 /* ---- CAN RX --------------------------------------------------------------- */
 
 int test_hal_rx_push(const hal_can_frame_t *frame)
 {
-	uint32_t i;
-
-	if ((frame == NULL) || (th.rx_count >= TEST_HAL_RX_CAP)) {
+	if (frame == NULL) {
 		return SQ_ENOBUFS;
 	}
-	/* keep the queue in timestamp order (stable: after every frame with
-	 * the same or an earlier time), as a real bus delivers them, so a
-	 * test may queue each sender's schedule separately */
-	i = th.rx_count;
-	while ((i > 0U) &&
-	       (th.rx[(th.rx_head + i - 1U) % TEST_HAL_RX_CAP].timestamp_us > frame->timestamp_us)) {
-		th.rx[(th.rx_head + i) % TEST_HAL_RX_CAP] =
-			th.rx[(th.rx_head + i - 1U) % TEST_HAL_RX_CAP];
-		i--;
-	}
-	th.rx[(th.rx_head + i) % TEST_HAL_RX_CAP] = *frame;
-	th.rx_count++;
-	return SQ_OK;
+	/* a frame the controller's filter drops was still sent: not an error */
+	return (hal_vbus_rx_push(0U, frame) == SQ_ENOBUFS) ? SQ_ENOBUFS : SQ_OK;
 }
 
 uint32_t test_hal_rx_pending(void)
 {
-	return th.rx_count;
+	return hal_vbus_rx_pending(0U);
 }
 
 void test_hal_apply_rx_filter(bool on)
 {
-	th.filter_on = on;
+	hal_vbus_enforce_filters(on);
 }
 
 uint32_t test_hal_rx_filter(uint32_t *ids, uint32_t max)
 {
+	hal_can_filter_t f[HAL_CAN_MAX_FILTERS];
+	const uint32_t n = hal_vbus_rx_filters(0U, f, HAL_CAN_MAX_FILTERS);
 	uint32_t i;
 
-	for (i = 0U; (ids != NULL) && (i < th.filter_count) && (i < max); i++) {
-		ids[i] = th.filter_ids[i];
+	for (i = 0U; (ids != NULL) && (i < n) && (i < max); i++) {
+		ids[i] = f[i].id;
 	}
-	return th.filter_set ? th.filter_count : 0U;
-}
-
-static bool filter_pass(const hal_can_frame_t *f)
-{
-	uint32_t i;
-
-	if (!th.filter_on || !th.filter_set || ((f->flags & HAL_CAN_FLAG_ERR) != 0U)) {
-		return true; /* error frames are never filtered */
-	}
-	if ((f->flags & HAL_CAN_FLAG_EXT) != 0U) {
-		return false;
-	}
-	for (i = 0U; i < th.filter_count; i++) {
-		if (th.filter_ids[i] == f->id) {
-			return true;
-		}
-	}
-	return false;
-}
-
-int hal_can_receive(hal_can_frame_t *frame)
-{
-	if (frame == NULL) {
-		return SQ_EINVAL;
-	}
-	if (th.status.state == HAL_CAN_STATE_STOPPED) {
-		return SQ_ENETDOWN;
-	}
-	while ((th.rx_count > 0U) && (th.rx[th.rx_head].timestamp_us <= th.now_us)) {
-		const hal_can_frame_t f = th.rx[th.rx_head];
-
-		th.rx_head = (th.rx_head + 1U) % TEST_HAL_RX_CAP;
-		th.rx_count--;
-		if (filter_pass(&f)) {
-			*frame = f;
-			return SQ_OK;
-		}
-	}
-	return SQ_EAGAIN;
-}
-
-int hal_can_set_bitrate(uint32_t bitrate_kbps)
-{
-	return (bitrate_kbps == 0U || bitrate_kbps > 1000U) ? SQ_EINVAL : SQ_OK;
-}
-
-int hal_can_set_rx_filter(const uint32_t *ids, uint32_t count)
-{
-	uint32_t i;
-
-	if ((count > HAL_CAN_MAX_FILTERS) || ((ids == NULL) && (count > 0U))) {
-		return SQ_EINVAL;
-	}
-	for (i = 0U; i < count; i++) {
-		if (ids[i] > 0x7FFU) {
-			return SQ_EINVAL;
-		}
-	}
-	for (i = 0U; i < count; i++) {
-		th.filter_ids[i] = ids[i];
-	}
-	th.filter_count = count;
-	th.filter_set = true;
-	return SQ_OK;
+	return n;
 }
 
 /* ---- CAN TX --------------------------------------------------------------- */
-
-int hal_can_send(const hal_can_frame_t *frame)
-{
-	if ((frame == NULL) || (frame->dlc > HAL_CAN_MAX_DLEN) ||
-	    (frame->id > (((frame->flags & HAL_CAN_FLAG_EXT) != 0U) ? 0x1FFFFFFFU : 0x7FFU))) {
-		return SQ_EINVAL;
-	}
-	if (th.status.state == HAL_CAN_STATE_STOPPED) {
-		th.tx_rejected++;
-		return SQ_ENETDOWN;
-	}
-	if (th.status.state == HAL_CAN_STATE_BUS_OFF) {
-		th.tx_rejected++;
-		return SQ_ENETUNREACH;
-	}
-	if (th.tx_full || (th.tx_count >= TEST_HAL_TX_CAP)) {
-		th.tx_rejected++;
-		return SQ_ENOBUFS;
-	}
-	th.tx[th.tx_count] = *frame;
-	th.tx[th.tx_count].timestamp_us = th.now_us;
-	th.tx_count++;
-	return SQ_OK;
-}
 
 uint32_t test_hal_tx_count(void)
 {
@@ -244,152 +118,103 @@ void test_hal_set_tx_full(bool full)
 
 uint32_t test_hal_tx_rejected(void)
 {
-	return th.tx_rejected;
+	hal_vbus_stats_t st;
+
+	hal_vbus_get_stats(0U, &st);
+	return (uint32_t)st.tx_refused;
 }
 
 /* ---- CAN status ----------------------------------------------------------- */
 
-int hal_can_get_status(hal_can_status_t *status)
+static hal_can_status_t status_now(void)
 {
-	if (status == NULL) {
-		return SQ_EINVAL;
-	}
-	*status = th.status;
-	return SQ_OK;
+	hal_can_status_t st;
+
+	(void)hal_can_get_status(0U, &st);
+	return st;
 }
 
 void test_hal_set_can_status(const hal_can_status_t *status)
 {
 	if (status != NULL) {
-		th.status = *status;
+		hal_vbus_set_status(0U, status);
 	}
 }
 
 void test_hal_bus_off(void)
 {
-	if (th.status.state != HAL_CAN_STATE_BUS_OFF) {
-		th.status.bus_off_count++;
+	hal_can_status_t st = status_now();
+
+	if (st.state != HAL_CAN_STATE_BUS_OFF) {
+		st.bus_off_count++;
 	}
-	th.status.state = HAL_CAN_STATE_BUS_OFF;
-	th.status.tx_error_count = 255U;
+	st.state = HAL_CAN_STATE_BUS_OFF;
+	st.tx_error_count = 255U;
+	hal_vbus_set_status(0U, &st);
 }
 
 void test_hal_bus_recover(void)
 {
-	th.status.state = HAL_CAN_STATE_ERROR_ACTIVE;
-	th.status.tx_error_count = 0U;
-	th.status.rx_error_count = 0U;
+	hal_can_status_t st = status_now();
+
+	st.state = HAL_CAN_STATE_ERROR_ACTIVE;
+	st.tx_error_count = 0U;
+	st.rx_error_count = 0U;
+	hal_vbus_set_status(0U, &st);
 }
 
 void test_hal_set_can_stopped(bool stopped)
 {
-	th.status.state = stopped ? HAL_CAN_STATE_STOPPED : HAL_CAN_STATE_ERROR_ACTIVE;
+	hal_can_status_t st = status_now();
+
+	st.state = stopped ? HAL_CAN_STATE_STOPPED : HAL_CAN_STATE_ERROR_ACTIVE;
+	hal_vbus_set_status(0U, &st);
 }
 
 /* ---- calibration storage -------------------------------------------------- */
 
 void test_hal_calib_absent(void)
 {
-	th.calib_present = false;
-	th.calib_len = 0U;
+	hal_vbus_calib_erase();
 }
 
 void test_hal_calib_store(const uint8_t *buf, uint32_t len)
 {
-	if ((buf == NULL) || (len > HAL_CALIB_MAX_LEN)) {
-		return;
+	if (buf != NULL) {
+		(void)hal_vbus_calib_store(buf, len);
 	}
-	memset(th.calib, 0xFF, sizeof(th.calib)); /* erased flash */
-	memcpy(th.calib, buf, len);
-	th.calib_len = len;
-	th.calib_present = true;
 }
 
 void test_hal_calib_read_error(bool on)
 {
-	th.calib_read_error = on;
+	hal_vbus_calib_set_unreadable(on);
 }
 
 uint32_t test_hal_calib_stored(uint8_t *buf, uint32_t max)
 {
-	if (!th.calib_present) {
-		return 0U;
-	}
-	if (buf != NULL) {
-		memcpy(buf, th.calib, (th.calib_len < max) ? th.calib_len : max);
-	}
-	return th.calib_len;
-}
-
-int hal_calib_read(uint8_t *buf, uint32_t len)
-{
-	if ((buf == NULL) || (len > HAL_CALIB_MAX_LEN)) {
-		return SQ_EINVAL;
-	}
-	if (th.calib_read_error) {
-		return SQ_EIO;
-	}
-	if (!th.calib_present) {
-		return SQ_ENOENT;
-	}
-	/* like flash: the bytes beyond what was written read as erased */
-	memcpy(buf, th.calib, len);
-	return SQ_OK;
-}
-
-int hal_calib_write(const uint8_t *buf, uint32_t len)
-{
-	if ((buf == NULL) || (len > HAL_CALIB_MAX_LEN)) {
-		return SQ_EINVAL;
-	}
-	test_hal_calib_store(buf, len);
-	return SQ_OK;
+	return hal_vbus_calib_stored(buf, max);
 }
 
 /* ---- watchdog, reset, platform -------------------------------------------- */
 
-int hal_watchdog_start(uint32_t timeout_ms)
-{
-	if (timeout_ms == 0U) {
-		return SQ_EINVAL;
-	}
-	th.wd_timeout_ms = timeout_ms;
-	return SQ_OK;
-}
-
-void hal_watchdog_kick(void)
-{
-	th.wd_kicks++;
-}
-
 uint32_t test_hal_watchdog_kicks(void)
 {
-	return th.wd_kicks;
+	return hal_vbus_watchdog_kicks();
 }
 
 uint32_t test_hal_watchdog_timeout_ms(void)
 {
-	return th.wd_timeout_ms;
-}
-
-hal_reset_reason_t hal_reset_reason(void)
-{
-	return th.reset_reason;
+	return hal_vbus_watchdog_timeout_ms();
 }
 
 void test_hal_set_reset_reason(hal_reset_reason_t why)
 {
-	th.reset_reason = why;
-}
-
-uint32_t hal_platform_faults(void)
-{
-	return th.platform_faults;
+	hal_vbus_set_reset_reason(why);
 }
 
 void test_hal_set_platform_faults(uint32_t bits)
 {
-	th.platform_faults = bits;
+	hal_vbus_set_platform_faults(bits);
 }
 
 /* ---- bus helpers ---------------------------------------------------------- */

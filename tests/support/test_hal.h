@@ -1,26 +1,26 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * test_hal: every function of hal/hal.h, in memory, for unit tests.
+ * test_hal: the unit tests' layer on top of the in-memory backend
+ * (hal/vbus/hal_vbus.h, which implements every hal.h function). Link
+ * test_hal.o with build/<variant>/libhal_vbus.a.
  *
  * - Clock: virtual microseconds, moved only by the test
- *   (test_hal_set_time_us / test_hal_advance_us). hal_idle_until() jumps the
- *   clock to its deadline (or to the next queued frame, if earlier).
- * - RX: a FIFO the test fills with frames and their receive timestamps;
- *   hal_can_receive() delivers a frame only once the clock has reached its
- *   timestamp (so a test can queue a whole bus schedule up front). The
- *   queue is kept in timestamp order (frames with equal times in push
- *   order), so each sender's frames may be queued separately.
- *   Filters set by hal_can_set_rx_filter() are recorded; they are applied
- *   only after test_hal_apply_rx_filter(true), so a test can also prove
- *   that the firmware itself ignores identifiers it does not use.
- * - TX: every accepted frame is logged with the clock at send time
+ *   (test_hal_set_time_us / test_hal_advance_us) and by hal_idle_until()
+ *   (to its deadline, or to the next queued frame if earlier).
+ * - RX (bus 0): test_hal_rx_push() queues a frame that becomes receivable at
+ *   frame->timestamp_us (a whole bus schedule may be queued up front, each
+ *   sender's separately). Filters set by hal_can_set_rx_filter() are
+ *   recorded; they are applied only after test_hal_apply_rx_filter(true), so
+ *   a test can also prove that the firmware itself ignores identifiers it
+ *   does not use.
+ * - TX (bus 0): every accepted frame is logged with the clock at send time
  *   (timestamp_us). test_hal_set_tx_full(true) makes hal_can_send() return
  *   SQ_ENOBUFS (nothing logged) until cleared; bus-off makes it return
  *   SQ_ENETUNREACH, stopped SQ_ENETDOWN.
  * - CAN status: state and counters set by the test; test_hal_bus_off()
  *   and test_hal_bus_recover() model a controller going bus-off and back.
- * - Calibration storage: a byte array that is absent (SQ_ENOENT), present,
- *   or fails to read (SQ_EIO); writes land in the array.
+ * - Calibration storage: absent (SQ_ENOENT), present, or unreadable
+ *   (SQ_EIO); writes land in it.
  * - Watchdog: start timeout and kick counter. Platform fault bits and the
  *   reset reason are set by the test.
  * - hal_cycles(): TEST_HAL_CYCLES_PER_US cycles per virtual microsecond,
@@ -38,9 +38,10 @@
 
 #include "hal.h"
 
+/* the backend's (test_hal.c checks that they agree with hal_vbus.h) */
 #define TEST_HAL_RX_CAP 4096U
-#define TEST_HAL_TX_CAP 65536U
 #define TEST_HAL_CYCLES_PER_US 168U
+#define TEST_HAL_TX_CAP 65536U
 
 void test_hal_reset(void);
 

@@ -129,7 +129,7 @@ static int drain(hal_can_frame_t *frames, int max)
 	for (i = 0; i < 100000; i++) {
 		hal_can_frame_t *f = n < max ? &frames[n] : &scratch;
 
-		if (hal_can_receive(f) != SQ_OK) {
+		if (hal_can_receive(0U, f) != SQ_OK) {
 			break;
 		}
 		n++;
@@ -171,17 +171,17 @@ static void test_open_errors(const char *down_if)
 {
 	int rc;
 
-	rc = hal_linux_open("sqnosuch0", NULL);
+	rc = hal_linux_open(0U, "sqnosuch0", NULL);
 	check(rc == SQ_ENOENT && strstr(hal_linux_strerror(), "no such network interface") != NULL,
 	      "open of a missing interface: SQ_ENOENT with a clear message", "rc %d, \"%s\"", rc,
 	      hal_linux_strerror());
-	rc = hal_linux_open("lo", NULL);
+	rc = hal_linux_open(0U, "lo", NULL);
 	check(rc == SQ_EINVAL && strstr(hal_linux_strerror(), "not a CAN interface") != NULL,
 	      "open of a non-CAN interface (lo): SQ_EINVAL", "rc %d, \"%s\"", rc, hal_linux_strerror());
-	rc = hal_linux_open("this-name-is-far-too-long", NULL);
+	rc = hal_linux_open(0U, "this-name-is-far-too-long", NULL);
 	check(rc == SQ_EINVAL, "open with an over-long name: SQ_EINVAL", "rc %d", rc);
 	if (down_if != NULL) {
-		rc = hal_linux_open(down_if, NULL);
+		rc = hal_linux_open(0U, down_if, NULL);
 		check(rc == SQ_ENETDOWN && strstr(hal_linux_strerror(), "interface is down") != NULL,
 		      "open of an interface that is down: SQ_ENETDOWN with a clear message",
 		      "rc %d, \"%s\"", rc, hal_linux_strerror());
@@ -196,13 +196,14 @@ static void test_open_errors(const char *down_if)
 static void test_receive_filter_timestamps(void)
 {
 	hal_can_frame_t f[16];
-	static const uint32_t ids[] = { 0x123U, 0x124U };
+	static const hal_can_filter_t ids[] = { { 0x123U, HAL_CAN_STD_ID_MAX, 0U },
+						{ 0x124U, HAL_CAN_STD_ID_MAX, 0U } };
 	hal_linux_can_stats_t st;
 	uint64_t t0;
 	uint64_t t1;
 	int n;
 
-	check(hal_can_set_rx_filter(ids, 2U) == SQ_OK, "kernel filter for 0x123, 0x124", "%s", "");
+	check(hal_can_set_rx_filter(0U, ids, 2U) == SQ_OK, "kernel filter for 0x123, 0x124", "%s", "");
 	(void)drain(f, 16);
 	t0 = hal_time_us();
 	(void)sh("cansend %s 456#FF && cansend %s 123#0102 && cansend %s 12300000#AA && "
@@ -228,11 +229,11 @@ static void test_receive_filter_timestamps(void)
 	check(f[1].timestamp_us - f[0].timestamp_us >= 250000U,
 	      "timestamps are the kernel's receive times (0.3 s apart), not read times",
 	      "diff %" PRIu64 " us", f[1].timestamp_us - f[0].timestamp_us);
-	hal_linux_can_get_stats(&st);
+	hal_linux_can_get_stats(0U, &st);
 	check(st.ts_fallbacks == 0U, "every frame carried SO_TIMESTAMP", "fallbacks %" PRIu64,
 	      st.ts_fallbacks);
 
-	check(hal_linux_can_accept_all() == SQ_OK, "accept all again", "%s", "");
+	check(hal_linux_can_accept_all(0U) == SQ_OK, "accept all again", "%s", "");
 	(void)sh("cansend %s 12345678#AABB && cansend %s 321#R4", iface, iface);
 	n = drain(f, 16);
 	check(n == 2 && f[0].id == 0x12345678U && f[0].flags == HAL_CAN_FLAG_EXT && f[0].dlc == 2U
@@ -263,9 +264,9 @@ static void test_send_seen_by_candump(void)
 		return;
 	}
 	sleep_us(500000U); /* candump binds its socket */
-	rc[0] = hal_can_send(&a);
-	rc[1] = hal_can_send(&b);
-	rc[2] = hal_can_send(&c);
+	rc[0] = hal_can_send(0U, &a);
+	rc[1] = hal_can_send(0U, &b);
+	rc[2] = hal_can_send(0U, &c);
 	check(rc[0] == SQ_OK && rc[1] == SQ_OK && rc[2] == SQ_OK, "hal_can_send x3", "%d %d %d", rc[0],
 	      rc[1], rc[2]);
 	for (i = 0; i < 3; i++) {
@@ -279,13 +280,13 @@ static void test_send_seen_by_candump(void)
 	check(strstr(line[1], " 1ABCDEF0#11") != NULL, "candump -L sees extended 1ABCDEF0#11", "\"%s\"",
 	      line[1]);
 	check(strstr(line[2], " 7FF#") != NULL, "candump -L sees empty 7FF#", "\"%s\"", line[2]);
-	check(hal_can_send(&bad) == SQ_EINVAL, "standard id 0x800 refused (SQ_EINVAL)", "%s", "");
+	check(hal_can_send(0U, &bad) == SQ_EINVAL, "standard id 0x800 refused (SQ_EINVAL)", "%s", "");
 	bad.id = 0x123U;
 	bad.dlc = 9U;
-	check(hal_can_send(&bad) == SQ_EINVAL, "dlc 9 refused (SQ_EINVAL)", "%s", "");
+	check(hal_can_send(0U, &bad) == SQ_EINVAL, "dlc 9 refused (SQ_EINVAL)", "%s", "");
 	bad.dlc = 8U;
 	bad.flags = HAL_CAN_FLAG_ERR;
-	check(hal_can_send(&bad) == SQ_EINVAL, "error frames are not sent (SQ_EINVAL)", "%s", "");
+	check(hal_can_send(0U, &bad) == SQ_EINVAL, "error frames are not sent (SQ_EINVAL)", "%s", "");
 }
 
 static void test_error_frames(void)
@@ -306,7 +307,7 @@ static void test_error_frames(void)
 		return;
 	}
 	(void)drain(f, 16);
-	(void)hal_can_get_status(&st0);
+	(void)hal_can_get_status(0U, &st0);
 
 	memset(d, 0, sizeof(d));
 	d[1] = CAN_ERR_CRTL_TX_WARNING;
@@ -315,7 +316,7 @@ static void test_error_frames(void)
 	(void)inject_error(fd, CAN_ERR_CRTL | CAN_ERR_CNT, d);
 	sleep_us(50000U);
 	n = drain(f, 16);
-	(void)hal_can_get_status(&st);
+	(void)hal_can_get_status(0U, &st);
 	check(n == 1 && f[0].flags == HAL_CAN_FLAG_ERR && f[0].id == (CAN_ERR_CRTL | CAN_ERR_CNT)
 		      && f[0].dlc == 8U && f[0].data[1] == CAN_ERR_CRTL_TX_WARNING,
 	      "error frame delivered to the firmware with HAL_CAN_FLAG_ERR and its class", "n %d id %" PRIx32,
@@ -331,7 +332,7 @@ static void test_error_frames(void)
 	(void)inject_error(fd, CAN_ERR_CRTL, d);
 	sleep_us(50000U);
 	(void)drain(f, 16);
-	(void)hal_can_get_status(&st);
+	(void)hal_can_get_status(0U, &st);
 	check(st.state == HAL_CAN_STATE_ERROR_PASSIVE && st.rx_overruns == st0.rx_overruns + 1U,
 	      "controller passive + RX overflow: state PASSIVE, rx_overruns + 1",
 	      "state %d overruns %" PRIu32, (int)st.state, st.rx_overruns);
@@ -340,26 +341,26 @@ static void test_error_frames(void)
 	(void)inject_error(fd, CAN_ERR_BUSOFF, zero);
 	sleep_us(50000U);
 	(void)drain(f, 16);
-	(void)hal_can_get_status(&st);
+	(void)hal_can_get_status(0U, &st);
 	check(st.state == HAL_CAN_STATE_BUS_OFF && st.bus_off_count == st0.bus_off_count + 1U,
 	      "bus-off: state BUS_OFF, counted once per entry", "state %d count %" PRIu32,
 	      (int)st.state, st.bus_off_count);
-	check(hal_can_send(&tx) == SQ_ENETUNREACH, "send while bus-off: SQ_ENETUNREACH", "%s", "");
+	check(hal_can_send(0U, &tx) == SQ_ENETUNREACH, "send while bus-off: SQ_ENETUNREACH", "%s", "");
 
 	(void)inject_error(fd, CAN_ERR_RESTARTED, zero);
 	sleep_us(50000U);
 	(void)drain(f, 16);
-	(void)hal_can_get_status(&st);
+	(void)hal_can_get_status(0U, &st);
 	check(st.state == HAL_CAN_STATE_ERROR_ACTIVE, "restarted: state ERROR_ACTIVE", "state %d",
 	      (int)st.state);
-	check(hal_can_send(&tx) == SQ_OK, "send after restart: SQ_OK", "%s", "");
+	check(hal_can_send(0U, &tx) == SQ_OK, "send after restart: SQ_OK", "%s", "");
 
 	(void)inject_error(fd, CAN_ERR_BUSOFF, zero);
 	sleep_us(50000U);
 	(void)drain(f, 16);
 	(void)sh("cansend %s 101#01", iface);
 	n = drain(f, 16);
-	(void)hal_can_get_status(&st);
+	(void)hal_can_get_status(0U, &st);
 	check(n == 1 && st.state == HAL_CAN_STATE_ERROR_ACTIVE && st.bus_off_count == st0.bus_off_count + 2U,
 	      "a data frame after bus-off (lost RESTARTED) means back on the bus",
 	      "n %d state %d count %" PRIu32, n, (int)st.state, st.bus_off_count);
@@ -381,7 +382,7 @@ static void test_rx_overflow(void)
 	int got;
 	int rc;
 
-	rc = hal_linux_open(iface, &small);
+	rc = hal_linux_open(0U, iface, &small);
 	if (rc != SQ_OK) {
 		check(false, "reopen with the smallest SO_RCVBUF", "%s", hal_linux_strerror());
 		return;
@@ -394,8 +395,8 @@ static void test_rx_overflow(void)
 	(void)sh("cansend %s 042#00", iface);
 	sleep_us(50000U);
 	got += drain(&f, 1);
-	(void)hal_can_get_status(&st);
-	hal_linux_can_get_stats(&stats);
+	(void)hal_can_get_status(0U, &st);
+	hal_linux_can_get_stats(0U, &stats);
 	note("flood of %d frames into a tiny socket buffer: %d received, %" PRIu32 " overruns", flood,
 	     got, st.rx_overruns);
 	check(st.rx_overruns > 0U, "SO_RXQ_OVFL drops counted in rx_overruns", "%" PRIu32, st.rx_overruns);
@@ -431,7 +432,7 @@ static void tx_flood(const char *tx_if, const hal_linux_can_opts_t *opts, const 
 	int rc;
 
 	rx_fd = raw_socket(tx_if);
-	rc = hal_linux_open(tx_if, opts);
+	rc = hal_linux_open(0U, tx_if, opts);
 	if (rc != SQ_OK || rx_fd < 0) {
 		check(false, "open the throttled interface", "%s", hal_linux_strerror());
 		if (rx_fd >= 0) {
@@ -441,7 +442,7 @@ static void tx_flood(const char *tx_if, const hal_linux_can_opts_t *opts, const 
 	}
 	for (i = 0; i < 120; i++) {
 		f.data[0] = (uint8_t)i;
-		rc = hal_can_send(&f);
+		rc = hal_can_send(0U, &f);
 		if (rc == SQ_OK) {
 			ok++;
 		} else if (rc == SQ_ENOBUFS) {
@@ -450,7 +451,7 @@ static void tx_flood(const char *tx_if, const hal_linux_can_opts_t *opts, const 
 			other++;
 		}
 	}
-	hal_linux_can_get_stats(&st);
+	hal_linux_can_get_stats(0U, &st);
 	note("%s: 120 sends: %d queued, %d SQ_ENOBUFS, %d other; %" PRIu64 " retries, %" PRIu64
 	     " dropped, kernel said ENOBUFS %" PRIu64 " and EAGAIN %" PRIu64 " times, longest send %"
 	     PRIu32 " us", what, ok, nobufs, other, st.tx_retries, st.tx_dropped, st.tx_enobufs,
@@ -514,7 +515,7 @@ static void test_idle_and_down(void)
 	uint64_t dt;
 	int rc;
 
-	rc = hal_linux_open(iface, NULL);
+	rc = hal_linux_open(0U, iface, NULL);
 	check(rc == SQ_OK, "reopen", "%s", hal_linux_strerror());
 	t0 = hal_time_us();
 	hal_idle_until(t0 + 200000U);
@@ -525,23 +526,23 @@ static void test_idle_and_down(void)
 	t0 = hal_time_us();
 	hal_idle_until(t0 + 5000000U);
 	dt = hal_time_us() - t0;
-	check(dt < 3000000U && hal_can_receive(&f) == SQ_OK && f.id == 0x55U,
+	check(dt < 3000000U && hal_can_receive(0U, &f) == SQ_OK && f.id == 0x55U,
 	      "idle wakes at once when a frame arrives", "%" PRIu64 " us", dt);
 
 	(void)sh("ip link set %s down", iface);
-	rc = hal_can_receive(&f);
-	(void)hal_can_get_status(&st);
+	rc = hal_can_receive(0U, &f);
+	(void)hal_can_get_status(0U, &st);
 	check(rc == SQ_ENETDOWN && st.state == HAL_CAN_STATE_STOPPED,
 	      "interface taken down: receive SQ_ENETDOWN, state STOPPED", "rc %d state %d", rc,
 	      (int)st.state);
 	f.id = 0x56U;
 	f.dlc = 0U;
 	f.flags = 0U;
-	rc = hal_can_send(&f);
+	rc = hal_can_send(0U, &f);
 	check(rc == SQ_ENETDOWN, "send on a down interface: SQ_ENETDOWN", "rc %d", rc);
 	(void)sh("ip link set %s up && cansend %s 057#", iface, iface);
-	rc = hal_can_receive(&f);
-	(void)hal_can_get_status(&st);
+	rc = hal_can_receive(0U, &f);
+	(void)hal_can_get_status(0U, &st);
 	check(rc == SQ_OK && f.id == 0x57U && st.state == HAL_CAN_STATE_ERROR_ACTIVE,
 	      "interface up again: receiving, state ERROR_ACTIVE", "rc %d state %d", rc, (int)st.state);
 }
@@ -567,7 +568,7 @@ int main(int argc, char **argv)
 		}
 	}
 	test_open_errors(down_if);
-	rc = hal_linux_open(iface, NULL);
+	rc = hal_linux_open(0U, iface, NULL);
 	check(rc == SQ_OK && hal_linux_strerror()[0] == '\0', "open, error text cleared", "%s: %s", iface,
 	      hal_linux_strerror());
 	if (rc != SQ_OK) {

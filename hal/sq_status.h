@@ -9,8 +9,10 @@
 #define SQ_STATUS_H
 
 #define SQ_OK            0
+#define SQ_EPERM        (-1)   /* not allowed (send on a listen-only bus)  */
 #define SQ_ENOENT       (-2)   /* nothing stored / no such item            */
 #define SQ_EIO          (-5)   /* hardware or storage failure              */
+#define SQ_ENODEV      (-19)   /* no such device (a bus this chip lacks)   */
 #define SQ_EAGAIN      (-11)   /* nothing now (RX empty) or timed out      */
 #define SQ_EINVAL      (-22)   /* bad argument or implausible value        */
 #define SQ_ERANGE      (-34)   /* value outside the representable range    */
