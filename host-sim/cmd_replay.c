@@ -123,13 +123,9 @@ static unsigned state_index(uint8_t s)
 static void replay_usage(FILE *f)
 {
 	fprintf(f,
-		"usage: squeal-sim replay LOG|- [--calib FILE] [--bus NAME]
-"
-		"         [--iface-out NAME] [--tail-ms MS] [--max-gap S] [--rss]
-"
-		"         [--summary-json FILE|-] [--no-output]
-
-"
+		"usage: squeal-sim replay LOG|- [--calib FILE] [--bus NAME]\n"
+		"         [--iface-out NAME] [--tail-ms MS] [--max-gap S] [--rss]\n"
+		"         [--summary-json FILE|-] [--no-output]\n\n"
 		"Feeds a candump -L log (a file, or - for stdin) through the firmware in\n"
 		"virtual time taken from the log's timestamps, offline. Writes every frame\n"
 		"the ECU sends as a candump -L log on stdout, and a summary on stderr:\n"

@@ -9,7 +9,7 @@
 SIGMA_TEST_VARIANTS := test test-fixed
 
 define sigma_test_rules
-build/$(1)/test_sigma: build/$(1)/app/tests/unit/test_sigma.o build/$(1)/app/tests/support/sq_num.o build/$(1)/libfirmware.a
+build/$(1)/test_sigma: build/$(1)/app/tests/unit/test_sigma.o build/$(1)/app/tests/support/sq_num.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(SIGMA_TEST_VARIANTS),$(eval $(call sigma_test_rules,$(v))))

@@ -7,6 +7,7 @@
 #include "squeal_model.h"
 #include "squeal_model_internal.h"
 #include "squeal_sigma.h"
+#include "hal.h"
 #include "squeal_sigma_internal.h"
 
 #if defined(SQUEAL_NUMERIC_FIXED)
@@ -27,9 +28,7 @@ static bool sd_within(squeal_num_t sd, squeal_num_t value)
 
 void squeal_sigma_sd_zero(squeal_param_sd_t *sd)
 {
-	if (sd == NULL) {
-		return;
-	}
+	HAL_REQUIRE(sd != NULL);
 	sd->mass_kg_sd = 0;
 	sd->omega0_radps_sd = 0;
 	sd->damping_sd = 0;
@@ -42,9 +41,7 @@ void squeal_sigma_sd_zero(squeal_param_sd_t *sd)
 int squeal_sigma_sd_check(const squeal_params_t *params,
 			  const squeal_param_sd_t *sd)
 {
-	if ((params == NULL) || (sd == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((params != NULL) && (sd != NULL));
 	if (!sd_within(sd->mass_kg_sd, params->mass_kg) ||
 	    !sd_within(sd->omega0_radps_sd, params->omega0_radps) ||
 	    !sd_within(sd->damping_sd, params->damping) ||
@@ -75,9 +72,7 @@ int squeal_sigma_margin(const squeal_sigma_result_t *r, squeal_state_t state,
 	squeal_num_t to_hopf;
 	squeal_num_t to_stable;
 
-	if ((r == NULL) || (margin == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((r != NULL) && (margin != NULL));
 	if ((r->flags & SQUEAL_SIGMA_HAS_BORDERS) == 0U) {
 		*margin = SQUEAL_SIGMA_MARGIN_MAX;
 		return SQ_OK;
@@ -110,9 +105,7 @@ int squeal_sigma_eval(const squeal_params_t *params,
 	bool unstable;
 	bool stable;
 
-	if ((params == NULL) || (sd == NULL) || (point == NULL) || (out == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((params != NULL) && (sd != NULL) && (point != NULL) && (out != NULL));
 	c = squeal_model_case(params, point);
 	if ((c == SQUEAL_CASE_INVALID) || (squeal_sigma_sd_check(params, sd) != SQ_OK)) {
 		result_clear(out, SQUEAL_STATE_INVALID);
