@@ -26,8 +26,8 @@ LDS_stm32f103 := linker/stm32f103xb.ld
 # #include "..." would find it first); the F103 port reuses the generic parts.
 HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
 HAL_INC_stm32f103 := -Ihal/stm32f103 -Ihal/stm32f4
-HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c semihost.c libc_min.c
-HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c flash.c)
+HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c selftest.c semihost.c libc_min.c
+HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c can_pins.c flash.c)
 HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c))
 
 # The firmware's entry point; a stand-in until firmware/app/ has its C files.
@@ -119,14 +119,14 @@ build/host-fixed/tv-digest: build/host-fixed/app/tests/target/tv_run.o build/hos
 	$(CC) -o $@ $^ -lm
 
 # bxCAN bit timing: pure arithmetic, tested on the host (cmocka)
-build/host/test_bxcan_timing: tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/hal_stm32.h
+build/host/test_bxcan_timing: tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/bxcan.h
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -o $@ tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
 
 # Two-slot calibration storage over a simulated NOR flash (power cut at every
 # byte); the slot geometry comes from the link, as on the target. No PIE:
 # the slot size is an absolute linker symbol.
-build/test/test_calib_flash: tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/hal_stm32.h
+build/test/test_calib_flash: tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -o $@ \
 		tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \

@@ -45,7 +45,7 @@ int squeal_app_init(void)
 {
 	calib_t cal;
 	bool calib_invalid;
-	uint32_t ids[2];
+	hal_can_filter_t filters[2];
 	int rc;
 	int first_error = SQ_OK;
 
@@ -59,13 +59,13 @@ int squeal_app_init(void)
 		first_error = SQ_EBADMSG;
 	}
 	/* bit rate first: a restart of the controller resets its filters */
-	rc = hal_can_set_bitrate(app_monitor.cal.bitrate_kbps);
+	rc = hal_can_set_bitrate(0U, app_monitor.cal.bitrate_kbps);
 	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
 		first_error = rc;
 	}
-	ids[0] = app_monitor.cal.disc_speed_id;
-	ids[1] = app_monitor.cal.pad_force_id;
-	rc = hal_can_set_rx_filter(ids, 2U);
+	filters[0] = (hal_can_filter_t){ app_monitor.cal.disc_speed_id, HAL_CAN_STD_ID_MAX, 0U };
+	filters[1] = (hal_can_filter_t){ app_monitor.cal.pad_force_id, HAL_CAN_STD_ID_MAX, 0U };
+	rc = hal_can_set_rx_filter(0U, filters, 2U);
 	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
 		first_error = rc;
 	}
@@ -89,7 +89,7 @@ static void transmit(void)
 		if (monitor_peek_tx(&app_monitor, &f) != SQ_OK) {
 			break;
 		}
-		rc = hal_can_send(&f);
+		rc = hal_can_send(0U, &f);
 		if (rc == SQ_ENOBUFS) {
 			break; /* stays queued: retried next tick */
 		}
@@ -105,7 +105,7 @@ uint64_t squeal_app_poll(void)
 	uint32_t i;
 
 	for (i = 0U; i < RX_BUDGET; i++) {
-		if (hal_can_receive(&f) != SQ_OK) {
+		if (hal_can_receive(0U, &f) != SQ_OK) {
 			break;
 		}
 		monitor_on_frame(&app_monitor, &f);
@@ -114,7 +114,7 @@ uint64_t squeal_app_poll(void)
 		const uint32_t t0 = hal_cycles();
 		uint32_t cpu = hal_cycles_per_us();
 
-		if (hal_can_get_status(&st) == SQ_OK) {
+		if (hal_can_get_status(0U, &st) == SQ_OK) {
 			monitor_on_can_status(&app_monitor, &st);
 		}
 		monitor_step(&app_monitor, now);

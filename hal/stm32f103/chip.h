@@ -21,11 +21,22 @@
 #define CHIP_IRQ_CAN1_RX1 21U
 #define CHIP_IRQ_CAN1_SCE 22U
 
+/* bxCAN: CAN1 only on the F103 (14 filter banks); bus 1 is SQ_ENODEV. */
+#define CHIP_CAN_BUSES 1U
+#define CHIP_CAN_FILTER_BANKS 14U
+
 /* Clock plan: HSE 8 MHz x 9 -> 72 MHz SYSCLK, APB1 36 MHz (bxCAN), APB2 72. */
 #define CHIP_HSI_HZ      8000000UL
 #define CHIP_HSE_HZ      8000000UL
 #define CHIP_SYSCLK_HZ  72000000UL
 #define CHIP_APB1_HZ    36000000UL
+
+/* LSI (IWDG clock), datasheet worst case: the reload is computed for the
+ * fastest one, so the watchdog never fires before its timeout. */
+#define CHIP_LSI_MAX_HZ 60000UL
+/* DBGMCU: IWDG stopped while the core is halted by a debugger. */
+#define CHIP_DBGMCU_IWDG_REG REG32(0xE0042004UL)
+#define CHIP_DBGMCU_IWDG_STOP (1UL << 8)
 
 #define CAN1_BASE  0x40006400UL
 #define IWDG_BASE  0x40003000UL
@@ -95,11 +106,17 @@
 #define AFIO_MAPR   REG32(AFIO_BASE + 0x04UL)
 #define AFIO_MAPR_CAN_REMAP_MSK  (3UL << 13)
 #define AFIO_MAPR_CAN_REMAP_PB89 (2UL << 13)
+#define AFIO_MAPR_SWJ_CFG_MSK    (7UL << 24) /* write-only, reads undefined */
+#define AFIO_MAPR_SWJ_CFG_FULL   (0UL << 24) /* JTAG + SWD (reset state)    */
 
 int chip_clock_init(void);
+uint32_t chip_hse_measured_hz(void); /* the F103 has no TIM11: not measured */
+#define CHIP_HSE_NOT_MEASURED 0xFFFFFFFFUL
+uint32_t chip_bor_level(void);       /* no BOR option on the F103 (fixed PDR) */
+#define CHIP_BOR_NONE 0xFFUL
 uint32_t chip_core_hz(void);
 uint32_t chip_apb1_hz(void);
-void chip_can_pins_init(void);
+void chip_can_pins_init(uint8_t bus);
 int chip_flash_erase_slot(uint32_t slot);
 int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
 

@@ -5,8 +5,11 @@
  * to PB8 RX / PB9 TX, like the F4 board), and calibration flash: 1 KiB page
  * erase and half-word programming (RM0008 / PM0075), every wait bounded.
  */
+#include <stddef.h>
+
 #include "chip.h"
-#include "hal_stm32.h"
+#include "stm32_time.h"
+#include "sq_status.h"
 
 #define HSE_TIMEOUT_US    100000UL
 #define PLL_TIMEOUT_US      5000UL
@@ -66,6 +69,16 @@ int chip_clock_init(void)
 	return SQ_OK;
 }
 
+uint32_t chip_hse_measured_hz(void)
+{
+	return CHIP_HSE_NOT_MEASURED;
+}
+
+uint32_t chip_bor_level(void)
+{
+	return CHIP_BOR_NONE;
+}
+
 uint32_t chip_core_hz(void)
 {
 	return core_hz;
@@ -76,14 +89,22 @@ uint32_t chip_apb1_hz(void)
 	return apb1_hz;
 }
 
-void chip_can_pins_init(void)
+void chip_can_pins_init(uint8_t bus)
 {
 	uint32_t v;
+
+	if (bus != 0U) {
+		return; /* CAN1 only */
+	}
 
 	RCC_APB2ENR |= RCC_APB2ENR_AFIOEN | RCC_APB2ENR_IOPBEN;
 	RCC_APB1ENR |= RCC_APB1ENR_CAN1EN;
 	(void)RCC_APB1ENR;
-	AFIO_MAPR = (AFIO_MAPR & ~AFIO_MAPR_CAN_REMAP_MSK) | AFIO_MAPR_CAN_REMAP_PB89;
+	/* SWJ_CFG (26:24) is write-only and reads back undefined: a plain
+	 * read-modify-write could switch SWD off. Mask it and write 000
+	 * (full SWJ, the reset state). */
+	AFIO_MAPR = (AFIO_MAPR & ~(AFIO_MAPR_CAN_REMAP_MSK | AFIO_MAPR_SWJ_CFG_MSK)) |
+		    AFIO_MAPR_CAN_REMAP_PB89 | AFIO_MAPR_SWJ_CFG_FULL;
 	/* PB8: input with pull-up (CNF 10, MODE 00); PB9: AF push-pull 50 MHz
 	 * (CNF 10, MODE 11) */
 	v = GPIO_CRH(GPIOB_BASE) & ~0xFFUL;

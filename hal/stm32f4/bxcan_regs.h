@@ -2,35 +2,64 @@
 /*
  * bxCAN registers (RM0090 section 32.9; identical on the STM32F1, RM0008
  * section 24.9). Only what the driver uses; names as in the manual.
+ * The simulation and the driver share these numbers; the simulation
+ * interprets them independently of the driver's logic.
  */
 #ifndef BXCAN_REGS_H
 #define BXCAN_REGS_H
 
 #include "cortex_m.h"
 
-#define CAN_MCR(b)   REG32((b) + 0x000UL)
-#define CAN_MSR(b)   REG32((b) + 0x004UL)
-#define CAN_TSR(b)   REG32((b) + 0x008UL)
-#define CAN_RF0R(b)  REG32((b) + 0x00CUL)
-#define CAN_RF1R(b)  REG32((b) + 0x010UL)
-#define CAN_IER(b)   REG32((b) + 0x014UL)
-#define CAN_ESR(b)   REG32((b) + 0x018UL)
-#define CAN_BTR(b)   REG32((b) + 0x01CUL)
-#define CAN_TIR(b, n)  REG32((b) + 0x180UL + 0x10UL * (n))
-#define CAN_TDTR(b, n) REG32((b) + 0x184UL + 0x10UL * (n))
-#define CAN_TDLR(b, n) REG32((b) + 0x188UL + 0x10UL * (n))
-#define CAN_TDHR(b, n) REG32((b) + 0x18CUL + 0x10UL * (n))
-#define CAN_RIR(b, n)  REG32((b) + 0x1B0UL + 0x10UL * (n))
-#define CAN_RDTR(b, n) REG32((b) + 0x1B4UL + 0x10UL * (n))
-#define CAN_RDLR(b, n) REG32((b) + 0x1B8UL + 0x10UL * (n))
-#define CAN_RDHR(b, n) REG32((b) + 0x1BCUL + 0x10UL * (n))
-#define CAN_FMR(b)   REG32((b) + 0x200UL)
-#define CAN_FM1R(b)  REG32((b) + 0x204UL)
-#define CAN_FS1R(b)  REG32((b) + 0x20CUL)
-#define CAN_FFA1R(b) REG32((b) + 0x214UL)
-#define CAN_FA1R(b)  REG32((b) + 0x21CUL)
-#define CAN_FR1(b, i) REG32((b) + 0x240UL + 8UL * (i))
-#define CAN_FR2(b, i) REG32((b) + 0x244UL + 8UL * (i))
+/* Register offsets; the driver reads and writes them through can_rd() and
+ * can_wr(), which the host simulation (tests/hal/bxcan_sim.c, BXCAN_SIM)
+ * replaces, so that write-1-to-clear bits and mailboxes behave as on the
+ * chip. */
+#define CAN_MCR   0x000UL
+#define CAN_MSR   0x004UL
+#define CAN_TSR   0x008UL
+#define CAN_RF0R  0x00CUL
+#define CAN_RF1R  0x010UL
+#define CAN_IER   0x014UL
+#define CAN_ESR   0x018UL
+#define CAN_BTR   0x01CUL
+#define CAN_TIR(n)  (0x180UL + 0x10UL * (n))
+#define CAN_TDTR(n) (0x184UL + 0x10UL * (n))
+#define CAN_TDLR(n) (0x188UL + 0x10UL * (n))
+#define CAN_TDHR(n) (0x18CUL + 0x10UL * (n))
+#define CAN_RIR(n)  (0x1B0UL + 0x10UL * (n))
+#define CAN_RDTR(n) (0x1B4UL + 0x10UL * (n))
+#define CAN_RDLR(n) (0x1B8UL + 0x10UL * (n))
+#define CAN_RDHR(n) (0x1BCUL + 0x10UL * (n))
+/* Filter registers exist in CAN1 only; CAN2 uses the banks from CAN2SB. */
+#define CAN_FMR   0x200UL
+#define CAN_FM1R  0x204UL
+#define CAN_FS1R  0x20CUL
+#define CAN_FFA1R 0x214UL
+#define CAN_FA1R  0x21CUL
+#define CAN_FR1(i) (0x240UL + 8UL * (i))
+#define CAN_FR2(i) (0x244UL + 8UL * (i))
+
+#if defined(BXCAN_SIM)
+uint32_t bxcan_sim_read(uintptr_t base, uint32_t off);
+void bxcan_sim_write(uintptr_t base, uint32_t off, uint32_t value);
+static inline uint32_t can_rd(uintptr_t base, uint32_t off)
+{
+	return bxcan_sim_read(base, off);
+}
+static inline void can_wr(uintptr_t base, uint32_t off, uint32_t value)
+{
+	bxcan_sim_write(base, off, value);
+}
+#else
+static inline uint32_t can_rd(uintptr_t base, uint32_t off)
+{
+	return REG32(base + off);
+}
+static inline void can_wr(uintptr_t base, uint32_t off, uint32_t value)
+{
+	REG32(base + off) = value;
+}
+#endif
 
 #define CAN_MCR_INRQ  (1UL << 0)
 #define CAN_MCR_SLEEP (1UL << 1)
@@ -59,6 +88,7 @@
 #define CAN_TSR_TME0  (1UL << 26)
 #define CAN_TSR_TME(n) (1UL << (26U + (n)))
 #define CAN_TSR_TME_ALL (7UL << 26)
+#define CAN_TSR_ABRQ(n) (1UL << (8U * (n) + 7U))
 
 #define CAN_RF0R_FMP0_MSK 3UL
 #define CAN_RF0R_FULL0 (1UL << 3)
@@ -101,5 +131,10 @@
 #define CAN_RDTR_DLC_MSK 0xFUL
 
 #define CAN_FMR_FINIT (1UL << 0)
+#define CAN_FMR_CAN2SB_SHIFT 8U
+#define CAN_FMR_CAN2SB_MSK (0x3FUL << 8)
+#define CAN_RIR_EXID_SHIFT 3U
+#define CAN_RIR_STID_SHIFT 21U
+#define CAN_FR_IDE (1UL << 2)
 
 #endif /* BXCAN_REGS_H */

@@ -12,8 +12,9 @@
 
 int squeal_app_init(void)
 {
-	static const uint32_t ids[2] = { 0x100U, 0x101U };
-	int rc = hal_can_set_rx_filter(ids, 2U);
+	static const hal_can_filter_t filters[2] = { { 0x100U, HAL_CAN_STD_ID_MAX, 0U },
+						     { 0x101U, HAL_CAN_STD_ID_MAX, 0U } };
+	int rc = hal_can_set_rx_filter(0U, filters, 2U);
 
 	if (hal_watchdog_start(PLACEHOLDER_WDG_MS) != SQ_OK) {
 		rc = SQ_EIO;
@@ -26,8 +27,8 @@ uint64_t squeal_app_poll(void)
 	hal_can_frame_t f;
 	uint32_t n;
 
-	for (n = 0; n < 32U && hal_can_receive(&f) == SQ_OK; n++) {
-		(void)hal_can_send(&f); /* echo: something to do with it */
+	for (n = 0; n < 32U && hal_can_receive(0U, &f) == SQ_OK; n++) {
+		(void)hal_can_send(0U, &f); /* echo: something to do with it */
 	}
 	hal_watchdog_kick();
 	return hal_time_us() + 1000U;

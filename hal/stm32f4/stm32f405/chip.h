@@ -19,18 +19,36 @@
 #define CHIP_IRQ_CAN1_RX0 20U
 #define CHIP_IRQ_CAN1_RX1 21U
 #define CHIP_IRQ_CAN1_SCE 22U
+#define CHIP_IRQ_CAN2_TX  63U
+#define CHIP_IRQ_CAN2_RX0 64U
+#define CHIP_IRQ_CAN2_RX1 65U
+#define CHIP_IRQ_CAN2_SCE 66U
 
-/* Clock plan: HSE 8 MHz -> PLL (M 8, N 336, P 2, Q 7) -> 168 MHz SYSCLK,
+/* bxCAN: CAN1 (master, owns the 28 filter banks) and CAN2 (slave). */
+#define CHIP_CAN_BUSES 2U
+#define CHIP_CAN_FILTER_BANKS 28U
+
+/* Clock plan: HSE 8 MHz -> PLL (M 4: 2 MHz VCO input as RM0090 recommends,
+ * N 168, P 2, Q 7) -> 168 MHz SYSCLK,
  * AHB 168 MHz, APB1 42 MHz (bxCAN), APB2 84 MHz, USB/SDIO 48 MHz. */
 #define CHIP_HSI_HZ      16000000UL
 #define CHIP_HSE_HZ       8000000UL
 #define CHIP_SYSCLK_HZ  168000000UL
 #define CHIP_APB1_HZ     42000000UL
 
+/* LSI (IWDG clock), datasheet worst case: the reload is computed for the
+ * fastest one, so the watchdog never fires before its timeout. */
+#define CHIP_LSI_MAX_HZ 47000UL
+/* DBGMCU: IWDG stopped while the core is halted by a debugger. */
+#define CHIP_DBGMCU_IWDG_REG REG32(0xE0042008UL)
+#define CHIP_DBGMCU_IWDG_STOP (1UL << 12)
+
 /* Peripheral bases */
 #define CAN1_BASE  0x40006400UL
+#define CAN2_BASE  0x40006800UL
 #define IWDG_BASE  0x40003000UL
 #define PWR_BASE   0x40007000UL
+#define TIM11_BASE 0x40014800UL
 #define GPIOB_BASE 0x40020400UL
 #define RCC_BASE   0x40023800UL
 #define FLASH_R_BASE 0x40023C00UL
@@ -43,6 +61,7 @@
 #define RCC_AHB1ENR  REG32(RCC_BASE + 0x30UL)
 #define RCC_APB1RSTR REG32(RCC_BASE + 0x20UL)
 #define RCC_APB1ENR  REG32(RCC_BASE + 0x40UL)
+#define RCC_APB2ENR  REG32(RCC_BASE + 0x44UL)
 #define RCC_CSR      REG32(RCC_BASE + 0x74UL)
 
 #define RCC_CR_HSION  (1UL << 0)
@@ -70,9 +89,14 @@
 #define RCC_CFGR_PPRE1_DIV4 (5UL << 10)
 #define RCC_CFGR_PPRE2_MSK (7UL << 13)
 #define RCC_CFGR_PPRE2_DIV2 (4UL << 13)
+#define RCC_CFGR_RTCPRE_SHIFT 16U
+#define RCC_CFGR_RTCPRE_MSK (0x1FUL << 16)
+#define RCC_CIR_CSSC (1UL << 23)
+#define RCC_APB2ENR_TIM11EN (1UL << 18)
 
 #define RCC_AHB1ENR_GPIOBEN (1UL << 1)
 #define RCC_APB1ENR_CAN1EN  (1UL << 25)
+#define RCC_APB1ENR_CAN2EN  (1UL << 26)
 #define RCC_APB1ENR_PWREN   (1UL << 28)
 #define RCC_APB1RSTR_CAN1RST (1UL << 25)
 
@@ -95,6 +119,25 @@
 #define FLASH_KEYR REG32(FLASH_R_BASE + 0x04UL)
 #define FLASH_SR   REG32(FLASH_R_BASE + 0x0CUL)
 #define FLASH_CR   REG32(FLASH_R_BASE + 0x10UL)
+#define FLASH_OPTCR REG32(FLASH_R_BASE + 0x14UL)
+#define FLASH_OPTCR_BOR_LEV_SHIFT 2U
+#define FLASH_OPTCR_BOR_LEV_MSK (3UL << 2) /* 00 level 3 (2.7 V) .. 11 off */
+
+/* TIM11 (RM0090 section 17): input capture of HSE_RTC on channel 1 */
+#define TIM11_CR1   REG32(TIM11_BASE + 0x00UL)
+#define TIM11_SR    REG32(TIM11_BASE + 0x10UL)
+#define TIM11_CCMR1 REG32(TIM11_BASE + 0x18UL)
+#define TIM11_CCER  REG32(TIM11_BASE + 0x20UL)
+#define TIM11_PSC   REG32(TIM11_BASE + 0x28UL)
+#define TIM11_ARR   REG32(TIM11_BASE + 0x2CUL)
+#define TIM11_CCR1  REG32(TIM11_BASE + 0x34UL)
+#define TIM11_OR    REG32(TIM11_BASE + 0x50UL)
+#define TIM_CR1_CEN (1UL << 0)
+#define TIM_SR_CC1IF (1UL << 1)
+#define TIM_CCMR1_CC1S_TI1 1UL
+#define TIM_CCMR1_IC1PSC_8 (3UL << 2)
+#define TIM_CCER_CC1E (1UL << 0)
+#define TIM11_OR_TI1_HSE_RTC 2UL
 #define FLASH_ACR_LATENCY_MSK 7UL
 #define FLASH_ACR_LATENCY_5WS 5UL /* 150..168 MHz at 2.7..3.6 V */
 #define FLASH_ACR_PRFTEN (1UL << 8)
@@ -127,6 +170,7 @@
 #define GPIO_OTYPER(b)  REG32((b) + 0x04UL)
 #define GPIO_OSPEEDR(b) REG32((b) + 0x08UL)
 #define GPIO_PUPDR(b)   REG32((b) + 0x0CUL)
+#define GPIO_AFRL(b)    REG32((b) + 0x20UL)
 #define GPIO_AFRH(b)    REG32((b) + 0x24UL)
 #define GPIO_MODE_AF 2UL
 #define GPIO_PUPD_UP 1UL
@@ -137,9 +181,19 @@
 #include <stdbool.h>
 #include <stdint.h>
 int chip_clock_init(void);            /* SQ_OK or SQ_EAGAIN (fell back to HSI) */
+/* HSE frequency measured against the HSI at start-up: Hz, 0 (no crystal
+ * started), CHIP_HSE_NOT_MEASURED (the chip cannot measure it). */
+uint32_t chip_hse_measured_hz(void);
+#define CHIP_HSE_NOT_MEASURED 0xFFFFFFFFUL
+/* Brown-out reset level from the option bytes: 3 (2.7 V, needed for 5 wait
+ * states and x32 flash programming), 2, 1, 0 (off), CHIP_BOR_NONE. */
+uint32_t chip_bor_level(void);
+#define CHIP_BOR_NONE 0xFFUL
 uint32_t chip_core_hz(void);
 uint32_t chip_apb1_hz(void);
-void chip_can_pins_init(void);        /* GPIO + RCC clock of CAN1 */
+/* GPIO and RCC clock of bus 0 (CAN1) or 1 (CAN2, which also needs CAN1's
+ * clock: its filters live in CAN1). can_pins.c. */
+void chip_can_pins_init(uint8_t bus);
 int chip_flash_erase_slot(uint32_t slot);
 int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
 
