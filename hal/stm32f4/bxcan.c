@@ -35,9 +35,9 @@
 
 #define RX_RING_LEN 32U  /* power of two; 32 frames = 3 ms of a full bus */
 #define TX_QUEUE_LEN 16U
-#define INAK_TIMEOUT_US 10000UL  /* enter init: end of the current frame  */
-#define JOIN_TIMEOUT_US 20000UL  /* leave init: 11 recessive bits         */
-#define LOOPBACK_TIMEOUT_US 5000UL /* one frame at 500 kbit/s: 0.3 ms    */
+#define INAK_TIMEOUT_US 10000U  /* enter init: end of the current frame  */
+#define JOIN_TIMEOUT_US 20000U  /* leave init: 11 recessive bits         */
+#define LOOPBACK_TIMEOUT_US 5000U /* one frame at 500 kbit/s: 0.3 ms    */
 #define BANKS_PER_BUS (CHIP_CAN_FILTER_BANKS / CHIP_CAN_BUSES)
 #define FILTER_MASTER CAN1_BASE
 
@@ -208,7 +208,7 @@ static uint32_t filter_word(uint32_t id, bool ext)
 static void filter_banks_write(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
 	const uint32_t first = (uint32_t)bus * BANKS_PER_BUS;
-	const uint32_t own = ((1UL << BANKS_PER_BUS) - 1UL) << first;
+	const uint32_t own = ((1U << BANKS_PER_BUS) - 1U) << first;
 	uint32_t active = 0U;
 	uint32_t fmr = can_rd(FILTER_MASTER, CAN_FMR) | CAN_FMR_FINIT;
 	uint32_t i;
@@ -233,7 +233,7 @@ static void filter_banks_write(uint8_t bus, const hal_can_filter_t *filters, uin
 			can_wr(FILTER_MASTER, CAN_FR1(bank), filter_word(filters[i].id, ext));
 			can_wr(FILTER_MASTER, CAN_FR2(bank), filter_word(filters[i].mask, ext) | CAN_FR_IDE);
 		}
-		active |= 1UL << bank;
+		active |= 1U << bank;
 	}
 	can_set(FILTER_MASTER, CAN_FA1R, active);
 	can_clear(FILTER_MASTER, CAN_FMR, CAN_FMR_FINIT);
@@ -359,7 +359,7 @@ int bxcan_start(uint8_t bus, uint32_t bitrate_bps)
 int bxcan_selftest_loopback(uint8_t bus)
 {
 	static const hal_can_frame_t probe = {
-		.id = 0x15A5C3E7UL, .flags = HAL_CAN_FLAG_EXT, .dlc = 8U,
+		.id = 0x15A5C3E7U, .flags = HAL_CAN_FLAG_EXT, .dlc = 8U,
 		.data = { 0x55U, 0xAAU, 0x01U, 0x80U, 0xFFU, 0x00U, 0x3CU, 0xC3U },
 	};
 	bus_state_t *st = bus_get(bus);
@@ -658,4 +658,17 @@ void CAN1_SCE_IRQHandler(void) { sce_irq(0U); }
 void CAN2_TX_IRQHandler(void) { tx_irq(1U); }
 void CAN2_RX0_IRQHandler(void) { rx0_irq(1U); }
 void CAN2_SCE_IRQHandler(void) { sce_irq(1U); }
+#endif
+
+#if defined(BXCAN_SIM)
+/* Host simulation only (tests/hal/bxcan_sim.c): a fresh driver per test. */
+void bxcan_sim_driver_reset(void);
+void bxcan_sim_driver_reset(void)
+{
+	uint32_t bus;
+
+	for (bus = 0; bus < CHIP_CAN_BUSES; bus++) {
+		can_bus[bus] = (bus_state_t){ 0 };
+	}
+}
 #endif
