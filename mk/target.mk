@@ -152,3 +152,8 @@ tests/target/bench-target.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/s
 BENCH_PROGS += tests/target/bench-target.sh
 # ... and one that divides by zero once it runs, to test the fault path
 $(eval $(call arm_config,stm32f4-faulttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+# ... one whose stack overflows on purpose (issue 14: fault handler on a broken stack)
+$(eval $(call arm_config,stm32f4-stacktest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_STACK_OVERFLOW,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+tests/target/run-ecu-stack-overflow.sh: build/stm32f4-stacktest/squeal-monitor.elf
+tests/target/run-ecu-selftest.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
+TEST_PROGS += tests/target/run-ecu-stack-overflow.sh tests/target/run-ecu-selftest.sh
