@@ -25,7 +25,7 @@ LDS_stm32f103 := linker/stm32f103xb.ld
 # chip.h comes from the chip directory (never next to the shared files, where
 # #include "..." would find it first); the F103 port reuses the generic parts.
 HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
-HAL_INC_stm32f103 := -Ihal/stm32f103 -Ihal/stm32f4
+HAL_INC_stm32f103 := -Ihal/stm32f103/stm32f103xb -Ihal/stm32f4
 HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c selftest.c semihost.c libc_min.c
 HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c can_pins.c flash.c)
 HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c))

@@ -11,12 +11,12 @@
 #include "stm32_time.h"
 #include "sq_status.h"
 
-#define HSE_TIMEOUT_US    100000UL
-#define PLL_TIMEOUT_US      5000UL
-#define SWITCH_TIMEOUT_US   5000UL
-#define ERASE_TIMEOUT_US   100000UL /* page erase max 40 ms */
-#define PROGRAM_TIMEOUT_US   1000UL /* half-word max 70 us  */
-#define IDLE_TIMEOUT_US     10000UL
+#define HSE_TIMEOUT_US    100000U
+#define PLL_TIMEOUT_US      5000U
+#define SWITCH_TIMEOUT_US   5000U
+#define ERASE_TIMEOUT_US   100000U /* page erase max 40 ms */
+#define PROGRAM_TIMEOUT_US   1000U /* half-word max 70 us  */
+#define IDLE_TIMEOUT_US     10000U
 
 extern const uint8_t __calib_start[];
 extern const uint8_t __calib_slot_size[];
@@ -107,9 +107,9 @@ void chip_can_pins_init(uint8_t bus)
 		    AFIO_MAPR_CAN_REMAP_PB89 | AFIO_MAPR_SWJ_CFG_FULL;
 	/* PB8: input with pull-up (CNF 10, MODE 00); PB9: AF push-pull 50 MHz
 	 * (CNF 10, MODE 11) */
-	v = GPIO_CRH(GPIOB_BASE) & ~0xFFUL;
-	GPIO_CRH(GPIOB_BASE) = v | 0x8UL | (0xBUL << 4);
-	GPIO_ODR(GPIOB_BASE) |= 1UL << 8;
+	v = GPIO_CRH(GPIOB_BASE) & ~0xFFU;
+	GPIO_CRH(GPIOB_BASE) = v | 0x8U | (0xBU << 4);
+	GPIO_ODR(GPIOB_BASE) |= 1U << 8;
 }
 
 static int flash_unlock(void)
@@ -175,7 +175,7 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 	}
 	FLASH_CR = FLASH_CR_PG;
 	for (off = 0; off < len && rc == SQ_OK; off += 2U) {
-		uint16_t hw = (uint16_t)(data[off] | (off + 1U < len ? (uint32_t)data[off + 1U] << 8 : 0xFF00UL));
+		uint16_t hw = (uint16_t)(data[off] | (off + 1U < len ? (uint32_t)data[off + 1U] << 8 : 0xFF00U));
 
 		*(volatile uint16_t *)(uintptr_t)(addr + off) = hw;
 		rc = flash_wait_done(PROGRAM_TIMEOUT_US);

@@ -37,11 +37,11 @@ static void pin_af9(uint32_t pin, bool pull_up)
 {
 	uintptr_t afr = (uintptr_t)&GPIO_AFRL(GPIOB_BASE) + (pin >= 8U ? 4U : 0U);
 
-	field_set(afr, 4U * (pin & 7U), 0xFUL, GPIO_AF9_CAN1);
-	field_set((uintptr_t)&GPIO_MODER(GPIOB_BASE), 2U * pin, 3UL, GPIO_MODE_AF);
-	field_set((uintptr_t)&GPIO_OSPEEDR(GPIOB_BASE), 2U * pin, 3UL, GPIO_SPEED_HIGH);
-	field_set((uintptr_t)&GPIO_OTYPER(GPIOB_BASE), pin, 1UL, 0U);
-	field_set((uintptr_t)&GPIO_PUPDR(GPIOB_BASE), 2U * pin, 3UL, pull_up ? GPIO_PUPD_UP : 0U);
+	field_set(afr, 4U * (pin & 7U), 0xFU, GPIO_AF9_CAN1);
+	field_set((uintptr_t)&GPIO_MODER(GPIOB_BASE), 2U * pin, 3U, GPIO_MODE_AF);
+	field_set((uintptr_t)&GPIO_OSPEEDR(GPIOB_BASE), 2U * pin, 3U, GPIO_SPEED_HIGH);
+	field_set((uintptr_t)&GPIO_OTYPER(GPIOB_BASE), pin, 1U, 0U);
+	field_set((uintptr_t)&GPIO_PUPDR(GPIOB_BASE), 2U * pin, 3U, pull_up ? GPIO_PUPD_UP : 0U);
 }
 
 void chip_can_pins_init(uint8_t bus)

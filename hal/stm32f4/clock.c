@@ -21,17 +21,17 @@
 
 /* Bounds, from the datasheet with margin: HSE start-up is typically 2 ms
  * (crystal dependent), PLL lock 100..200 us, a clock switch a few cycles. */
-#define HSE_TIMEOUT_US    100000UL
-#define PLL_TIMEOUT_US      5000UL
-#define SWITCH_TIMEOUT_US   5000UL
+#define HSE_TIMEOUT_US    100000U
+#define PLL_TIMEOUT_US      5000U
+#define SWITCH_TIMEOUT_US   5000U
 /* HSE measurement: HSE/31 into TIM11 CH1, every 8th edge captured, 16
  * captures of 8 * 31 HSE periods each (496 HSI ticks at 8 MHz: 7936 in
  * all, resolution 0.013 %). */
-#define MEAS_RTCPRE 31UL
-#define MEAS_EDGES_PER_CAPTURE 8UL
-#define MEAS_CAPTURES 16UL
-#define MEAS_TIMEOUT_US 2000UL /* per capture; 8 MHz needs 31 us */
-#define HSE_TOLERANCE_PERMILLE 100UL
+#define MEAS_RTCPRE 31U
+#define MEAS_EDGES_PER_CAPTURE 8U
+#define MEAS_CAPTURES 16U
+#define MEAS_TIMEOUT_US 2000U /* per capture; 8 MHz needs 31 us */
+#define HSE_TOLERANCE_PERMILLE 100U
 
 static uint32_t core_hz = CHIP_HSI_HZ;
 static uint32_t apb1_hz = CHIP_HSI_HZ;
@@ -42,7 +42,7 @@ static int capture_wait(uint32_t *ccr)
 	if (stm32_wait_reg(&TIM11_SR, TIM_SR_CC1IF, TIM_SR_CC1IF, MEAS_TIMEOUT_US) != SQ_OK) {
 		return SQ_EAGAIN;
 	}
-	*ccr = TIM11_CCR1 & 0xFFFFUL; /* reading CCR1 clears CC1IF */
+	*ccr = TIM11_CCR1 & 0xFFFFU; /* reading CCR1 clears CC1IF */
 	return SQ_OK;
 }
 
@@ -62,7 +62,7 @@ static uint32_t hse_measure(void)
 	TIM11_CR1 = 0U;
 	TIM11_OR = TIM11_OR_TI1_HSE_RTC;
 	TIM11_PSC = 0U;
-	TIM11_ARR = 0xFFFFUL;
+	TIM11_ARR = 0xFFFFU;
 	TIM11_CCMR1 = TIM_CCMR1_CC1S_TI1 | TIM_CCMR1_IC1PSC_8;
 	TIM11_CCER = TIM_CCER_CC1E;
 	TIM11_SR = 0U;
@@ -75,7 +75,7 @@ static uint32_t hse_measure(void)
 				ticks = 0U;
 				break;
 			}
-			ticks += (now - prev) & 0xFFFFUL; /* 16-bit counter wraps */
+			ticks += (now - prev) & 0xFFFFU; /* 16-bit counter wraps */
 			prev = now;
 		}
 	}
@@ -141,9 +141,9 @@ int chip_clock_init(void)
 	(void)RCC_APB1ENR; /* read back: the enable needs two cycles */
 	PWR_CR |= PWR_CR_VOS;
 
-	RCC_PLLCFGR = (4UL << RCC_PLLCFGR_PLLM_SHIFT) | (168UL << RCC_PLLCFGR_PLLN_SHIFT) |
-		      (0UL << RCC_PLLCFGR_PLLP_SHIFT) | RCC_PLLCFGR_PLLSRC_HSE |
-		      (7UL << RCC_PLLCFGR_PLLQ_SHIFT);
+	RCC_PLLCFGR = (4U << RCC_PLLCFGR_PLLM_SHIFT) | (168U << RCC_PLLCFGR_PLLN_SHIFT) |
+		      (0U << RCC_PLLCFGR_PLLP_SHIFT) | RCC_PLLCFGR_PLLSRC_HSE |
+		      (7U << RCC_PLLCFGR_PLLQ_SHIFT);
 	RCC_CR |= RCC_CR_PLLON;
 	if (stm32_wait_reg(&RCC_CR, RCC_CR_PLLRDY, RCC_CR_PLLRDY, PLL_TIMEOUT_US) != SQ_OK) {
 		clock_back_to_hsi();

@@ -20,19 +20,19 @@
 #include "stm32_fault.h"
 #include "stm32_time.h"
 
-#define IWDG_KR  REG32(IWDG_BASE + 0x00UL)
-#define IWDG_PR  REG32(IWDG_BASE + 0x04UL)
-#define IWDG_RLR REG32(IWDG_BASE + 0x08UL)
-#define IWDG_SR  REG32(IWDG_BASE + 0x0CUL)
-#define IWDG_KR_START  0xCCCCUL
-#define IWDG_KR_RELOAD 0xAAAAUL
-#define IWDG_KR_UNLOCK 0x5555UL
-#define IWDG_SR_PVU (1UL << 0)
-#define IWDG_SR_RVU (1UL << 1)
-#define IWDG_RLR_MAX 0xFFFUL
+#define IWDG_KR  REG32(IWDG_BASE + 0x00U)
+#define IWDG_PR  REG32(IWDG_BASE + 0x04U)
+#define IWDG_RLR REG32(IWDG_BASE + 0x08U)
+#define IWDG_SR  REG32(IWDG_BASE + 0x0CU)
+#define IWDG_KR_START  0xCCCCU
+#define IWDG_KR_RELOAD 0xAAAAU
+#define IWDG_KR_UNLOCK 0x5555U
+#define IWDG_SR_PVU (1U << 0)
+#define IWDG_SR_RVU (1U << 1)
+#define IWDG_RLR_MAX 0xFFFU
 /* A register update crosses into the LSI domain: up to 5 LSI periods of the
  * slowest prescaler (256 / 17 kHz * 5 = 75 ms). */
-#define IWDG_UPDATE_TIMEOUT_US 100000UL
+#define IWDG_UPDATE_TIMEOUT_US 100000U
 
 static hal_reset_reason_t reset_reason = HAL_RESET_UNKNOWN;
 static bool running;
@@ -51,11 +51,11 @@ int hal_watchdog_start(uint32_t timeout_ms)
 	/* Smallest prescaler 4 << pr whose 12-bit reload reaches the timeout:
 	 * finest resolution. */
 	for (pr = 0; pr <= 6U; pr++) {
-		uint32_t div = 4UL << pr;
+		uint32_t div = 4U << pr;
 
 		/* rounded up: never shorter than asked at the fastest LSI */
-		ticks = (uint32_t)(((uint64_t)timeout_ms * CHIP_LSI_MAX_HZ + 1000UL * div - 1UL) /
-				   (1000UL * div));
+		ticks = (uint32_t)(((uint64_t)timeout_ms * CHIP_LSI_MAX_HZ + 1000U * div - 1U) /
+				   (1000U * div));
 		if (ticks <= IWDG_RLR_MAX + 1U) {
 			break;
 		}
