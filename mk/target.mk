@@ -157,3 +157,6 @@ $(eval $(call arm_config,stm32f4-stacktest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_T
 tests/target/run-ecu-stack-overflow.sh: build/stm32f4-stacktest/squeal-monitor.elf
 tests/target/run-ecu-selftest.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
 TEST_PROGS += tests/target/run-ecu-stack-overflow.sh tests/target/run-ecu-selftest.sh
+# ... and one that takes the clock security system's NMI (the crystal stops)
+$(eval $(call arm_config,stm32f4-nmitest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_NMI,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+tests/target/run-ecu-selftest.sh: build/stm32f4-nmitest/squeal-monitor.elf

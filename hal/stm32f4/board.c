@@ -168,6 +168,12 @@ void stm32_test_event(const char *what, uint32_t value)
 			if (hal_reset_reason() != HAL_RESET_FAULT) {
 #if defined(SQ_TARGET_TEST_STACK_OVERFLOW)
 				stack_overflow();
+#elif defined(SQ_TARGET_TEST_NMI)
+				/* what the clock security system does when the
+				 * crystal stops: the NMI (QEMU has no CSS) */
+				SCB_ICSR = SCB_ICSR_NMIPENDSET;
+				cm_dsb();
+				cm_isb();
 #else
 				uint32_t q;
 

@@ -9,7 +9,8 @@
 # read from the option bytes, both CAN controllers' loopback reported as
 # unavailable (2: they never acknowledge initialisation), the previous
 # run's stack high-water mark (unknown after a cold start, measured after
-# the fault test's reset), and that the ECU still runs its main loop.
+# the fault test's reset), that the ECU still runs its main loop, and the
+# clock security system's NMI path (record, reset, HSI fallback reported).
 # Prints "RESULT: N passed, M failed".
 set -u
 cd "$(dirname "$0")/../.."
@@ -52,6 +53,22 @@ prev=$(f "$st2" stack_prev); res=$(f "$st2" stack_reserve)
 check "after a reset: reset cause HAL_RESET_FAULT (4)" [ -n "$st2" ]
 check "after a reset: previous run's stack use measured (${prev:-?} of ${res:-?} bytes, 64..reserve/2)" \
 	[ -n "$prev" ] && [ "$prev" -ge 64 ] && [ "$prev" -le $(( ${res:-0} / 2 )) ]
+
+# Clock security system: a crystal that stops at run time gives the NMI
+# (QEMU has no CSS: the test image pends the NMI itself once its main loop
+# runs). The handler records vector 2 and resets; the next start reports
+# the fault as the reset cause and runs on the HSI with the clock fault.
+log3=build/test-logs/target-ecu-selftest-nmi.txt
+run build/stm32f4-nmitest/squeal-monitor.elf "$log3"
+rc=$?
+grep '^EVT fault\|^EVT reset_reason\|^EVT summary' "$log3" | sed 's/^/  | /'
+check "NMI image ends by itself after the reset (exit 0)" [ "$rc" = 0 ]
+check "NMI (vector 2) recorded" grep -q '^EVT fault vector=2 ' "$log3"
+check "next start reports HAL_RESET_FAULT from the NMI" grep -q '^EVT reset_reason value=4 fault_vector=2 ' "$log3"
+sum3=$(grep '^EVT summary' "$log3" || true)
+check "and runs on the HSI (16 MHz) with the clock fallback reported" \
+	[ -n "$sum3" ] && echo "$sum3" | grep -q ' core_mhz=16' && \
+	[ $(( $(echo "$sum3" | sed -nE 's/.* faults=0x([0-9a-f]+).*/0x\1/p') & 1 )) = 1 ]
 
 echo "RESULT: $pass passed, $fail failed"
 [ "$fail" = 0 ]
