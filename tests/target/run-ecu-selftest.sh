@@ -14,19 +14,11 @@
 # Prints "RESULT: N passed, M failed".
 set -u
 cd "$(dirname "$0")/../.."
-pass=0; fail=0
-check() { # description, condition...
-	local d=$1; shift
-	if "$@"; then pass=$((pass + 1)); echo "PASS: $d"; else fail=$((fail + 1)); echo "FAIL: $d"; fi
-}
-run() { # elf log
-	timeout 60 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
-		-semihosting-config enable=on,target=native -kernel "$1" >"$2" 2>&1
-}
+. tests/target/lib-target.sh
 f() { echo "$1" | sed -nE "s/.* $2=(0x)?([0-9a-f]+).*/\2/p"; }
 mkdir -p build/test-logs
 log=build/test-logs/target-ecu-selftest.txt
-run build/stm32f4-ecutest/squeal-monitor.elf "$log"
+run_qemu build/stm32f4-ecutest/squeal-monitor.elf "$log"
 rc=$?
 grep '^EVT selftest\|^EVT main_loop\|^EVT summary' "$log" | sed 's/^/  | /'
 st=$(grep -m1 '^EVT selftest ' "$log" || true)
@@ -46,7 +38,7 @@ check "the ECU still runs what it can (main loop to the end)" grep -q '^EVT summ
 
 # After a reset the previous run's stack use is measured.
 log2=build/test-logs/target-ecu-selftest-reset.txt
-run build/stm32f4-faulttest/squeal-monitor.elf "$log2"
+run_qemu build/stm32f4-faulttest/squeal-monitor.elf "$log2"
 st2=$(grep '^EVT selftest .*reset=4 ' "$log2" || true)
 echo "  | $st2"
 prev=$(f "$st2" stack_prev); res=$(f "$st2" stack_reserve)
@@ -59,7 +51,7 @@ check "after a reset: previous run's stack use measured (${prev:-?} of ${res:-?}
 # runs). The handler records vector 2 and resets; the next start reports
 # the fault as the reset cause and runs on the HSI with the clock fault.
 log3=build/test-logs/target-ecu-selftest-nmi.txt
-run build/stm32f4-nmitest/squeal-monitor.elf "$log3"
+run_qemu build/stm32f4-nmitest/squeal-monitor.elf "$log3"
 rc=$?
 grep '^EVT fault\|^EVT reset_reason\|^EVT summary' "$log3" | sed 's/^/  | /'
 check "NMI image ends by itself after the reset (exit 0)" [ "$rc" = 0 ]
@@ -70,5 +62,4 @@ check "and runs on the HSI (16 MHz) with the clock fallback reported" \
 	[ -n "$sum3" ] && echo "$sum3" | grep -q ' core_mhz=16' && \
 	[ $(( $(echo "$sum3" | sed -nE 's/.* faults=0x([0-9a-f]+).*/0x\1/p') & 1 )) = 1 ]
 
-echo "RESULT: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+finish

@@ -14,13 +14,8 @@ cd "$(dirname "$0")/../.."
 elf=build/stm32f4-stacktest/squeal-monitor.elf
 log=build/test-logs/target-ecu-stack-overflow.txt
 mkdir -p "$(dirname "$log")"
-pass=0; fail=0
-check() { # description, condition...
-	local d=$1; shift
-	if "$@"; then pass=$((pass + 1)); echo "PASS: $d"; else fail=$((fail + 1)); echo "FAIL: $d"; fi
-}
-timeout 60 qemu-system-arm -M netduinoplus2 -nographic -monitor none -serial none \
-	-semihosting-config enable=on,target=native -kernel "$elf" >"$log" 2>&1
+. tests/target/lib-target.sh
+run_qemu "$elf" "$log"
 rc=$?
 grep -v 'EVT wdg_kick' "$log" | sed 's/^/  | /' | head -40
 check "image ends by itself after the reset (exit 0, no lockup)" [ "$rc" = 0 ]
@@ -44,5 +39,4 @@ sf=$(echo "$st2" | sed -nE 's/.* faults=0x([0-9a-f]+).*/\1/p')
 check "self-test: stack fault bit (0x8) set (faults=0x${sf:-?})" [ -n "$sf" ] && [ $(( 16#$sf & 8 )) = 8 ]
 check "second boot runs its main loop to the end" grep -q '^EVT summary.* reset_reason=4 ' "$log"
 
-echo "RESULT: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+finish

@@ -109,15 +109,6 @@
 #define AFIO_MAPR_SWJ_CFG_MSK    (7U << 24) /* write-only, reads undefined */
 #define AFIO_MAPR_SWJ_CFG_FULL   (0U << 24) /* JTAG + SWD (reset state)    */
 
-int chip_clock_init(void);
-uint32_t chip_hse_measured_hz(void); /* the F103 has no TIM11: not measured */
-#define CHIP_HSE_NOT_MEASURED 0xFFFFFFFFU
-uint32_t chip_bor_level(void);       /* no BOR option on the F103 (fixed PDR) */
-#define CHIP_BOR_NONE 0xFFU
-uint32_t chip_core_hz(void);
-uint32_t chip_apb1_hz(void);
-void chip_can_pins_init(uint8_t bus);
-int chip_flash_erase_slot(uint32_t slot);
-int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
+#include "chip_api.h"
 
 #endif /* CHIP_H */

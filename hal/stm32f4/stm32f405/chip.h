@@ -177,24 +177,7 @@
 #define GPIO_SPEED_HIGH 2U
 #define GPIO_AF9_CAN1 9U
 
-/* Chip-specific parts of the HAL (clock.c, flash.c of each chip). */
-#include <stdbool.h>
-#include <stdint.h>
-int chip_clock_init(void);            /* SQ_OK or SQ_EAGAIN (fell back to HSI) */
-/* HSE frequency measured against the HSI at start-up: Hz, 0 (no crystal
- * started), CHIP_HSE_NOT_MEASURED (the chip cannot measure it). */
-uint32_t chip_hse_measured_hz(void);
-#define CHIP_HSE_NOT_MEASURED 0xFFFFFFFFU
-/* Brown-out reset level from the option bytes: 3 (2.7 V, needed for 5 wait
- * states and x32 flash programming), 2, 1, 0 (off), CHIP_BOR_NONE. */
-uint32_t chip_bor_level(void);
-#define CHIP_BOR_NONE 0xFFU
-uint32_t chip_core_hz(void);
-uint32_t chip_apb1_hz(void);
-/* GPIO and RCC clock of bus 0 (CAN1) or 1 (CAN2, which also needs CAN1's
- * clock: its filters live in CAN1). can_pins.c. */
-void chip_can_pins_init(uint8_t bus);
-int chip_flash_erase_slot(uint32_t slot);
-int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
+/* Chip-specific parts of the HAL (clock.c, can_pins.c, flash.c). */
+#include "chip_api.h"
 
 #endif /* CHIP_H */
