@@ -160,3 +160,7 @@ TEST_PROGS += tests/target/run-ecu-stack-overflow.sh tests/target/run-ecu-selfte
 # ... and one that takes the clock security system's NMI (the crystal stops)
 $(eval $(call arm_config,stm32f4-nmitest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_NMI,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
 tests/target/run-ecu-selftest.sh: build/stm32f4-nmitest/squeal-monitor.elf
+# ... and one with a programming error (hal_contract_failed: file and line recorded, reset)
+$(eval $(call arm_config,stm32f4-contracttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_CONTRACT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+tests/target/run-ecu-contract.sh: build/stm32f4-contracttest/squeal-monitor.elf
+TEST_PROGS += tests/target/run-ecu-contract.sh

@@ -168,6 +168,11 @@ void stm32_test_event(const char *what, uint32_t value)
 			if (hal_reset_reason() != HAL_RESET_FAULT) {
 #if defined(SQ_TARGET_TEST_STACK_OVERFLOW)
 				stack_overflow();
+#elif defined(SQ_TARGET_TEST_CONTRACT)
+				/* a programming error: a bus index hal.h does not have */
+				hal_can_frame_t f = { 0 };
+
+				(void)hal_can_send((uint8_t)HAL_CAN_BUSES, &f);
 #elif defined(SQ_TARGET_TEST_NMI)
 				/* what the clock security system does when the
 				 * crystal stops: the NMI (QEMU has no CSS) */

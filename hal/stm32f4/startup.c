@@ -253,7 +253,7 @@ void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return, uint32_t msp)
 	}
 	/* The frame pointer may be bad (stack overflow): check it points into
 	 * RAM before reading the stacked PC and LR. */
-	if ((uintptr_t)frame >= (uintptr_t)&_sstack && (uintptr_t)frame < (uintptr_t)&_estack + 0x1000UL &&
+	if ((uintptr_t)frame >= (uintptr_t)&_sstack && (uintptr_t)frame + 32U <= (uintptr_t)&_estack &&
 	    ((uintptr_t)frame & 3U) == 0U) {
 		fault_noinit.pc = frame[6];
 		fault_noinit.lr = frame[5];
