@@ -97,7 +97,8 @@ int monitor_init(monitor_t *me, const calib_t *cal, bool calib_invalid,
 
 int monitor_set_selftest(monitor_t *me, const monitor_selftest_t *st)
 {
-	HAL_REQUIRE((me != NULL) && (st != NULL));
+	HAL_REQUIRE(me != NULL);
+	HAL_REQUIRE(st != NULL);
 	if ((st->reset_cause > MSG_RESET_CAUSE_MAX) ||
 	    ((st->bor_level > 3U) && (st->bor_level != MSG_BOR_LEVEL_NA)) ||
 	    (st->loopback[0] > MSG_LOOPBACK_MAX) || (st->loopback[1] > MSG_LOOPBACK_MAX) ||

@@ -21,8 +21,6 @@
 #include "stm32_selftest.h"
 #include "stm32_time.h"
 
-extern uint32_t _sstack, _estack;
-
 static volatile uint32_t platform_faults;
 static volatile bool stop_requested; /* never set on the ECU */
 
@@ -71,7 +69,7 @@ void stm32_board_init(void)
 		semihost_write0("\n");
 	}
 #endif
-	(void)stm32_selftest_run((uint32_t)((uintptr_t)&_estack - (uintptr_t)&_sstack));
+	(void)stm32_selftest_run(stm32_stack_reserve_bytes());
 	/* Failure is recorded as HAL_FAULT_CAN_INIT; the firmware runs on
 	 * and reports it (SquealDiag cannot go out then, but the ECU still
 	 * kicks its watchdog and keeps its state). */

@@ -366,7 +366,6 @@ int bxcan_selftest_loopback(uint8_t bus)
 	uintptr_t base;
 	hal_can_frame_t got;
 	uint32_t btr;
-	uint32_t i;
 	int rc;
 
 	if (st == NULL) {
@@ -387,6 +386,8 @@ int bxcan_selftest_loopback(uint8_t bus)
 		rc = can_wait(base, CAN_RF0R, CAN_RF0R_FMP0_MSK, 1U, LOOPBACK_TIMEOUT_US);
 	}
 	if (rc == SQ_OK) {
+		uint32_t i;
+
 		got.timestamp_us = 0U;
 		fifo0_read(base, &got);
 		if (got.id != probe.id || got.flags != probe.flags || got.dlc != probe.dlc) {

@@ -53,7 +53,6 @@ static uint32_t hse_measure(void)
 	uint32_t prev;
 	uint32_t now;
 	uint32_t ticks = 0U;
-	uint32_t i;
 	uint64_t hz;
 
 	RCC_APB2ENR |= RCC_APB2ENR_TIM11EN;
@@ -70,6 +69,8 @@ static uint32_t hse_measure(void)
 	if (capture_wait(&prev) != SQ_OK) {
 		ticks = 0U;
 	} else {
+		uint32_t i;
+
 		for (i = 0; i < MEAS_CAPTURES; i++) {
 			if (capture_wait(&now) != SQ_OK) {
 				ticks = 0U;

@@ -116,6 +116,11 @@ uint32_t stm32_stack_hwm_prev(void)
 	return stack_hwm_prev;
 }
 
+uint32_t stm32_stack_reserve_bytes(void)
+{
+	return (uint32_t)((uintptr_t)&_estack - (uintptr_t)&_sstack);
+}
+
 void Reset_Handler(void)
 {
 	uint32_t *src;
@@ -198,7 +203,7 @@ static uint32_t next_fault_count(void)
 	return 1U;
 }
 
-_Noreturn void stm32_fault_reset(void)
+void stm32_fault_reset(void)
 {
 	cm_dsb();
 #if defined(SQ_TARGET_TEST) && !defined(SQ_TARGET_TEST_FAULT)
@@ -216,7 +221,7 @@ _Noreturn void stm32_fault_reset(void)
  * address as PC) and resets the core the same way; the next boot reports
  * HAL_RESET_FAULT. Were the reset request lost, the IWDG would still end it:
  * interrupts stay masked, nothing kicks it. */
-_Noreturn void hal_contract_failed(const char *file, uint32_t line)
+void hal_contract_failed(const char *file, uint32_t line)
 {
 	cm_irq_disable();
 	fault_noinit.count = next_fault_count();

@@ -37,8 +37,10 @@ const stm32_fault_record_t *stm32_last_fault(void);
  * (STM32_STACK_HWM_UNKNOWN after power-on: nothing was painted before). */
 uint32_t stm32_stack_hwm_prev(void);
 #define STM32_STACK_HWM_UNKNOWN 0xFFFFFFFFUL
+/* Size of the main stack reserve (linker script). */
+uint32_t stm32_stack_reserve_bytes(void);
 
 /* Record a recorded-fault reset (SYSRESETREQ); in test builds print it. */
-_Noreturn void stm32_fault_reset(void);
+void stm32_fault_reset(void) __attribute__((noreturn));
 
 #endif /* STM32_FAULT_H */

@@ -10,18 +10,17 @@
 
 #include "hal.h"
 
-typedef enum {
-	STM32_LOOPBACK_PASS = 0,        /* frame came back unchanged          */
-	STM32_LOOPBACK_FAIL = 1,        /* controller answered, frame did not */
-	STM32_LOOPBACK_UNAVAILABLE = 2, /* no controller / no clock (QEMU)    */
-	STM32_LOOPBACK_NO_BUS = 3       /* the chip has no such controller    */
-} stm32_loopback_t;
+/* Loopback result per bus (stm32_selftest_t.loopback; SquealDiag values) */
+#define STM32_LOOPBACK_PASS        0U /* frame came back unchanged          */
+#define STM32_LOOPBACK_FAIL        1U /* controller answered, frame did not */
+#define STM32_LOOPBACK_UNAVAILABLE 2U /* no controller / no clock (QEMU)    */
+#define STM32_LOOPBACK_NO_BUS      3U /* the chip has no such controller    */
 
 typedef struct {
 	uint32_t hse_hz;          /* measured crystal, 0 none, 0xFFFFFFFF n/a */
 	uint32_t reset_reason;    /* hal_reset_reason_t                        */
 	uint32_t bor_level;       /* 3..0, 0xFF: the chip has none             */
-	uint32_t loopback[HAL_CAN_BUSES]; /* stm32_loopback_t per bus          */
+	uint32_t loopback[HAL_CAN_BUSES]; /* STM32_LOOPBACK_* per bus          */
 	uint32_t stack_hwm_prev;  /* bytes, 0xFFFFFFFF unknown (power-on)      */
 	uint32_t faults;          /* STM32_SELFTEST_* bits that failed         */
 } stm32_selftest_t;
