@@ -75,8 +75,9 @@ static const char *const state_names[16] = {
 	"9", "10", "11", "12", "13", "14", "fault"
 };
 static const char *const level_names[4] = { "none", "advisory", "warning", "critical" };
-static const char *const page_names[4] = {
-	"uptime_and_bus_off", "task_time_and_overruns", "e2e_errors", "tx_and_frame_errors"
+static const char *const page_names[5] = {
+	"uptime_and_bus_off", "task_time_and_overruns", "e2e_errors", "tx_and_frame_errors",
+	"self_test"
 };
 
 static void put(decoder_t *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -333,7 +334,7 @@ static void decode_frame(decoder_t *d, const candump_frame_t *f)
 					put(d, " warning=%" PRId32, raw);
 				}
 			} else if (strcmp(s->name, "SquealDiag_Page") == 0) {
-				if ((raw >= 0) && (raw < 4)) {
+				if ((raw >= 0) && (raw < 5)) {
 					put(d, " page=%s", page_names[raw]);
 				} else {
 					put(d, " page=%" PRId32, raw);

@@ -25,9 +25,9 @@ LDS_stm32f103 := linker/stm32f103xb.ld
 # chip.h comes from the chip directory (never next to the shared files, where
 # #include "..." would find it first); the F103 port reuses the generic parts.
 HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
-HAL_INC_stm32f103 := -Ihal/stm32f103 -Ihal/stm32f4
-HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c semihost.c libc_min.c
-HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c flash.c)
+HAL_INC_stm32f103 := -Ihal/stm32f103/stm32f103xb -Ihal/stm32f4
+HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c selftest.c semihost.c libc_min.c
+HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c can_pins.c flash.c)
 HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c))
 
 # The firmware's entry point; a stand-in until firmware/app/ has its C files.
@@ -119,14 +119,14 @@ build/host-fixed/tv-digest: build/host-fixed/app/tests/target/tv_run.o build/hos
 	$(CC) -o $@ $^ -lm
 
 # bxCAN bit timing: pure arithmetic, tested on the host (cmocka)
-build/host/test_bxcan_timing: tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/hal_stm32.h
+build/host/test_bxcan_timing: tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/bxcan.h
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -o $@ tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
 
 # Two-slot calibration storage over a simulated NOR flash (power cut at every
 # byte); the slot geometry comes from the link, as on the target. No PIE:
 # the slot size is an absolute linker symbol.
-build/test/test_calib_flash: tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/hal_stm32.h
+build/test/test_calib_flash: tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -o $@ \
 		tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \
@@ -152,3 +152,15 @@ tests/target/bench-target.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/s
 BENCH_PROGS += tests/target/bench-target.sh
 # ... and one that divides by zero once it runs, to test the fault path
 $(eval $(call arm_config,stm32f4-faulttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+# ... one whose stack overflows on purpose (issue 14: fault handler on a broken stack)
+$(eval $(call arm_config,stm32f4-stacktest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_STACK_OVERFLOW,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+tests/target/run-ecu-stack-overflow.sh: build/stm32f4-stacktest/squeal-monitor.elf
+tests/target/run-ecu-selftest.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
+TEST_PROGS += tests/target/run-ecu-stack-overflow.sh tests/target/run-ecu-selftest.sh
+# ... and one that takes the clock security system's NMI (the crystal stops)
+$(eval $(call arm_config,stm32f4-nmitest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_NMI,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+tests/target/run-ecu-selftest.sh: build/stm32f4-nmitest/squeal-monitor.elf
+# ... and one with a programming error (hal_contract_failed: file and line recorded, reset)
+$(eval $(call arm_config,stm32f4-contracttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_CONTRACT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+tests/target/run-ecu-contract.sh: build/stm32f4-contracttest/squeal-monitor.elf
+TEST_PROGS += tests/target/run-ecu-contract.sh

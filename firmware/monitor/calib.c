@@ -173,7 +173,24 @@ static bool ids_distinct(const calib_t *cal)
 	return true;
 }
 
-int calib_validate(const calib_t *cal)
+/* The CiA 301 bit rates, which the bxCAN times exactly on every clock the
+ * ECU runs (APB1 42 MHz F4, 36 MHz F103, HSI fallback 16 / 8 MHz); others
+ * in range (800 kbit/s: 52.5 clocks per bit at 42 MHz) would be refused by
+ * hal_can_set_bitrate() at run time, so they are refused here first. */
+static bool bitrate_exact(uint16_t kbps)
+{
+	static const uint16_t exact[] = { 10U, 20U, 50U, 100U, 125U, 250U, 500U, 1000U };
+	uint32_t i;
+
+	for (i = 0U; i < (sizeof(exact) / sizeof(exact[0])); i++) {
+		if (exact[i] == kbps) {
+			return true;
+		}
+	}
+	return false;
+}
+
+static calib_error_t validate_why(const calib_t *cal)
 {
 	uint32_t i;
 
@@ -182,13 +199,24 @@ int calib_validate(const calib_t *cal)
 		const int64_t v = field_get(cal, &fields[i]);
 
 		if ((v < fields[i].min) || (v > fields[i].max)) {
-			return SQ_EINVAL;
+			return CALIB_ERR_RANGE;
 		}
 	}
 	if (((int64_t)cal->mu_inf_q30 + cal->delta_mu_q30 < 0) || !ids_distinct(cal)) {
+		return CALIB_ERR_RANGE;
+	}
+	if (!bitrate_exact(cal->bitrate_kbps)) {
+		return CALIB_ERR_BITRATE;
+	}
+	return CALIB_OK;
+}
+
+int calib_validate(const calib_t *cal)
+{
+	if (cal == NULL) {
 		return SQ_EINVAL;
 	}
-	return SQ_OK;
+	return (validate_why(cal) == CALIB_OK) ? SQ_OK : SQ_EINVAL;
 }
 
 int calib_field_range(uint32_t offset, int64_t *min, int64_t *max)
@@ -277,9 +305,7 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 			field_set(&tmp, &fields[i], get_le(&buf[pos], fields[i].size));
 			pos += fields[i].size;
 		}
-		if (calib_validate(&tmp) != SQ_OK) {
-			err = CALIB_ERR_RANGE;
-		}
+		err = validate_why(&tmp);
 	}
 	if (reason != NULL) {
 		*reason = err;
@@ -341,6 +367,8 @@ const char *calib_error_name(calib_error_t err)
 		return "CRC mismatch";
 	case CALIB_ERR_RANGE:
 		return "field out of range";
+	case CALIB_ERR_BITRATE:
+		return "bit rate not timed exactly by the CAN clock (10, 20, 50, 100, 125, 250, 500, 1000 kbit/s)";
 	default:
 		return "?";
 	}

@@ -90,7 +90,10 @@ typedef enum {
 	CALIB_ERR_MAGIC,
 	CALIB_ERR_VERSION,
 	CALIB_ERR_CRC,
-	CALIB_ERR_RANGE    /* a field outside its documented range         */
+	CALIB_ERR_RANGE,   /* a field outside its documented range         */
+	CALIB_ERR_BITRATE  /* bit rate in range but not one every ECU clock
+			    * times exactly (10, 20, 50, 100, 125, 250, 500,
+			    * 1000 kbit/s; 800 is not exact at 42 MHz)     */
 } calib_error_t;
 
 /* The factory defaults (model.md section 8, the DBC's IDs and periods). */

@@ -87,8 +87,25 @@ int monitor_init(monitor_t *me, const calib_t *cal, bool calib_invalid,
 	me->next_status_us = now_us;
 	me->next_detail_us = now_us;
 	me->next_diag_us = now_us;
+	me->selftest = (monitor_selftest_t){ (uint8_t)MSG_HSE_FREQ_NA, (uint8_t)MSG_RESET_CAUSE_MAX,
+					     (uint8_t)MSG_BOR_LEVEL_NA, { 2U, 2U },
+					     (uint16_t)MSG_STACK_HWM_UNKNOWN, false };
 	me->started = true;
 	return rc;
+}
+
+int monitor_set_selftest(monitor_t *me, const monitor_selftest_t *st)
+{
+	HAL_REQUIRE(me != NULL);
+	HAL_REQUIRE(st != NULL);
+	if ((st->reset_cause > MSG_RESET_CAUSE_MAX) ||
+	    ((st->bor_level > 3U) && (st->bor_level != MSG_BOR_LEVEL_NA)) ||
+	    (st->loopback[0] > MSG_LOOPBACK_MAX) || (st->loopback[1] > MSG_LOOPBACK_MAX) ||
+	    (st->stack_high_water_b > MSG_STACK_HWM_UNKNOWN)) {
+		return SQ_ERANGE;
+	}
+	me->selftest = *st;
+	return SQ_OK;
 }
 
 /* ---- inputs --------------------------------------------------------------- */
@@ -625,6 +642,9 @@ uint16_t monitor_fault_bits(const monitor_t *me)
 	if (me->count.tx_overflow != 0U) {
 		b |= MSG_FAULT_TX_OVERFLOW;
 	}
+	if (me->selftest.failed) {
+		b |= MSG_FAULT_SELF_TEST;
+	}
 	return (uint16_t)b;
 }
 
@@ -661,11 +681,19 @@ static void send_diag(monitor_t *me)
 		m.e2e_error_count_speed = e2e_errors(&me->speed);
 		m.e2e_error_count_force = e2e_errors(&me->force);
 		break;
-	default:
+	case MSG_DIAG_PAGE_FRAMES:
 		m.tx_overflow_count = sat_u16(me->count.tx_overflow);
 		m.rx_bad_frame_count = sat_u16(me->speed.count.bad_dlc +
 					       me->force.count.bad_dlc +
 					       me->count.rtr_or_ext);
+		break;
+	default:
+		m.hse_freq_100khz = me->selftest.hse_freq_100khz;
+		m.reset_cause = me->selftest.reset_cause;
+		m.bor_level = me->selftest.bor_level;
+		m.loopback_can1 = me->selftest.loopback[0];
+		m.loopback_can2 = me->selftest.loopback[1];
+		m.stack_high_water_b = me->selftest.stack_high_water_b;
 		break;
 	}
 	me->diag_page = (uint8_t)((me->diag_page + 1U) % MSG_DIAG_PAGE_COUNT);

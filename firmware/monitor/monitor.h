@@ -90,6 +90,22 @@ typedef struct {
 
 #define MONITOR_TX_QUEUE_LEN 8U
 
+/*
+ * The platform's bring-up self-test of this start, reported on SquealDiag
+ * page 4 in the DBC's raw units (HseFreq_MHz in 0.1 MHz, 255 not measured;
+ * ResetCause 0..6; BorLevel 0..3, 7 none; LoopbackCan1/2 0 pass, 1 fail,
+ * 2 unavailable, 3 no such bus; StackHighWater_B, 16383 unknown). failed
+ * sets Fault_SelfTest.
+ */
+typedef struct {
+	uint8_t hse_freq_100khz;
+	uint8_t reset_cause;
+	uint8_t bor_level;
+	uint8_t loopback[2];
+	uint16_t stack_high_water_b;
+	bool failed;
+} monitor_selftest_t;
+
 typedef struct {
 	calib_t cal;
 	squeal_params_t params;
@@ -118,6 +134,7 @@ typedef struct {
 	uint64_t next_diag_us;
 	bool status_now;             /* state or level changed: send at once   */
 	uint8_t diag_page;
+	monitor_selftest_t selftest;  /* page 4; "not measured" until set     */
 	hal_can_frame_t txq[MONITOR_TX_QUEUE_LEN];
 	uint8_t txq_head;
 	uint8_t txq_count;
@@ -164,6 +181,10 @@ void monitor_report_task_time(monitor_t *me, uint32_t task_us);
  */
 int monitor_peek_tx(const monitor_t *me, hal_can_frame_t *frame);
 void monitor_tx_done(monitor_t *me, int hal_rc);
+
+/* The platform's self-test figures (after monitor_init). SQ_OK, or
+ * SQ_ERANGE (a value outside its DBC range: nothing changed). */
+int monitor_set_selftest(monitor_t *me, const monitor_selftest_t *st);
 
 /* SquealDiag's fault bits (MSG_FAULT_*) as they are now. */
 uint16_t monitor_fault_bits(const monitor_t *me);

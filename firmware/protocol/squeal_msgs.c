@@ -28,11 +28,12 @@ enum {
 	SIG_DT_TRIGGER, SIG_DT_VSB,
 	/* SquealDiag */
 	SIG_DG_CRC, SIG_DG_COUNTER, SIG_DG_PAGE,
-	SIG_DG_FAULT0, /* 11 fault bits follow in MSG_FAULT_* order */
-	SIG_DG_UPTIME = SIG_DG_FAULT0 + 11, SIG_DG_BUS_OFF,
+	SIG_DG_FAULT0, /* 12 fault bits follow in MSG_FAULT_* order */
+	SIG_DG_UPTIME = SIG_DG_FAULT0 + 12, SIG_DG_BUS_OFF,
 	SIG_DG_TASK_TIME, SIG_DG_RX_OVERRUN,
 	SIG_DG_E2E_SPEED, SIG_DG_E2E_FORCE,
 	SIG_DG_TX_OVERFLOW, SIG_DG_RX_BAD_FRAME,
+	SIG_DG_HSE, SIG_DG_RESET, SIG_DG_BOR, SIG_DG_LB1, SIG_DG_LB2, SIG_DG_STACK,
 	/* SquealDetail2 */
 	SIG_D2_CRC, SIG_D2_COUNTER, SIG_D2_FORCE, SIG_D2_HOPF_FORCE,
 	SIG_D2_LC_AMPLITUDE,
@@ -68,6 +69,15 @@ _Static_assert(MSG_FAULT_ALL == (1U << (SIG_DG_UPTIME - SIG_DG_FAULT0)) - 1U,
 #define MUXED(id, name, unit, start, len, page)                            \
 	{ (id), name, unit, (start), (len), MSG_SIG_MUXED, (page), 1, 1, 0, 0, \
 	  (int32_t)((1UL << (len)) - 1UL), 0 }
+/* multiplexed unsigned value with a scale and a range below all ones (the
+ * values above it are "not available"/"unknown", documented in the DBC) */
+#define MUXED_R(id, name, unit, start, len, page, num, den, max)               \
+	{ (id), name, unit, (start), (len), MSG_SIG_MUXED, (page), (num), (den), 0, 0, \
+	  (max), 0 }
+/* the same with a "not available" raw value above the range */
+#define MUXED_NA(id, name, unit, start, len, page, num, den, max, na)           \
+	{ (id), name, unit, (start), (len), MSG_SIG_MUXED | MSG_SIG_HAS_NA, (page), (num), \
+	  (den), 0, 0, (max), (na) }
 #define FAULT(name, bit) UNS(MSG_SQUEAL_DIAG_ID, name, "", 16U + (bit), 1U, 1, 1, 1)
 
 const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT] = {
@@ -113,6 +123,7 @@ const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT] = {
 	FAULT("Fault_ClockFallback", 8U),
 	FAULT("Fault_CanInit", 9U),
 	FAULT("Fault_TxOverflow", 10U),
+	FAULT("Fault_SelfTest", 11U),
 	MUXED(MSG_SQUEAL_DIAG_ID, "Uptime_s", "s", 32U, 24U, MSG_DIAG_PAGE_UPTIME),
 	MUXED(MSG_SQUEAL_DIAG_ID, "BusOffCount", "", 56U, 8U, MSG_DIAG_PAGE_UPTIME),
 	MUXED(MSG_SQUEAL_DIAG_ID, "WorstTaskTime_us", "us", 32U, 16U,
@@ -127,6 +138,18 @@ const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT] = {
 	      MSG_DIAG_PAGE_FRAMES),
 	MUXED(MSG_SQUEAL_DIAG_ID, "RxBadFrameCount", "", 48U, 16U,
 	      MSG_DIAG_PAGE_FRAMES),
+	MUXED_NA(MSG_SQUEAL_DIAG_ID, "HseFreq_MHz", "MHz", 32U, 8U, MSG_DIAG_PAGE_SELFTEST, 1, 10,
+		 (int32_t)MSG_HSE_FREQ_MAX, (int32_t)MSG_HSE_FREQ_NA),
+	MUXED_R(MSG_SQUEAL_DIAG_ID, "ResetCause", "", 40U, 3U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
+		(int32_t)MSG_RESET_CAUSE_MAX),
+	MUXED_NA(MSG_SQUEAL_DIAG_ID, "BorLevel", "", 43U, 3U, MSG_DIAG_PAGE_SELFTEST, 1, 1, 3,
+		 (int32_t)MSG_BOR_LEVEL_NA),
+	MUXED_R(MSG_SQUEAL_DIAG_ID, "LoopbackCan1", "", 46U, 2U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
+		(int32_t)MSG_LOOPBACK_MAX),
+	MUXED_R(MSG_SQUEAL_DIAG_ID, "LoopbackCan2", "", 48U, 2U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
+		(int32_t)MSG_LOOPBACK_MAX),
+	MUXED_NA(MSG_SQUEAL_DIAG_ID, "StackHighWater_B", "B", 50U, 14U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
+		 (int32_t)MSG_STACK_HWM_UNKNOWN - 1, (int32_t)MSG_STACK_HWM_UNKNOWN),
 
 	E2E_SIGS(MSG_SQUEAL_DETAIL2_ID, "SquealDetail2"),
 	UNS_NA(MSG_SQUEAL_DETAIL2_ID, "Force_N", "N", 16U, 16U, 1, 2,
@@ -475,6 +498,12 @@ int msg_squeal_diag_pack(const msg_squeal_diag_t *msg, uint8_t data[8],
 	raw[DG(SIG_DG_E2E_FORCE)] = msg->e2e_error_count_force;
 	raw[DG(SIG_DG_TX_OVERFLOW)] = msg->tx_overflow_count;
 	raw[DG(SIG_DG_RX_BAD_FRAME)] = msg->rx_bad_frame_count;
+	raw[DG(SIG_DG_HSE)] = msg->hse_freq_100khz;
+	raw[DG(SIG_DG_RESET)] = msg->reset_cause;
+	raw[DG(SIG_DG_BOR)] = msg->bor_level;
+	raw[DG(SIG_DG_LB1)] = msg->loopback_can1;
+	raw[DG(SIG_DG_LB2)] = msg->loopback_can2;
+	raw[DG(SIG_DG_STACK)] = msg->stack_high_water_b;
 	return pack_sigs(SIG_DG_CRC, N_DG, raw, msg->page, MSG_SQUEAL_DIAG_DLC,
 			 data, dlc);
 }
@@ -516,9 +545,17 @@ int msg_squeal_diag_unpack(const uint8_t *data, uint8_t dlc,
 		out.e2e_error_count_speed = (uint16_t)raw[DG(SIG_DG_E2E_SPEED)];
 		out.e2e_error_count_force = (uint16_t)raw[DG(SIG_DG_E2E_FORCE)];
 		break;
-	default:
+	case MSG_DIAG_PAGE_FRAMES:
 		out.tx_overflow_count = (uint16_t)raw[DG(SIG_DG_TX_OVERFLOW)];
 		out.rx_bad_frame_count = (uint16_t)raw[DG(SIG_DG_RX_BAD_FRAME)];
+		break;
+	default:
+		out.hse_freq_100khz = (uint8_t)raw[DG(SIG_DG_HSE)];
+		out.reset_cause = (uint8_t)raw[DG(SIG_DG_RESET)];
+		out.bor_level = (uint8_t)raw[DG(SIG_DG_BOR)];
+		out.loopback_can1 = (uint8_t)raw[DG(SIG_DG_LB1)];
+		out.loopback_can2 = (uint8_t)raw[DG(SIG_DG_LB2)];
+		out.stack_high_water_b = (uint16_t)raw[DG(SIG_DG_STACK)];
 		break;
 	}
 	*msg = out;

@@ -148,7 +148,8 @@ typedef struct {
 #define MSG_DIAG_PAGE_TASK          1U /* WorstTaskTime_us, RxOverrunCount  */
 #define MSG_DIAG_PAGE_E2E           2U /* E2eErrorCountSpeed/Force          */
 #define MSG_DIAG_PAGE_FRAMES        3U /* TxOverflowCount, RxBadFrameCount  */
-#define MSG_DIAG_PAGE_COUNT         4U
+#define MSG_DIAG_PAGE_SELFTEST      4U /* the bring-up self-test           */
+#define MSG_DIAG_PAGE_COUNT         5U
 /* fault_bits: bit i is the 1-bit signal at start bit 16 + i */
 #define MSG_FAULT_SPEED_STALE        (1U << 0)  /* Fault_SpeedStale       */
 #define MSG_FAULT_FORCE_STALE        (1U << 1)  /* Fault_ForceStale       */
@@ -161,11 +162,19 @@ typedef struct {
 #define MSG_FAULT_CLOCK_FALLBACK     (1U << 8)  /* Fault_ClockFallback    */
 #define MSG_FAULT_CAN_INIT           (1U << 9)  /* Fault_CanInit          */
 #define MSG_FAULT_TX_OVERFLOW        (1U << 10) /* Fault_TxOverflow       */
-#define MSG_FAULT_ALL                0x07FFU
+#define MSG_FAULT_SELF_TEST          (1U << 11) /* Fault_SelfTest         */
+#define MSG_FAULT_ALL                0x0FFFU
 /* counters saturate at their all-ones value (no "not available") */
 #define MSG_UPTIME_S_MAX             0xFFFFFFU
 #define MSG_BUS_OFF_COUNT_MAX        0xFFU
 #define MSG_DIAG_COUNT16_MAX         0xFFFFU
+/* page 4 */
+#define MSG_HSE_FREQ_NA              255U   /* HseFreq_MHz: not measured  */
+#define MSG_HSE_FREQ_MAX             254U   /* 25.4 MHz                   */
+#define MSG_RESET_CAUSE_MAX          6U
+#define MSG_BOR_LEVEL_NA             7U     /* no BOR on this platform    */
+#define MSG_LOOPBACK_MAX             3U
+#define MSG_STACK_HWM_UNKNOWN        16383U /* StackHighWater_B          */
 
 typedef struct {
 	uint8_t crc;
@@ -184,6 +193,13 @@ typedef struct {
 	/* page 3 */
 	uint16_t tx_overflow_count;    /* TxOverflowCount                       */
 	uint16_t rx_bad_frame_count;   /* RxBadFrameCount                       */
+	/* page 4 */
+	uint8_t hse_freq_100khz;       /* HseFreq_MHz raw (0.1 MHz), 255 n/a    */
+	uint8_t reset_cause;           /* ResetCause, hal_reset_reason_t        */
+	uint8_t bor_level;             /* BorLevel, 7 n/a                       */
+	uint8_t loopback_can1;         /* LoopbackCan1                          */
+	uint8_t loopback_can2;         /* LoopbackCan2                          */
+	uint16_t stack_high_water_b;   /* StackHighWater_B, 16383 unknown       */
 } msg_squeal_diag_t;
 
 /*
@@ -263,7 +279,7 @@ typedef struct {
 } msg_desc_t;
 
 #define MSG_COUNT     6U
-#define MSG_SIG_COUNT 45U
+#define MSG_SIG_COUNT 52U
 
 extern const msg_desc_t msg_table[MSG_COUNT];
 extern const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT];

@@ -5,15 +5,18 @@
  * to PB8 RX / PB9 TX, like the F4 board), and calibration flash: 1 KiB page
  * erase and half-word programming (RM0008 / PM0075), every wait bounded.
  */
-#include "chip.h"
-#include "hal_stm32.h"
+#include <stddef.h>
 
-#define HSE_TIMEOUT_US    100000UL
-#define PLL_TIMEOUT_US      5000UL
-#define SWITCH_TIMEOUT_US   5000UL
-#define ERASE_TIMEOUT_US   100000UL /* page erase max 40 ms */
-#define PROGRAM_TIMEOUT_US   1000UL /* half-word max 70 us  */
-#define IDLE_TIMEOUT_US     10000UL
+#include "chip.h"
+#include "stm32_time.h"
+#include "sq_status.h"
+
+#define HSE_TIMEOUT_US    100000U
+#define PLL_TIMEOUT_US      5000U
+#define SWITCH_TIMEOUT_US   5000U
+#define ERASE_TIMEOUT_US   100000U /* page erase max 40 ms */
+#define PROGRAM_TIMEOUT_US   1000U /* half-word max 70 us  */
+#define IDLE_TIMEOUT_US     10000U
 
 extern const uint8_t __calib_start[];
 extern const uint8_t __calib_slot_size[];
@@ -66,6 +69,16 @@ int chip_clock_init(void)
 	return SQ_OK;
 }
 
+uint32_t chip_hse_measured_hz(void)
+{
+	return CHIP_HSE_NOT_MEASURED;
+}
+
+uint32_t chip_bor_level(void)
+{
+	return CHIP_BOR_NONE;
+}
+
 uint32_t chip_core_hz(void)
 {
 	return core_hz;
@@ -76,19 +89,27 @@ uint32_t chip_apb1_hz(void)
 	return apb1_hz;
 }
 
-void chip_can_pins_init(void)
+void chip_can_pins_init(uint8_t bus)
 {
 	uint32_t v;
+
+	if (bus != 0U) {
+		return; /* CAN1 only */
+	}
 
 	RCC_APB2ENR |= RCC_APB2ENR_AFIOEN | RCC_APB2ENR_IOPBEN;
 	RCC_APB1ENR |= RCC_APB1ENR_CAN1EN;
 	(void)RCC_APB1ENR;
-	AFIO_MAPR = (AFIO_MAPR & ~AFIO_MAPR_CAN_REMAP_MSK) | AFIO_MAPR_CAN_REMAP_PB89;
+	/* SWJ_CFG (26:24) is write-only and reads back undefined: a plain
+	 * read-modify-write could switch SWD off. Mask it and write 000
+	 * (full SWJ, the reset state). */
+	AFIO_MAPR = (AFIO_MAPR & ~(AFIO_MAPR_CAN_REMAP_MSK | AFIO_MAPR_SWJ_CFG_MSK)) |
+		    AFIO_MAPR_CAN_REMAP_PB89 | AFIO_MAPR_SWJ_CFG_FULL;
 	/* PB8: input with pull-up (CNF 10, MODE 00); PB9: AF push-pull 50 MHz
 	 * (CNF 10, MODE 11) */
-	v = GPIO_CRH(GPIOB_BASE) & ~0xFFUL;
-	GPIO_CRH(GPIOB_BASE) = v | 0x8UL | (0xBUL << 4);
-	GPIO_ODR(GPIOB_BASE) |= 1UL << 8;
+	v = GPIO_CRH(GPIOB_BASE) & ~0xFFU;
+	GPIO_CRH(GPIOB_BASE) = v | 0x8U | (0xBU << 4);
+	GPIO_ODR(GPIOB_BASE) |= 1U << 8;
 }
 
 static int flash_unlock(void)
@@ -154,7 +175,7 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 	}
 	FLASH_CR = FLASH_CR_PG;
 	for (off = 0; off < len && rc == SQ_OK; off += 2U) {
-		uint16_t hw = (uint16_t)(data[off] | (off + 1U < len ? (uint32_t)data[off + 1U] << 8 : 0xFF00UL));
+		uint16_t hw = (uint16_t)(data[off] | (off + 1U < len ? (uint32_t)data[off + 1U] << 8 : 0xFF00U));
 
 		*(volatile uint16_t *)(uintptr_t)(addr + off) = hw;
 		rc = flash_wait_done(PROGRAM_TIMEOUT_US);

@@ -1,45 +1,54 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * bxCAN1 driver (RM0090 section 32): the hal_can_* functions of hal.h.
+ * bxCAN driver (RM0090 section 32; RM0008 section 24): the hal_can_* calls
+ * of hal.h for CAN1 and, on chips that have it, CAN2 (bus 0 and bus 1).
  *
  *   RX: FIFO 0 interrupt -> lock-free single-producer (ISR) / single-
- *       consumer (hal_can_receive) ring; a full ring or a hardware FIFO
- *       overrun (FOVR0) counts in rx_overruns.
+ *       consumer (hal_can_receive) ring per bus; a full ring or a hardware
+ *       FIFO overrun (FOVR0) counts in rx_overruns.
  *   TX: hal_can_send() queues in software; the three mailboxes are fed
  *       from the queue in order (TXFP: chronological transmit order) by the
  *       sender and by the mailbox-empty interrupt.
- *   Errors: status-change interrupt counts error frames (LEC), bus-off
- *       events; the controller leaves bus-off by itself (ABOM: after 128 x
- *       11 recessive bits), and TEC/REC are read live.
+ *   Errors: the status-change interrupt counts error frames (LEC) and
+ *       bus-off events; the controller leaves bus-off by itself (ABOM), and
+ *       TEC/REC are read live.
+ *   Filters: 32-bit mask mode, one bank per hal_can_filter_t. The banks live
+ *       in CAN1 (the filter master); CAN1 owns banks 0..CAN2SB-1 and CAN2
+ *       the rest (CAN2SB = half of them), so CAN2 needs CAN1's clock
+ *       (chip_can_pins_init() enables it for either bus).
+ *   Listen-only: bxCAN silent mode (BTR.SILM): the controller drives only
+ *       recessive bits, so no data frame, ACK or error frame leaves it; the
+ *       driver also refuses sends (SQ_EPERM, counted).
  * Every wait on the controller is bounded; a controller that does not enter
- * initialisation mode (no clock, no peripheral: QEMU) leaves the interface
- * stopped with HAL_FAULT_CAN_INIT raised, and every call says SQ_ENETDOWN.
+ * initialisation mode (no clock, no peripheral: QEMU) leaves that bus
+ * stopped with HAL_FAULT_CAN_INIT raised, and its calls say SQ_ENETDOWN.
+ * A restart (bit rate, mode) first checks the new timing, then masks the
+ * bus's interrupts, aborts the TX mailboxes (ABRQ) and reconfigures.
  */
+#include <stddef.h>
+
+#include "bxcan.h"
 #include "bxcan_regs.h"
 #include "chip.h"
-#include "hal_stm32.h"
+#include "stm32_board.h"
+#include "stm32_time.h"
 
-#define CAN_BASE CAN1_BASE
 #define RX_RING_LEN 32U  /* power of two; 32 frames = 3 ms of a full bus */
 #define TX_QUEUE_LEN 16U
-#define INAK_TIMEOUT_US 10000UL  /* enter init: end of the current frame  */
-#define JOIN_TIMEOUT_US 20000UL  /* leave init: 11 recessive bits         */
-#define CAN1_FILTER_BANKS 14U    /* banks 0..13 (CAN2SB reset value 14)  */
+#define INAK_TIMEOUT_US 10000U  /* enter init: end of the current frame  */
+#define JOIN_TIMEOUT_US 20000U  /* leave init: 11 recessive bits         */
+#define LOOPBACK_TIMEOUT_US 5000U /* one frame at 500 kbit/s: 0.3 ms    */
+#define BANKS_PER_BUS (CHIP_CAN_FILTER_BANKS / CHIP_CAN_BUSES)
+#define FILTER_MASTER CAN1_BASE
 
 _Static_assert((RX_RING_LEN & (RX_RING_LEN - 1U)) == 0U, "ring length must be a power of two");
-_Static_assert(HAL_CAN_MAX_FILTERS <= CAN1_FILTER_BANKS, "more filters than CAN1 has banks");
+_Static_assert(HAL_CAN_MAX_FILTERS <= BANKS_PER_BUS, "more filters than one bus has banks");
+_Static_assert(CHIP_CAN_BUSES >= 1U && CHIP_CAN_BUSES <= HAL_CAN_BUSES, "bus count");
 
-/* This driver runs CAN1 only: bus 0. Any other valid bus is SQ_ENODEV; an
- * index beyond HAL_CAN_BUSES is a programming error. */
-static int bus_check(uint8_t bus)
-{
-	HAL_REQUIRE(bus < HAL_CAN_BUSES);
-	return (bus == 0U) ? SQ_OK : SQ_ENODEV;
-}
-
-static struct {
-	bool started;                 /* controller reached init mode       */
-	uint32_t bitrate_bps;         /* rate of the last start attempt     */
+typedef struct {
+	bool started;                 /* controller configured             */
+	hal_can_mode_t mode;
+	uint32_t bitrate_bps;         /* rate of the last start            */
 	/* RX ring: rx_head written only by the ISR, rx_tail only by
 	 * hal_can_receive(); free-running indices, count = head - tail. */
 	volatile uint32_t rx_head;
@@ -54,7 +63,57 @@ static struct {
 	volatile uint32_t error_frames;
 	volatile uint32_t bus_off_count;
 	volatile bool bus_off_seen;
-} can;
+	uint32_t tx_refused_listen_only;
+} bus_state_t;
+
+typedef struct {
+	uintptr_t base;
+	uint32_t irq_tx;
+	uint32_t irq_rx0;
+	uint32_t irq_sce;
+} bus_hw_t;
+
+static const bus_hw_t bus_hw[CHIP_CAN_BUSES] = {
+	{ CAN1_BASE, CHIP_IRQ_CAN1_TX, CHIP_IRQ_CAN1_RX0, CHIP_IRQ_CAN1_SCE },
+#if CHIP_CAN_BUSES > 1
+	{ CAN2_BASE, CHIP_IRQ_CAN2_TX, CHIP_IRQ_CAN2_RX0, CHIP_IRQ_CAN2_SCE },
+#endif
+};
+
+static bus_state_t can_bus[CHIP_CAN_BUSES];
+
+/* A bus index out of hal.h's range is a programming error; a valid index
+ * this chip lacks gives NULL (the caller answers SQ_ENODEV). */
+static bus_state_t *bus_get(uint8_t bus)
+{
+	HAL_REQUIRE(bus < HAL_CAN_BUSES);
+	return bus < CHIP_CAN_BUSES ? &can_bus[bus] : NULL;
+}
+
+static int can_wait(uintptr_t base, uint32_t off, uint32_t mask, uint32_t value, uint32_t timeout_us)
+{
+	stm32_timeout_t t;
+
+	stm32_timeout_start(&t, timeout_us);
+	for (;;) {
+		if ((can_rd(base, off) & mask) == value) {
+			return SQ_OK;
+		}
+		if (stm32_timeout_expired(&t)) {
+			return ((can_rd(base, off) & mask) == value) ? SQ_OK : SQ_EAGAIN;
+		}
+	}
+}
+
+static void can_set(uintptr_t base, uint32_t off, uint32_t bits)
+{
+	can_wr(base, off, can_rd(base, off) | bits);
+}
+
+static void can_clear(uintptr_t base, uint32_t off, uint32_t bits)
+{
+	can_wr(base, off, can_rd(base, off) & ~bits);
+}
 
 static uint32_t pack_word(const uint8_t *d)
 {
@@ -69,16 +128,56 @@ static void unpack_word(uint32_t w, uint8_t *d)
 	d[3] = (uint8_t)((w >> 24) & 0xFFU);
 }
 
-/* Move queued frames into empty mailboxes. Interrupts masked by caller. */
-static void tx_pump(void)
+static void mailbox_write(uintptr_t base, uint32_t mb, const hal_can_frame_t *f)
 {
+	uint32_t tir;
+
+	if ((f->flags & HAL_CAN_FLAG_EXT) != 0U) {
+		tir = (f->id << CAN_TIR_EXID_SHIFT) | CAN_TIR_IDE;
+	} else {
+		tir = f->id << CAN_TIR_STID_SHIFT;
+	}
+	if ((f->flags & HAL_CAN_FLAG_RTR) != 0U) {
+		tir |= CAN_TIR_RTR;
+	}
+	can_wr(base, CAN_TDTR(mb), f->dlc);
+	can_wr(base, CAN_TDLR(mb), pack_word(&f->data[0]));
+	can_wr(base, CAN_TDHR(mb), pack_word(&f->data[4]));
+	can_wr(base, CAN_TIR(mb), tir | CAN_TIR_TXRQ);
+}
+
+/* FIFO 0's oldest frame into *f, and release it. */
+static void fifo0_read(uintptr_t base, hal_can_frame_t *f)
+{
+	uint32_t rir = can_rd(base, CAN_RIR(0U));
+	uint32_t dlc = can_rd(base, CAN_RDTR(0U)) & CAN_RDTR_DLC_MSK;
+
+	f->flags = 0U;
+	if ((rir & CAN_RIR_IDE) != 0U) {
+		f->id = rir >> CAN_RIR_EXID_SHIFT;
+		f->flags |= HAL_CAN_FLAG_EXT;
+	} else {
+		f->id = rir >> CAN_RIR_STID_SHIFT;
+	}
+	if ((rir & CAN_RIR_RTR) != 0U) {
+		f->flags |= HAL_CAN_FLAG_RTR;
+	}
+	f->dlc = (uint8_t)(dlc > HAL_CAN_MAX_DLEN ? HAL_CAN_MAX_DLEN : dlc);
+	unpack_word(can_rd(base, CAN_RDLR(0U)), &f->data[0]);
+	unpack_word(can_rd(base, CAN_RDHR(0U)), &f->data[4]);
+	can_wr(base, CAN_RF0R, CAN_RF0R_RFOM0); /* release the FIFO slot */
+}
+
+/* Move queued frames into empty mailboxes. Interrupts masked by caller. */
+static void tx_pump(uint8_t bus)
+{
+	bus_state_t *st = &can_bus[bus];
+	uintptr_t base = bus_hw[bus].base;
 	uint32_t i;
 
-	for (i = 0; i < 3U && can.tx_count > 0U; i++) {
-		uint32_t tsr = CAN_TSR(CAN_BASE);
+	for (i = 0; i < 3U && st->tx_count > 0U; i++) {
+		uint32_t tsr = can_rd(base, CAN_TSR);
 		uint32_t mb;
-		const hal_can_frame_t *f;
-		uint32_t tir;
 
 		if ((tsr & CAN_TSR_TME_ALL) == 0U) {
 			return; /* all three busy */
@@ -87,194 +186,358 @@ static void tx_pump(void)
 		if (mb > 2U || (tsr & CAN_TSR_TME(mb)) == 0U) {
 			return;
 		}
-		f = &can.tx_queue[can.tx_first];
-		if ((f->flags & HAL_CAN_FLAG_EXT) != 0U) {
-			tir = (f->id << CAN_TIR_EXID_SHIFT) | CAN_TIR_IDE;
-		} else {
-			tir = f->id << CAN_TIR_STID_SHIFT;
-		}
-		if ((f->flags & HAL_CAN_FLAG_RTR) != 0U) {
-			tir |= CAN_TIR_RTR;
-		}
-		CAN_TDTR(CAN_BASE, mb) = f->dlc;
-		CAN_TDLR(CAN_BASE, mb) = pack_word(&f->data[0]);
-		CAN_TDHR(CAN_BASE, mb) = pack_word(&f->data[4]);
-		CAN_TIR(CAN_BASE, mb) = tir | CAN_TIR_TXRQ;
-		can.tx_first = (can.tx_first + 1U) % TX_QUEUE_LEN;
-		can.tx_count--;
+		mailbox_write(base, mb, &st->tx_queue[st->tx_first]);
+		st->tx_first = (st->tx_first + 1U) % TX_QUEUE_LEN;
+		st->tx_count--;
 	}
 }
 
-static void filters_accept_all(void)
+/* Filter word of 32-bit scale: STID in 31:21, EXID in 31:3, IDE bit 2. */
+static uint32_t filter_word(uint32_t id, bool ext)
 {
-	CAN_FMR(CAN_BASE) |= CAN_FMR_FINIT;
-	CAN_FA1R(CAN_BASE) &= ~((1UL << CAN1_FILTER_BANKS) - 1U);
-	CAN_FM1R(CAN_BASE) &= ~1UL;  /* bank 0: mask mode            */
-	CAN_FS1R(CAN_BASE) |= 1UL;   /* 32-bit                       */
-	CAN_FFA1R(CAN_BASE) &= ~1UL; /* FIFO 0                       */
-	CAN_FR1(CAN_BASE, 0U) = 0U;  /* id: anything                 */
-	CAN_FR2(CAN_BASE, 0U) = 0U;  /* mask: no bit must match      */
-	CAN_FA1R(CAN_BASE) |= 1UL;
-	CAN_FMR(CAN_BASE) &= ~CAN_FMR_FINIT;
+	return ext ? ((id << CAN_RIR_EXID_SHIFT) | CAN_FR_IDE) : (id << CAN_RIR_STID_SHIFT);
 }
 
-int bxcan_start(uint32_t bitrate_bps)
+/*
+ * Write this bus's banks: one 32-bit mask-mode bank per filter, FIFO 0.
+ * filters == NULL with count 1: accept every frame (id 0, mask 0). The IDE
+ * bit is always in the mask, so a standard filter never passes an extended
+ * frame and the other way round; RTR is never in the mask (hal.h: data and
+ * remote frames pass alike).
+ */
+static void filter_banks_write(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
-	uint32_t btr;
+	const uint32_t first = (uint32_t)bus * BANKS_PER_BUS;
+	const uint32_t own = ((1U << BANKS_PER_BUS) - 1U) << first;
+	uint32_t active = 0U;
+	uint32_t fmr = can_rd(FILTER_MASTER, CAN_FMR) | CAN_FMR_FINIT;
+	uint32_t i;
+
+#if CHIP_CAN_BUSES > 1
+	fmr = (fmr & ~CAN_FMR_CAN2SB_MSK) | ((uint32_t)BANKS_PER_BUS << CAN_FMR_CAN2SB_SHIFT);
+#endif
+	can_wr(FILTER_MASTER, CAN_FMR, fmr);
+	can_clear(FILTER_MASTER, CAN_FA1R, own);
+	can_clear(FILTER_MASTER, CAN_FM1R, own);  /* mask mode */
+	can_set(FILTER_MASTER, CAN_FS1R, own);    /* 32-bit    */
+	can_clear(FILTER_MASTER, CAN_FFA1R, own); /* FIFO 0    */
+	for (i = 0; i < count; i++) {
+		uint32_t bank = first + i;
+
+		if (filters == NULL) {
+			can_wr(FILTER_MASTER, CAN_FR1(bank), 0U);
+			can_wr(FILTER_MASTER, CAN_FR2(bank), 0U);
+		} else {
+			bool ext = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U;
+
+			can_wr(FILTER_MASTER, CAN_FR1(bank), filter_word(filters[i].id, ext));
+			can_wr(FILTER_MASTER, CAN_FR2(bank), filter_word(filters[i].mask, ext) | CAN_FR_IDE);
+		}
+		active |= 1U << bank;
+	}
+	can_set(FILTER_MASTER, CAN_FA1R, active);
+	can_clear(FILTER_MASTER, CAN_FMR, CAN_FMR_FINIT);
+}
+
+static void irqs_enable(uint8_t bus, bool on)
+{
+	const bus_hw_t *hw = &bus_hw[bus];
+
+	if (on) {
+		cm_nvic_enable(hw->irq_tx, CM_PRIO_CAN);
+		cm_nvic_enable(hw->irq_rx0, CM_PRIO_CAN);
+		cm_nvic_enable(hw->irq_sce, CM_PRIO_CAN);
+	} else {
+		cm_nvic_disable(hw->irq_tx);
+		cm_nvic_disable(hw->irq_rx0);
+		cm_nvic_disable(hw->irq_sce);
+	}
+}
+
+/* Stop the bus (its interrupts off, TX mailboxes aborted) and wait for
+ * initialisation mode. SQ_OK or SQ_EAGAIN (fault raised). */
+static int enter_init(uint8_t bus)
+{
+	uintptr_t base = bus_hw[bus].base;
+	uint32_t primask;
 	int rc;
 
-	can.started = false;
-	rc = bxcan_bit_timing(chip_apb1_hz(), bitrate_bps, &btr);
-	if (rc != SQ_OK) {
-		return rc;
-	}
-	can.bitrate_bps = bitrate_bps;
-	chip_can_pins_init();
-
-	/* Leave sleep, request initialisation, wait for the acknowledge. */
-	CAN_MCR(CAN_BASE) = (CAN_MCR(CAN_BASE) & ~CAN_MCR_SLEEP) | CAN_MCR_INRQ;
-	rc = stm32_wait_reg(&CAN_MSR(CAN_BASE), CAN_MSR_INAK | CAN_MSR_SLAK, CAN_MSR_INAK,
-			    INAK_TIMEOUT_US);
+	chip_can_pins_init(bus);
+	primask = cm_irq_save();
+	can_bus[bus].started = false;
+	irqs_enable(bus, false);
+	can_wr(base, CAN_TSR, CAN_TSR_ABRQ(0U) | CAN_TSR_ABRQ(1U) | CAN_TSR_ABRQ(2U));
+	can_wr(base, CAN_MCR, (can_rd(base, CAN_MCR) & ~CAN_MCR_SLEEP) | CAN_MCR_INRQ);
+	cm_irq_restore(primask);
+	rc = can_wait(base, CAN_MSR, CAN_MSR_INAK | CAN_MSR_SLAK, CAN_MSR_INAK, INAK_TIMEOUT_US);
 	if (rc != SQ_OK) {
 		/* Undo the request: leave the controller as we found it. */
-		CAN_MCR(CAN_BASE) &= ~CAN_MCR_INRQ;
+		can_clear(base, CAN_MCR, CAN_MCR_INRQ);
 		stm32_fault_raise(HAL_FAULT_CAN_INIT);
-		STM32_TEST_EVENT("can_init_timeout", INAK_TIMEOUT_US);
-		return SQ_EAGAIN;
-	}
-	/* Automatic bus-off recovery, FIFO transmit order, automatic
-	 * retransmission, overwrite-protection off (overruns are counted). */
-	CAN_MCR(CAN_BASE) = (CAN_MCR(CAN_BASE) & CAN_MCR_DBF) | CAN_MCR_INRQ | CAN_MCR_ABOM | CAN_MCR_TXFP;
-	CAN_BTR(CAN_BASE) = btr;
-	filters_accept_all();
-	can.rx_head = 0U;
-	can.rx_tail = 0U;
-	can.tx_first = 0U;
-	can.tx_count = 0U;
-	CAN_ESR(CAN_BASE) = CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT;
-	CAN_IER(CAN_BASE) = CAN_IER_TMEIE | CAN_IER_FMPIE0 | CAN_IER_FOVIE0 | CAN_IER_EWGIE |
-			    CAN_IER_EPVIE | CAN_IER_BOFIE | CAN_IER_LECIE | CAN_IER_ERRIE;
-	cm_nvic_enable(CHIP_IRQ_CAN1_TX, CM_PRIO_CAN);
-	cm_nvic_enable(CHIP_IRQ_CAN1_RX0, CM_PRIO_CAN);
-	cm_nvic_enable(CHIP_IRQ_CAN1_SCE, CM_PRIO_CAN);
-	can.started = true;
-
-	/* Join the bus: needs 11 recessive bits. Without a transceiver or with
-	 * the bus stuck dominant this does not happen; the controller keeps
-	 * trying on its own, and the state reads STOPPED until it has joined. */
-	CAN_MCR(CAN_BASE) &= ~CAN_MCR_INRQ;
-	rc = stm32_wait_reg(&CAN_MSR(CAN_BASE), CAN_MSR_INAK, 0U, JOIN_TIMEOUT_US);
-	if (rc != SQ_OK) {
-		stm32_fault_raise(HAL_FAULT_CAN_INIT);
-		STM32_TEST_EVENT("can_join_timeout", JOIN_TIMEOUT_US);
+		STM32_TEST_EVENT("can_init_timeout", bus);
 		return SQ_EAGAIN;
 	}
 	return SQ_OK;
 }
 
+/* In initialisation mode: controller options, timing, accept-all filter,
+ * empty queues. Automatic bus-off recovery, FIFO transmit order, automatic
+ * retransmission, overwrite protection off (overruns are counted). */
+static void configure(uint8_t bus, uint32_t btr, uint32_t ier)
+{
+	bus_state_t *st = &can_bus[bus];
+	uintptr_t base = bus_hw[bus].base;
+	uint32_t primask = cm_irq_save();
+
+	can_wr(base, CAN_MCR, (can_rd(base, CAN_MCR) & CAN_MCR_DBF) | CAN_MCR_INRQ | CAN_MCR_ABOM | CAN_MCR_TXFP);
+	can_wr(base, CAN_BTR, btr);
+	filter_banks_write(bus, NULL, 1U);
+	st->rx_head = 0U;
+	st->rx_tail = 0U;
+	st->tx_first = 0U;
+	st->tx_count = 0U;
+	st->bus_off_seen = false;
+	can_wr(base, CAN_TSR, CAN_TSR_RQCP(0U) | CAN_TSR_RQCP(1U) | CAN_TSR_RQCP(2U));
+	can_wr(base, CAN_ESR, CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT);
+	can_wr(base, CAN_IER, ier);
+	cm_irq_restore(primask);
+}
+
+/* Leave initialisation mode: needs 11 recessive bits on the bus (or, in
+ * loopback, internally). SQ_OK or SQ_EAGAIN. */
+static int leave_init(uint8_t bus)
+{
+	uintptr_t base = bus_hw[bus].base;
+
+	can_clear(base, CAN_MCR, CAN_MCR_INRQ);
+	return can_wait(base, CAN_MSR, CAN_MSR_INAK, 0U, JOIN_TIMEOUT_US);
+}
+
+int bxcan_start(uint8_t bus, uint32_t bitrate_bps)
+{
+	bus_state_t *st = bus_get(bus);
+	uint32_t btr;
+	uint32_t primask;
+	int rc;
+
+	if (st == NULL) {
+		return SQ_ENODEV;
+	}
+	/* The new timing first: a rate the clock cannot make leaves the
+	 * running controller untouched. */
+	rc = bxcan_bit_timing(chip_apb1_hz(), bitrate_bps, &btr);
+	if (rc != SQ_OK) {
+		return rc;
+	}
+	if (st->mode == HAL_CAN_MODE_LISTEN_ONLY) {
+		btr |= CAN_BTR_SILM;
+	}
+	rc = enter_init(bus);
+	if (rc != SQ_OK) {
+		return rc;
+	}
+	st->bitrate_bps = bitrate_bps;
+	configure(bus, btr, CAN_IER_TMEIE | CAN_IER_FMPIE0 | CAN_IER_FOVIE0 | CAN_IER_EWGIE |
+				    CAN_IER_EPVIE | CAN_IER_BOFIE | CAN_IER_LECIE | CAN_IER_ERRIE);
+	primask = cm_irq_save();
+	st->started = true;
+	irqs_enable(bus, true);
+	cm_irq_restore(primask);
+
+	/* Without a transceiver or with the bus stuck dominant the join does
+	 * not happen; the controller keeps trying on its own, and the state
+	 * reads STOPPED until it has joined. */
+	rc = leave_init(bus);
+	if (rc != SQ_OK) {
+		stm32_fault_raise(HAL_FAULT_CAN_INIT);
+		STM32_TEST_EVENT("can_join_timeout", bus);
+		return SQ_EAGAIN;
+	}
+	return SQ_OK;
+}
+
+int bxcan_selftest_loopback(uint8_t bus)
+{
+	static const hal_can_frame_t probe = {
+		.id = 0x15A5C3E7U, .flags = HAL_CAN_FLAG_EXT, .dlc = 8U,
+		.data = { 0x55U, 0xAAU, 0x01U, 0x80U, 0xFFU, 0x00U, 0x3CU, 0xC3U },
+	};
+	bus_state_t *st = bus_get(bus);
+	uintptr_t base;
+	hal_can_frame_t got;
+	uint32_t btr;
+	int rc;
+
+	if (st == NULL) {
+		return SQ_ENODEV;
+	}
+	base = bus_hw[bus].base;
+	if (bxcan_bit_timing(chip_apb1_hz(), BXCAN_DEFAULT_BITRATE, &btr) != SQ_OK) {
+		return SQ_EIO;
+	}
+	rc = enter_init(bus);
+	if (rc != SQ_OK) {
+		return rc;
+	}
+	configure(bus, btr | CAN_BTR_SILM | CAN_BTR_LBKM, 0U);
+	rc = leave_init(bus);
+	if (rc == SQ_OK) {
+		mailbox_write(base, 0U, &probe);
+		rc = can_wait(base, CAN_RF0R, CAN_RF0R_FMP0_MSK, 1U, LOOPBACK_TIMEOUT_US);
+	}
+	if (rc == SQ_OK) {
+		uint32_t i;
+
+		got.timestamp_us = 0U;
+		fifo0_read(base, &got);
+		if (got.id != probe.id || got.flags != probe.flags || got.dlc != probe.dlc) {
+			rc = SQ_EIO;
+		}
+		for (i = 0; i < HAL_CAN_MAX_DLEN && rc == SQ_OK; i++) {
+			if (got.data[i] != probe.data[i]) {
+				rc = SQ_EIO;
+			}
+		}
+	} else {
+		rc = SQ_EIO;
+	}
+	/* Back to initialisation mode, loopback off: bxcan_start() follows. */
+	can_set(base, CAN_MCR, CAN_MCR_INRQ);
+	(void)can_wait(base, CAN_MSR, CAN_MSR_INAK, CAN_MSR_INAK, INAK_TIMEOUT_US);
+	can_wr(base, CAN_BTR, btr);
+	return rc;
+}
+
 int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 {
-	if (bus_check(bus) != SQ_OK) {
+	bus_state_t *st = bus_get(bus);
+	uint32_t btr;
+
+	if (st == NULL) {
 		return SQ_ENODEV;
 	}
 	if ((bitrate_kbps == 0U) || (bitrate_kbps > 1000U)) {
 		return SQ_EINVAL;
 	}
-	if (can.started && (can.bitrate_bps == bitrate_kbps * 1000U)) {
+	if (bxcan_bit_timing(chip_apb1_hz(), bitrate_kbps * 1000U, &btr) != SQ_OK) {
+		return SQ_EINVAL; /* checked before anything is touched */
+	}
+	if (st->started && (st->bitrate_bps == bitrate_kbps * 1000U)) {
 		return SQ_OK; /* already running at that rate */
 	}
-	return bxcan_start(bitrate_kbps * 1000U);
-}
-
-bool stm32_can_rx_pending(void)
-{
-	return can.rx_head != can.rx_tail;
-}
-
-/* Interface usable for traffic: started and synchronised to the bus. */
-static bool can_online(void)
-{
-	return can.started && (CAN_MSR(CAN_BASE) & CAN_MSR_INAK) == 0U;
+	return bxcan_start(bus, bitrate_kbps * 1000U);
 }
 
 int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 {
-	if (bus_check(bus) != SQ_OK) {
+	bus_state_t *st = bus_get(bus);
+	int rc;
+
+	HAL_REQUIRE(mode == HAL_CAN_MODE_NORMAL || mode == HAL_CAN_MODE_LISTEN_ONLY);
+	if (st == NULL) {
 		return SQ_ENODEV;
 	}
-	return (mode == HAL_CAN_MODE_NORMAL) ? SQ_OK : SQ_ENOTSUP;
+	if (st->started && st->mode == mode) {
+		return SQ_OK;
+	}
+	st->mode = mode;
+	rc = bxcan_start(bus, st->bitrate_bps != 0U ? st->bitrate_bps : BXCAN_DEFAULT_BITRATE);
+	return rc == SQ_OK ? SQ_OK : SQ_EAGAIN;
+}
+
+bool bxcan_rx_pending(void)
+{
+	uint32_t bus;
+
+	for (bus = 0; bus < CHIP_CAN_BUSES; bus++) {
+		if (can_bus[bus].rx_head != can_bus[bus].rx_tail) {
+			return true;
+		}
+	}
+	return false;
+}
+
+/* Usable for traffic: started and synchronised to the bus. */
+static bool can_online(uint8_t bus)
+{
+	return can_bus[bus].started && (can_rd(bus_hw[bus].base, CAN_MSR) & CAN_MSR_INAK) == 0U;
 }
 
 int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
+	bus_state_t *st = bus_get(bus);
 	uint32_t primask;
 	uint32_t slot;
 
 	HAL_REQUIRE(frame != NULL);
-	if (bus_check(bus) != SQ_OK) {
+	if (st == NULL) {
 		return SQ_ENODEV;
 	}
-	if (frame->dlc > HAL_CAN_MAX_DLEN ||
-	    (frame->flags & HAL_CAN_FLAG_ERR) != 0U ||
+	if (frame->dlc > HAL_CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U ||
 	    (frame->flags & ~(uint8_t)(HAL_CAN_FLAG_EXT | HAL_CAN_FLAG_RTR)) != 0U) {
 		return SQ_EINVAL;
 	}
-	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U ? frame->id > 0x1FFFFFFFUL : frame->id > 0x7FFUL) {
+	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U ? frame->id > HAL_CAN_EXT_ID_MAX
+						     : frame->id > HAL_CAN_STD_ID_MAX) {
 		return SQ_EINVAL;
 	}
-	if (!can_online()) {
+	if (st->mode == HAL_CAN_MODE_LISTEN_ONLY) {
+		st->tx_refused_listen_only++;
+		return SQ_EPERM;
+	}
+	if (!can_online(bus)) {
 		return SQ_ENETDOWN;
 	}
-	if ((CAN_ESR(CAN_BASE) & CAN_ESR_BOFF) != 0U) {
+	if ((can_rd(bus_hw[bus].base, CAN_ESR) & CAN_ESR_BOFF) != 0U) {
 		return SQ_ENETUNREACH;
 	}
 	primask = cm_irq_save();
-	if (can.tx_count >= TX_QUEUE_LEN) {
+	if (st->tx_count >= TX_QUEUE_LEN) {
 		cm_irq_restore(primask);
 		return SQ_ENOBUFS;
 	}
-	slot = (can.tx_first + can.tx_count) % TX_QUEUE_LEN;
-	can.tx_queue[slot] = *frame;
-	can.tx_count++;
-	tx_pump();
+	slot = (st->tx_first + st->tx_count) % TX_QUEUE_LEN;
+	st->tx_queue[slot] = *frame;
+	st->tx_count++;
+	tx_pump(bus);
 	cm_irq_restore(primask);
 	return SQ_OK;
 }
 
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
+	bus_state_t *st = bus_get(bus);
 	uint32_t tail;
 
 	HAL_REQUIRE(frame != NULL);
-	if (bus_check(bus) != SQ_OK) {
+	if (st == NULL) {
 		return SQ_ENODEV;
 	}
-	if (!can.started) {
+	if (!st->started) {
 		return SQ_ENETDOWN;
 	}
-	tail = can.rx_tail;
-	if (tail == can.rx_head) {
+	tail = st->rx_tail;
+	if (tail == st->rx_head) {
 		return SQ_EAGAIN;
 	}
 	cm_dmb(); /* read the slot only after seeing the head that covers it */
-	*frame = can.rx_ring[tail % RX_RING_LEN];
+	*frame = st->rx_ring[tail % RX_RING_LEN];
 	cm_dmb(); /* finish reading before handing the slot back */
-	can.rx_tail = tail + 1U;
+	st->rx_tail = tail + 1U;
 	return SQ_OK;
 }
 
 int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 {
+	bus_state_t *st = bus_get(bus);
 	uint32_t esr;
 
 	HAL_REQUIRE(status != NULL);
-	if (bus_check(bus) != SQ_OK) {
+	if (st == NULL) {
 		return SQ_ENODEV;
 	}
-	status->mode = HAL_CAN_MODE_NORMAL;
-	status->tx_refused_listen_only = 0U;
-	esr = can.started ? CAN_ESR(CAN_BASE) : 0U;
-	if (!can_online()) {
+	esr = st->started ? can_rd(bus_hw[bus].base, CAN_ESR) : 0U;
+	if (!can_online(bus)) {
 		status->state = HAL_CAN_STATE_STOPPED;
 	} else if ((esr & CAN_ESR_BOFF) != 0U) {
 		status->state = HAL_CAN_STATE_BUS_OFF;
@@ -285,96 +548,74 @@ int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 	} else {
 		status->state = HAL_CAN_STATE_ERROR_ACTIVE;
 	}
+	status->mode = st->mode;
 	status->tx_error_count = (uint8_t)((esr >> CAN_ESR_TEC_SHIFT) & 0xFFU);
 	status->rx_error_count = (uint8_t)((esr >> CAN_ESR_REC_SHIFT) & 0xFFU);
-	status->bus_off_count = can.bus_off_count;
-	status->rx_overruns = can.rx_overruns;
-	status->tx_dropped = can.tx_dropped;
-	status->error_frames = can.error_frames;
+	status->bus_off_count = st->bus_off_count;
+	status->rx_overruns = st->rx_overruns;
+	status->tx_dropped = st->tx_dropped;
+	status->tx_refused_listen_only = st->tx_refused_listen_only;
+	status->error_frames = st->error_frames;
 	return SQ_OK;
-}
-
-/* One filter per bank, 32-bit mask mode: FR1 holds the identifier and FR2
- * the mask in the RIR layout (STID 31:21 or EXID 31:3, IDE bit 2); IDE is
- * always in the mask so a filter matches its own kind only, RTR never (data
- * and remote frames alike). */
-static uint32_t filter_word(uint32_t id, bool ext)
-{
-	return ext ? ((id << CAN_TIR_EXID_SHIFT) | CAN_TIR_IDE) : (id << CAN_TIR_STID_SHIFT);
 }
 
 int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
-	uint32_t b;
+	bus_state_t *st = bus_get(bus);
+	uint32_t i;
 
-	HAL_REQUIRE((count <= HAL_CAN_MAX_FILTERS) && ((count == 0U) || (filters != NULL)));
-	if (bus_check(bus) != SQ_OK) {
+	HAL_REQUIRE(count <= HAL_CAN_MAX_FILTERS);
+	HAL_REQUIRE(count == 0U || filters != NULL);
+	if (st == NULL) {
 		return SQ_ENODEV;
 	}
-	if (!hal_can_filters_in_range(filters, count)) {
-		return SQ_EINVAL;
-	}
-	CAN_FMR(CAN_BASE) |= CAN_FMR_FINIT;
-	CAN_FA1R(CAN_BASE) &= ~((1UL << CAN1_FILTER_BANKS) - 1U);
-	for (b = 0; b < count; b++) {
-		const bool ext = (filters[b].flags & HAL_CAN_FLAG_EXT) != 0U;
+	for (i = 0; i < count; i++) {
+		uint32_t max = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U ? HAL_CAN_EXT_ID_MAX
+									   : HAL_CAN_STD_ID_MAX;
 
-		CAN_FM1R(CAN_BASE) &= ~(1UL << b); /* mask mode   */
-		CAN_FS1R(CAN_BASE) |= 1UL << b;    /* 32-bit      */
-		CAN_FFA1R(CAN_BASE) &= ~(1UL << b); /* FIFO 0     */
-		CAN_FR1(CAN_BASE, b) = filter_word(filters[b].id, ext);
-		CAN_FR2(CAN_BASE, b) = filter_word(filters[b].mask, ext) | CAN_TIR_IDE;
-		CAN_FA1R(CAN_BASE) |= 1UL << b;
+		if ((filters[i].flags & ~(uint8_t)HAL_CAN_FLAG_EXT) != 0U || filters[i].id > max ||
+		    filters[i].mask > max) {
+			return SQ_EINVAL;
+		}
 	}
-	CAN_FMR(CAN_BASE) &= ~CAN_FMR_FINIT;
+	filter_banks_write(bus, filters, count);
 	return SQ_OK;
 }
 
-void CAN1_RX0_IRQHandler(void)
+static void rx0_irq(uint8_t bus)
 {
-	uint32_t i;
+	bus_state_t *st = &can_bus[bus];
+	uintptr_t base = bus_hw[bus].base;
 	uint64_t now_us = hal_time_us();
+	uint32_t i;
 
-	if ((CAN_RF0R(CAN_BASE) & CAN_RF0R_FOVR0) != 0U) {
-		can.rx_overruns++;
-		CAN_RF0R(CAN_BASE) = CAN_RF0R_FOVR0; /* write 1 to clear */
+	if ((can_rd(base, CAN_RF0R) & CAN_RF0R_FOVR0) != 0U) {
+		st->rx_overruns++;
+		can_wr(base, CAN_RF0R, CAN_RF0R_FOVR0); /* write 1 to clear */
 	}
 	/* At most the three frames the FIFO holds. */
-	for (i = 0; i < 3U && (CAN_RF0R(CAN_BASE) & CAN_RF0R_FMP0_MSK) != 0U; i++) {
-		uint32_t rir = CAN_RIR(CAN_BASE, 0U);
-		uint32_t rdtr = CAN_RDTR(CAN_BASE, 0U);
-		uint32_t head = can.rx_head;
+	for (i = 0; i < 3U && (can_rd(base, CAN_RF0R) & CAN_RF0R_FMP0_MSK) != 0U; i++) {
+		uint32_t head = st->rx_head;
+		hal_can_frame_t *f = &st->rx_ring[head % RX_RING_LEN];
 
-		if (head - can.rx_tail >= RX_RING_LEN) {
-			can.rx_overruns++;
+		if (head - st->rx_tail >= RX_RING_LEN) {
+			hal_can_frame_t lost;
+
+			st->rx_overruns++;
+			fifo0_read(base, &lost);
 		} else {
-			hal_can_frame_t *f = &can.rx_ring[head % RX_RING_LEN];
-			uint32_t dlc = rdtr & CAN_RDTR_DLC_MSK;
-
-			f->flags = 0U;
-			if ((rir & CAN_RIR_IDE) != 0U) {
-				f->id = rir >> CAN_TIR_EXID_SHIFT;
-				f->flags |= HAL_CAN_FLAG_EXT;
-			} else {
-				f->id = rir >> CAN_TIR_STID_SHIFT;
-			}
-			if ((rir & CAN_RIR_RTR) != 0U) {
-				f->flags |= HAL_CAN_FLAG_RTR;
-			}
-			f->dlc = (uint8_t)(dlc > HAL_CAN_MAX_DLEN ? HAL_CAN_MAX_DLEN : dlc);
-			unpack_word(CAN_RDLR(CAN_BASE, 0U), &f->data[0]);
-			unpack_word(CAN_RDHR(CAN_BASE, 0U), &f->data[4]);
+			fifo0_read(base, f);
 			f->timestamp_us = now_us;
 			cm_dmb(); /* the frame is complete before the head moves */
-			can.rx_head = head + 1U;
+			st->rx_head = head + 1U;
 		}
-		CAN_RF0R(CAN_BASE) = CAN_RF0R_RFOM0; /* release the FIFO slot */
 	}
 }
 
-void CAN1_TX_IRQHandler(void)
+static void tx_irq(uint8_t bus)
 {
-	uint32_t tsr = CAN_TSR(CAN_BASE);
+	uintptr_t base = bus_hw[bus].base;
+	uint32_t tsr = can_rd(base, CAN_TSR);
 	uint32_t clear = 0U;
 	uint32_t mb;
 
@@ -383,28 +624,52 @@ void CAN1_TX_IRQHandler(void)
 			/* done: sent, or aborted with an error (TERR). With
 			 * automatic retransmission only an abort ends it unsent. */
 			if ((tsr & CAN_TSR_TERR(mb)) != 0U) {
-				can.tx_dropped++;
+				can_bus[bus].tx_dropped++;
 			}
 			clear |= CAN_TSR_RQCP(mb); /* clears TXOK, ALST, TERR too */
 		}
 	}
-	CAN_TSR(CAN_BASE) = clear;
-	tx_pump(); /* interrupts of this priority are not re-entered */
+	can_wr(base, CAN_TSR, clear);
+	tx_pump(bus); /* interrupts of this priority are not re-entered */
 }
 
-void CAN1_SCE_IRQHandler(void)
+static void sce_irq(uint8_t bus)
 {
-	uint32_t esr = CAN_ESR(CAN_BASE);
+	bus_state_t *st = &can_bus[bus];
+	uintptr_t base = bus_hw[bus].base;
+	uint32_t esr = can_rd(base, CAN_ESR);
 	uint32_t lec = (esr & CAN_ESR_LEC_MSK) >> CAN_ESR_LEC_SHIFT;
 	bool boff = (esr & CAN_ESR_BOFF) != 0U;
 
 	if (lec != 0U && lec != CAN_ESR_LEC_USER) {
-		can.error_frames++;
-		CAN_ESR(CAN_BASE) = CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT;
+		st->error_frames++;
+		can_wr(base, CAN_ESR, CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT);
 	}
-	if (boff && !can.bus_off_seen) {
-		can.bus_off_count++;
+	if (boff && !st->bus_off_seen) {
+		st->bus_off_count++;
 	}
-	can.bus_off_seen = boff;
-	CAN_MSR(CAN_BASE) = CAN_MSR_ERRI; /* write 1 to clear */
+	st->bus_off_seen = boff;
+	can_wr(base, CAN_MSR, CAN_MSR_ERRI); /* write 1 to clear */
 }
+
+void CAN1_TX_IRQHandler(void) { tx_irq(0U); }
+void CAN1_RX0_IRQHandler(void) { rx0_irq(0U); }
+void CAN1_SCE_IRQHandler(void) { sce_irq(0U); }
+#if CHIP_CAN_BUSES > 1
+void CAN2_TX_IRQHandler(void) { tx_irq(1U); }
+void CAN2_RX0_IRQHandler(void) { rx0_irq(1U); }
+void CAN2_SCE_IRQHandler(void) { sce_irq(1U); }
+#endif
+
+#if defined(BXCAN_SIM)
+/* Host simulation only (tests/hal/bxcan_sim.c): a fresh driver per test. */
+void bxcan_sim_driver_reset(void);
+void bxcan_sim_driver_reset(void)
+{
+	uint32_t bus;
+
+	for (bus = 0; bus < CHIP_CAN_BUSES; bus++) {
+		can_bus[bus] = (bus_state_t){ 0 };
+	}
+}
+#endif

@@ -8,7 +8,10 @@
  * 500 kbit/s and below), preferring more quanta on a tie (finer resync).
  * SJW is 1 quantum.
  */
-#include "hal_stm32.h"
+#include <stddef.h>
+
+#include "bxcan.h"
+#include "sq_status.h"
 
 /* BTR field positions (bxcan_regs.h repeats them for the driver; this file
  * also builds on the host, without the register header). */

@@ -18,7 +18,7 @@
 #include <stddef.h>
 
 #include "chip.h"
-#include "hal_stm32.h"
+#include "stm32_board.h"
 
 #define CALIB_MAGIC 0x4C435153UL /* "SQCL" */
 #define CALIB_HDR_LEN 16U
@@ -154,6 +154,14 @@ int hal_calib_write(const uint8_t *buf, uint32_t len)
 	if (buf == NULL || len > HAL_CALIB_MAX_LEN || (uint32_t)(uintptr_t)__calib_slot_count != 2U ||
 	    len > slot_size() - CALIB_HDR_LEN) {
 		return SQ_EINVAL;
+	}
+	/* An erase stalls the CPU (F4: up to 0.5 s per 16 KiB sector, code
+	 * runs from the same flash bank) while the IWDG keeps counting: the
+	 * watchdog would reset mid-write and the time base would lose those
+	 * ticks. Writes are therefore refused once the watchdog runs:
+	 * calibration is written before hal_watchdog_start(). */
+	if (stm32_watchdog_running()) {
+		return SQ_EAGAIN;
 	}
 	newest = newest_slot(&cur);
 	target = newest == 0 ? 1U : 0U;

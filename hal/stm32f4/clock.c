@@ -1,29 +1,118 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * STM32F405 clocks (RM0090 section 7): HSE 8 MHz -> PLL -> 168 MHz, flash
- * wait states, bus prescalers. Each step waits for its ready flag with a
+ * wait states, bus prescalers. Before the switch the crystal is measured
+ * against the HSI (TIM11 input capture of HSE_RTC = HSE / 31): a crystal
+ * that is not CHIP_HSE_HZ (+-10 %, the HSI's own error over temperature
+ * included) would run the core and CAN at the wrong rate, so the chip
+ * stays on the HSI and reports the fallback. After the switch the clock
+ * security system (CSS) watches the crystal: if it stops, the NMI records
+ * the fault and resets, and the next start falls back to the HSI. Each step waits for its ready flag with a
  * bound in real time; if one does not come, the chip stays on (or returns
  * to) the 16 MHz HSI and the caller reports HAL_FAULT_CLOCK_FALLBACK. The
  * firmware still runs, slower and with the HSI's 1 % tolerance (too loose
  * for a reliable CAN bit timing, hence the fault).
  */
+#include <stddef.h>
+
 #include "chip.h"
-#include "hal_stm32.h"
+#include "stm32_time.h"
+#include "sq_status.h"
 
 /* Bounds, from the datasheet with margin: HSE start-up is typically 2 ms
  * (crystal dependent), PLL lock 100..200 us, a clock switch a few cycles. */
-#define HSE_TIMEOUT_US    100000UL
-#define PLL_TIMEOUT_US      5000UL
-#define SWITCH_TIMEOUT_US   5000UL
+#define HSE_TIMEOUT_US    100000U
+#define PLL_TIMEOUT_US      5000U
+#define SWITCH_TIMEOUT_US   5000U
+/* HSE measurement: HSE/31 into TIM11 CH1, every 8th edge captured, 16
+ * captures of 8 * 31 HSE periods each (496 HSI ticks at 8 MHz: 7936 in
+ * all, resolution 0.013 %). */
+#define MEAS_RTCPRE 31U
+#define MEAS_EDGES_PER_CAPTURE 8U
+#define MEAS_CAPTURES 16U
+#define MEAS_TIMEOUT_US 2000U /* per capture; 8 MHz needs 31 us */
+#define HSE_TOLERANCE_PERMILLE 100U
 
 static uint32_t core_hz = CHIP_HSI_HZ;
 static uint32_t apb1_hz = CHIP_HSI_HZ;
+static uint32_t hse_measured_hz;
+
+static int capture_wait(uint32_t *ccr)
+{
+	if (stm32_wait_reg(&TIM11_SR, TIM_SR_CC1IF, TIM_SR_CC1IF, MEAS_TIMEOUT_US) != SQ_OK) {
+		return SQ_EAGAIN;
+	}
+	*ccr = TIM11_CCR1 & 0xFFFFU; /* reading CCR1 clears CC1IF */
+	return SQ_OK;
+}
+
+/* The HSE in Hz, timed by TIM11 on the HSI (APB2 = 16 MHz now); 0 if no
+ * edge comes. The HSE is running (HSERDY), the PLL is not in use yet. */
+static uint32_t hse_measure(void)
+{
+	uint32_t prev;
+	uint32_t now;
+	uint32_t ticks = 0U;
+	uint64_t hz;
+
+	RCC_APB2ENR |= RCC_APB2ENR_TIM11EN;
+	(void)RCC_APB2ENR;
+	RCC_CFGR = (RCC_CFGR & ~RCC_CFGR_RTCPRE_MSK) | (MEAS_RTCPRE << RCC_CFGR_RTCPRE_SHIFT);
+	TIM11_CR1 = 0U;
+	TIM11_OR = TIM11_OR_TI1_HSE_RTC;
+	TIM11_PSC = 0U;
+	TIM11_ARR = 0xFFFFU;
+	TIM11_CCMR1 = TIM_CCMR1_CC1S_TI1 | TIM_CCMR1_IC1PSC_8;
+	TIM11_CCER = TIM_CCER_CC1E;
+	TIM11_SR = 0U;
+	TIM11_CR1 = TIM_CR1_CEN;
+	if (capture_wait(&prev) != SQ_OK) {
+		ticks = 0U;
+	} else {
+		uint32_t i;
+
+		for (i = 0; i < MEAS_CAPTURES; i++) {
+			if (capture_wait(&now) != SQ_OK) {
+				ticks = 0U;
+				break;
+			}
+			ticks += (now - prev) & 0xFFFFU; /* 16-bit counter wraps */
+			prev = now;
+		}
+	}
+	TIM11_CR1 = 0U;
+	TIM11_CCER = 0U;
+	RCC_APB2ENR &= ~RCC_APB2ENR_TIM11EN;
+	if (ticks == 0U) {
+		return 0U;
+	}
+	hz = (uint64_t)CHIP_HSI_HZ * MEAS_RTCPRE * MEAS_EDGES_PER_CAPTURE * MEAS_CAPTURES;
+	return (uint32_t)((hz + ticks / 2U) / ticks);
+}
+
+static bool hse_is_calibrated(uint32_t hz)
+{
+	uint32_t tol = (uint32_t)(((uint64_t)CHIP_HSE_HZ * HSE_TOLERANCE_PERMILLE) / 1000U);
+
+	return hz >= CHIP_HSE_HZ - tol && hz <= CHIP_HSE_HZ + tol;
+}
+
+uint32_t chip_hse_measured_hz(void)
+{
+	return hse_measured_hz;
+}
+
+uint32_t chip_bor_level(void)
+{
+	/* BOR_LEV 00 = level 3 ... 11 = off (level "0" here) */
+	return 3U - ((FLASH_OPTCR & FLASH_OPTCR_BOR_LEV_MSK) >> FLASH_OPTCR_BOR_LEV_SHIFT);
+}
 
 static void clock_back_to_hsi(void)
 {
 	RCC_CFGR &= ~(RCC_CFGR_SW_MSK | RCC_CFGR_HPRE_MSK | RCC_CFGR_PPRE1_MSK | RCC_CFGR_PPRE2_MSK);
 	(void)stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, 0U, SWITCH_TIMEOUT_US);
-	RCC_CR &= ~(RCC_CR_PLLON | RCC_CR_HSEON);
+	RCC_CR &= ~(RCC_CR_CSSON | RCC_CR_PLLON | RCC_CR_HSEON);
 	FLASH_ACR = FLASH_ACR_PRFTEN | FLASH_ACR_ICEN | FLASH_ACR_DCEN; /* 0 WS at 16 MHz */
 	core_hz = CHIP_HSI_HZ;
 	apb1_hz = CHIP_HSI_HZ;
@@ -35,10 +124,16 @@ int chip_clock_init(void)
 
 	core_hz = CHIP_HSI_HZ;
 	apb1_hz = CHIP_HSI_HZ;
+	hse_measured_hz = 0U;
 	stm32_time_early_init(CHIP_HSI_HZ);
 
 	RCC_CR |= RCC_CR_HSEON;
 	if (stm32_wait_reg(&RCC_CR, RCC_CR_HSERDY, RCC_CR_HSERDY, HSE_TIMEOUT_US) != SQ_OK) {
+		clock_back_to_hsi();
+		return SQ_EAGAIN;
+	}
+	hse_measured_hz = hse_measure();
+	if (!hse_is_calibrated(hse_measured_hz)) {
 		clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
@@ -47,9 +142,9 @@ int chip_clock_init(void)
 	(void)RCC_APB1ENR; /* read back: the enable needs two cycles */
 	PWR_CR |= PWR_CR_VOS;
 
-	RCC_PLLCFGR = (8UL << RCC_PLLCFGR_PLLM_SHIFT) | (336UL << RCC_PLLCFGR_PLLN_SHIFT) |
-		      (0UL << RCC_PLLCFGR_PLLP_SHIFT) | RCC_PLLCFGR_PLLSRC_HSE |
-		      (7UL << RCC_PLLCFGR_PLLQ_SHIFT);
+	RCC_PLLCFGR = (4U << RCC_PLLCFGR_PLLM_SHIFT) | (168U << RCC_PLLCFGR_PLLN_SHIFT) |
+		      (0U << RCC_PLLCFGR_PLLP_SHIFT) | RCC_PLLCFGR_PLLSRC_HSE |
+		      (7U << RCC_PLLCFGR_PLLQ_SHIFT);
 	RCC_CR |= RCC_CR_PLLON;
 	if (stm32_wait_reg(&RCC_CR, RCC_CR_PLLRDY, RCC_CR_PLLRDY, PLL_TIMEOUT_US) != SQ_OK) {
 		clock_back_to_hsi();
@@ -69,6 +164,8 @@ int chip_clock_init(void)
 		clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
+	/* A crystal that stops from now on: NMI (startup.c records it). */
+	RCC_CR |= RCC_CR_CSSON;
 	core_hz = CHIP_SYSCLK_HZ;
 	apb1_hz = CHIP_APB1_HZ;
 	return SQ_OK;
@@ -82,26 +179,4 @@ uint32_t chip_core_hz(void)
 uint32_t chip_apb1_hz(void)
 {
 	return apb1_hz;
-}
-
-/* CAN1 on PB8 (RX) / PB9 (TX), alternate function 9 (datasheet table 9). */
-void chip_can_pins_init(void)
-{
-	uint32_t v;
-
-	RCC_AHB1ENR |= RCC_AHB1ENR_GPIOBEN;
-	RCC_APB1ENR |= RCC_APB1ENR_CAN1EN;
-	(void)RCC_APB1ENR;
-	/* AF9 on pins 8 and 9 (AFRH nibbles 0 and 1) */
-	v = GPIO_AFRH(GPIOB_BASE) & ~0xFFUL;
-	GPIO_AFRH(GPIOB_BASE) = v | (GPIO_AF9_CAN1 << 0) | (GPIO_AF9_CAN1 << 4);
-	/* Alternate-function mode, high speed, pull-up on RX (recessive when
-	 * no transceiver drives it), push-pull TX */
-	v = GPIO_MODER(GPIOB_BASE) & ~((3UL << 16) | (3UL << 18));
-	GPIO_MODER(GPIOB_BASE) = v | (GPIO_MODE_AF << 16) | (GPIO_MODE_AF << 18);
-	v = GPIO_OSPEEDR(GPIOB_BASE) & ~((3UL << 16) | (3UL << 18));
-	GPIO_OSPEEDR(GPIOB_BASE) = v | (GPIO_SPEED_HIGH << 16) | (GPIO_SPEED_HIGH << 18);
-	GPIO_OTYPER(GPIOB_BASE) &= ~((1UL << 8) | (1UL << 9));
-	v = GPIO_PUPDR(GPIOB_BASE) & ~((3UL << 16) | (3UL << 18));
-	GPIO_PUPDR(GPIOB_BASE) = v | (GPIO_PUPD_UP << 16);
 }

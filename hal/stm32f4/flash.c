@@ -5,8 +5,11 @@
  * programming (2.7..3.6 V), every BSY wait bounded, errors from FLASH_SR,
  * the data cache flushed afterwards so reads see the new contents.
  */
+#include <stddef.h>
+
 #include "chip.h"
-#include "hal_stm32.h"
+#include "hal.h"
+#include "stm32_time.h"
 
 extern const uint8_t __calib_first_sector[];
 

@@ -3,31 +3,39 @@
  * Independent watchdog (RM0090 section 21; same block on the F1) and the
  * reset reason from RCC_CSR plus the fault record.
  *
- * The IWDG runs from the LSI RC oscillator: nominally 32 kHz, but anywhere
- * from 17 to 47 kHz over parts and temperature. The reload is computed for
- * the nominal value, so the real timeout lies between 0.68 and 1.9 times
- * the requested one; callers choose timeout_ms with that in mind.
- * Once started the IWDG cannot be stopped (only a reset does).
+ * The IWDG runs from the LSI RC oscillator, whose frequency varies widely
+ * over parts and temperature (F4: 17..47 kHz, F103: 30..60 kHz; chip.h
+ * CHIP_LSI_MAX_HZ). The reload is computed for the FASTEST LSI, so the
+ * real timeout is never shorter than the requested one (a healthy ECU is
+ * never reset early); with the slowest LSI it is up to 2.8x (F4) / 2x
+ * (F103) longer. Once started the IWDG cannot be stopped (only a reset
+ * does); DBGMCU freezes it while a debugger halts the core, so bench
+ * debugging does not reset the board.
  */
-#include "chip.h"
-#include "hal_stm32.h"
+#include <stddef.h>
 
-#define IWDG_KR  REG32(IWDG_BASE + 0x00UL)
-#define IWDG_PR  REG32(IWDG_BASE + 0x04UL)
-#define IWDG_RLR REG32(IWDG_BASE + 0x08UL)
-#define IWDG_SR  REG32(IWDG_BASE + 0x0CUL)
-#define IWDG_KR_START  0xCCCCUL
-#define IWDG_KR_RELOAD 0xAAAAUL
-#define IWDG_KR_UNLOCK 0x5555UL
-#define IWDG_SR_PVU (1UL << 0)
-#define IWDG_SR_RVU (1UL << 1)
-#define IWDG_RLR_MAX 0xFFFUL
-#define LSI_NOMINAL_HZ 32000UL
+#include "chip.h"
+#include "sq_status.h"
+#include "stm32_board.h"
+#include "stm32_fault.h"
+#include "stm32_time.h"
+
+#define IWDG_KR  REG32(IWDG_BASE + 0x00U)
+#define IWDG_PR  REG32(IWDG_BASE + 0x04U)
+#define IWDG_RLR REG32(IWDG_BASE + 0x08U)
+#define IWDG_SR  REG32(IWDG_BASE + 0x0CU)
+#define IWDG_KR_START  0xCCCCU
+#define IWDG_KR_RELOAD 0xAAAAU
+#define IWDG_KR_UNLOCK 0x5555U
+#define IWDG_SR_PVU (1U << 0)
+#define IWDG_SR_RVU (1U << 1)
+#define IWDG_RLR_MAX 0xFFFU
 /* A register update crosses into the LSI domain: up to 5 LSI periods of the
  * slowest prescaler (256 / 17 kHz * 5 = 75 ms). */
-#define IWDG_UPDATE_TIMEOUT_US 100000UL
+#define IWDG_UPDATE_TIMEOUT_US 100000U
 
 static hal_reset_reason_t reset_reason = HAL_RESET_UNKNOWN;
+static bool running;
 #if defined(SQ_TARGET_TEST)
 static uint32_t kicks;
 #endif
@@ -37,15 +45,17 @@ int hal_watchdog_start(uint32_t timeout_ms)
 	uint32_t pr;
 	uint32_t ticks = 0U;
 
-	if (timeout_ms == 0U || timeout_ms > 32000UL) {
+	if (timeout_ms == 0U) {
 		return SQ_EINVAL;
 	}
 	/* Smallest prescaler 4 << pr whose 12-bit reload reaches the timeout:
 	 * finest resolution. */
 	for (pr = 0; pr <= 6U; pr++) {
-		uint32_t div = 4UL << pr;
+		uint32_t div = 4U << pr;
 
-		ticks = (uint32_t)(((uint64_t)timeout_ms * LSI_NOMINAL_HZ) / (1000UL * div));
+		/* rounded up: never shorter than asked at the fastest LSI */
+		ticks = (uint32_t)(((uint64_t)timeout_ms * CHIP_LSI_MAX_HZ + 1000U * div - 1U) /
+				   (1000U * div));
 		if (ticks <= IWDG_RLR_MAX + 1U) {
 			break;
 		}
@@ -53,6 +63,8 @@ int hal_watchdog_start(uint32_t timeout_ms)
 	if (pr > 6U || ticks == 0U) {
 		return SQ_EINVAL;
 	}
+	CHIP_DBGMCU_IWDG_REG |= CHIP_DBGMCU_IWDG_STOP; /* frozen while halted */
+	running = true; /* from the start command on, nothing stops it */
 	IWDG_KR = IWDG_KR_START; /* starts the LSI too */
 	IWDG_KR = IWDG_KR_UNLOCK;
 	if (stm32_wait_reg(&IWDG_SR, IWDG_SR_PVU | IWDG_SR_RVU, 0U, IWDG_UPDATE_TIMEOUT_US) != SQ_OK) {
@@ -66,6 +78,11 @@ int hal_watchdog_start(uint32_t timeout_ms)
 	IWDG_KR = IWDG_KR_RELOAD;
 	STM32_TEST_EVENT("wdg_start", timeout_ms);
 	return SQ_OK;
+}
+
+bool stm32_watchdog_running(void)
+{
+	return running;
 }
 
 void hal_watchdog_kick(void)

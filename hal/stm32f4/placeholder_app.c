@@ -12,9 +12,8 @@
 
 int squeal_app_init(void)
 {
-	static const hal_can_filter_t filters[2] = {
-		{ 0x100U, HAL_CAN_STD_ID_MAX, 0U }, { 0x101U, HAL_CAN_STD_ID_MAX, 0U }
-	};
+	static const hal_can_filter_t filters[2] = { { 0x100U, HAL_CAN_STD_ID_MAX, 0U },
+						     { 0x101U, HAL_CAN_STD_ID_MAX, 0U } };
 	int rc = hal_can_set_rx_filter(0U, filters, 2U);
 
 	if (hal_watchdog_start(PLACEHOLDER_WDG_MS) != SQ_OK) {

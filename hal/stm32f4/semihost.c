@@ -4,7 +4,9 @@
  * debugger: "bkpt 0xAB" with the operation in r0 and the argument in r1.
  * Never linked into the ECU image: without a debugger, bkpt faults.
  */
-#include "hal_stm32.h"
+#include <stddef.h>
+
+#include "stm32_board.h"
 
 #if defined(SQ_TARGET_TEST)
 

@@ -1,19 +1,26 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Start-up: the vector table, the reset handler (FPU on, .data copy, .bss
- * clear, then main) and the fault handlers, which record the cause in no-init
- * RAM and reset the core (hal_reset_reason() then says HAL_RESET_FAULT).
+ * clear, stack painted, then main) and the fault handlers, which record the
+ * cause in no-init RAM and reset the core (hal_reset_reason() then says
+ * HAL_RESET_FAULT). The fault handlers first move MSP to a stack of their
+ * own: after a stack overflow the MSP points below SRAM, and C code on it
+ * would fault again (lockup, no record). hal_contract_failed() records the
+ * file and line the same way.
  * No C library start-up code is linked (newlib's crt0 sets its stack from
  * semihosting and does things an ECU does not want).
  */
 #include <stddef.h>
 #include <stdint.h>
 
+#include "bxcan.h"
 #include "chip.h"
-#include "hal_stm32.h"
+#include "stm32_board.h"
+#include "stm32_fault.h"
+#include "stm32_time.h"
 
 /* Linker symbols (linker/stm32f405xg.ld, linker/stm32f103xb.ld) */
-extern uint32_t _estack;
+extern uint32_t _sstack, _estack;
 extern uint32_t _sidata, _sdata, _edata, _sbss, _ebss;
 #if defined(CHIP_HAS_CCM)
 extern uint32_t _sccm, _eccm;
@@ -23,7 +30,13 @@ int main(void);
 void Reset_Handler(void) __attribute__((noreturn));
 void Fault_Handler(void) __attribute__((naked));
 void Default_Handler(void) __attribute__((naked));
-void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return) __attribute__((noreturn, used));
+void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return, uint32_t msp) __attribute__((noreturn, used));
+
+/* The fault handlers' own stack, in .bss above the main stack: an overflow
+ * of the main stack runs downwards, away from it. 512 bytes: the handler
+ * and, in test builds, the semihosting print. */
+#define FAULT_STACK_WORDS 128U
+__attribute__((used, aligned(8))) uint32_t stm32_fault_stack[FAULT_STACK_WORDS];
 
 typedef union {
 	void (*handler)(void);
@@ -50,15 +63,63 @@ const vector_t stm32_vectors[16U + CHIP_IRQ_COUNT] = {
 	[16U + CHIP_IRQ_CAN1_TX] = { .handler = CAN1_TX_IRQHandler },
 	[16U + CHIP_IRQ_CAN1_RX0] = { .handler = CAN1_RX0_IRQHandler },
 	[16U + CHIP_IRQ_CAN1_SCE] = { .handler = CAN1_SCE_IRQHandler },
+#if CHIP_CAN_BUSES > 1
+	[16U + CHIP_IRQ_CAN2_TX] = { .handler = CAN2_TX_IRQHandler },
+	[16U + CHIP_IRQ_CAN2_RX0] = { .handler = CAN2_RX0_IRQHandler },
+	[16U + CHIP_IRQ_CAN2_SCE] = { .handler = CAN2_SCE_IRQHandler },
+#endif
 };
 #pragma GCC diagnostic pop
 
 /* Survives a system reset (linker: .noinit, never copied nor cleared). */
 __attribute__((section(".noinit"))) static volatile stm32_fault_record_t fault_noinit;
 #define STM32_FAULT_ARMED 0xA53A0000UL
+/* Set once this run has painted its stack: the next boot may measure it. */
+__attribute__((section(".noinit"))) static volatile uint32_t stack_painted_noinit;
+#define STACK_PAINTED 0x57AC4ED1UL
+#define STACK_PAINT 0xC5AC5AC5UL
+#define STACK_PAINT_MARGIN_WORDS 16U /* below the reset handler's frame */
+static uint32_t stack_hwm_prev = STM32_STACK_HWM_UNKNOWN;
 
 static stm32_fault_record_t last_fault;
 static bool last_fault_valid;
+
+/*
+ * The previous run left its paint below the deepest point it reached (the
+ * stack reserve is NOLOAD: neither cleared nor loaded, and a system reset
+ * keeps SRAM). Count the untouched words from the bottom, then paint this
+ * run's stack up to just below the current frame.
+ */
+static void stack_measure_and_paint(void)
+{
+	uint32_t *p;
+	uint32_t *limit;
+	uint32_t untouched = 0U;
+	uintptr_t sp;
+
+	__asm__ volatile("mov %0, sp" : "=r"(sp));
+	limit = (uint32_t *)(sp - 4U * STACK_PAINT_MARGIN_WORDS);
+	if (stack_painted_noinit == STACK_PAINTED) {
+		for (p = &_sstack; p < limit && *p == STACK_PAINT; p++) {
+			untouched++;
+		}
+		stack_hwm_prev = (uint32_t)((uintptr_t)&_estack - (uintptr_t)&_sstack) - 4U * untouched;
+	}
+	for (p = &_sstack; p < limit; p++) {
+		*p = STACK_PAINT;
+	}
+	stack_painted_noinit = STACK_PAINTED;
+}
+
+uint32_t stm32_stack_hwm_prev(void)
+{
+	return stack_hwm_prev;
+}
+
+uint32_t stm32_stack_reserve_bytes(void)
+{
+	return (uint32_t)((uintptr_t)&_estack - (uintptr_t)&_sstack);
+}
 
 void Reset_Handler(void)
 {
@@ -84,6 +145,7 @@ void Reset_Handler(void)
 		*dst = 0U;
 	}
 #endif
+	stack_measure_and_paint();
 	SCB_VTOR = (uint32_t)(uintptr_t)&stm32_vectors[0];
 	/* Separate handlers for MemManage/BusFault/UsageFault (better causes
 	 * in the record); trap integer division by zero instead of giving 0. */
@@ -108,6 +170,11 @@ void Fault_Handler(void)
 			 "mrseq r0, msp\n\t"
 			 "mrsne r0, psp\n\t"
 			 "mov r1, lr\n\t"
+			 "mrs r2, msp\n\t"
+			 /* a good stack before any C */
+			 "movw r3, #:lower16:stm32_fault_stack+512\n\t"
+			 "movt r3, #:upper16:stm32_fault_stack+512\n\t"
+			 "msr msp, r3\n\t"
 			 "b stm32_fault_entry\n\t");
 }
 
@@ -118,20 +185,72 @@ void Default_Handler(void)
 			 "mrseq r0, msp\n\t"
 			 "mrsne r0, psp\n\t"
 			 "mov r1, lr\n\t"
+			 "mrs r2, msp\n\t"
+			 /* a good stack before any C */
+			 "movw r3, #:lower16:stm32_fault_stack+512\n\t"
+			 "movt r3, #:upper16:stm32_fault_stack+512\n\t"
+			 "msr msp, r3\n\t"
 			 "b stm32_fault_entry\n\t");
 }
 
-void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return)
+_Static_assert(FAULT_STACK_WORDS * 4U == 512U, "Fault_Handler's movw/movt use 512");
+
+static uint32_t next_fault_count(void)
+{
+	if (fault_noinit.magic == STM32_FAULT_MAGIC || fault_noinit.magic == STM32_FAULT_ARMED) {
+		return fault_noinit.count + 1U;
+	}
+	return 1U;
+}
+
+void stm32_fault_reset(void)
+{
+	cm_dsb();
+#if defined(SQ_TARGET_TEST) && !defined(SQ_TARGET_TEST_FAULT)
+	semihost_exit(0x80U + (fault_noinit.vector & 0x7FU));
+#else
+	SCB_AIRCR = SCB_AIRCR_VECTKEY | SCB_AIRCR_SYSRESETREQ;
+	for (;;) {
+		cm_dsb();
+	}
+#endif
+}
+
+/* The ECU's contract handler (hal.h): a programming error is recorded like
+ * a fault (vector STM32_FAULT_VECTOR_CONTRACT, file and line, the caller's
+ * address as PC) and resets the core the same way; the next boot reports
+ * HAL_RESET_FAULT. Were the reset request lost, the IWDG would still end it:
+ * interrupts stay masked, nothing kicks it. */
+void hal_contract_failed(const char *file, uint32_t line)
+{
+	cm_irq_disable();
+	fault_noinit.count = next_fault_count();
+	fault_noinit.vector = STM32_FAULT_VECTOR_CONTRACT;
+	fault_noinit.pc = (uint32_t)(uintptr_t)__builtin_return_address(0);
+	fault_noinit.lr = 0U;
+	fault_noinit.cfsr = 0U;
+	fault_noinit.hfsr = 0U;
+	fault_noinit.fault_addr = 0U;
+	fault_noinit.file = (uint32_t)(uintptr_t)file;
+	fault_noinit.line = line;
+	fault_noinit.msp = 0U;
+	fault_noinit.magic = STM32_FAULT_MAGIC;
+#if defined(SQ_TARGET_TEST)
+	semihost_write0("EVT contract file=");
+	semihost_write0(file);
+	semihost_print_u32(" line=", line, "\n");
+#endif
+	stm32_fault_reset();
+}
+
+void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return, uint32_t msp)
 {
 	uint32_t vector = SCB_ICSR & SCB_ICSR_VECTACTIVE_MSK;
 	uint32_t cfsr = SCB_CFSR;
-	uint32_t count = 1U;
+	uint32_t count = next_fault_count();
 	uint32_t fault_addr = 0U;
 
 	(void)exc_return;
-	if (fault_noinit.magic == STM32_FAULT_MAGIC || fault_noinit.magic == STM32_FAULT_ARMED) {
-		count = fault_noinit.count + 1U;
-	}
 	if ((cfsr & (1UL << 7)) != 0U) {        /* MMARVALID */
 		fault_addr = SCB_MMFAR;
 	} else if ((cfsr & (1UL << 15)) != 0U) { /* BFARVALID */
@@ -139,7 +258,7 @@ void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return)
 	}
 	/* The frame pointer may be bad (stack overflow): check it points into
 	 * RAM before reading the stacked PC and LR. */
-	if ((uintptr_t)frame >= 0x20000000UL && (uintptr_t)frame < 0x20100000UL &&
+	if ((uintptr_t)frame >= (uintptr_t)&_sstack && (uintptr_t)frame + 32U <= (uintptr_t)&_estack &&
 	    ((uintptr_t)frame & 3U) == 0U) {
 		fault_noinit.pc = frame[6];
 		fault_noinit.lr = frame[5];
@@ -152,52 +271,18 @@ void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return)
 	fault_noinit.hfsr = SCB_HFSR;
 	fault_noinit.fault_addr = fault_addr;
 	fault_noinit.count = count;
+	fault_noinit.file = 0U;
+	fault_noinit.line = 0U;
+	fault_noinit.msp = msp;
 	fault_noinit.magic = STM32_FAULT_MAGIC;
 	cm_dsb();
 #if defined(SQ_TARGET_TEST)
 	semihost_print_u32("EVT fault vector=", vector, NULL);
 	semihost_print_hex(" pc=0x", fault_noinit.pc, NULL);
+	semihost_print_hex(" msp=0x", msp, NULL);
 	semihost_print_hex(" cfsr=0x", cfsr, "\n");
-#if !defined(SQ_TARGET_TEST_FAULT)
-	semihost_exit(0x80U + (vector & 0x7FU));
 #endif
-#endif
-#if !defined(SQ_TARGET_TEST) || defined(SQ_TARGET_TEST_FAULT)
-	SCB_AIRCR = SCB_AIRCR_VECTKEY | SCB_AIRCR_SYSRESETREQ;
-	for (;;) {
-		cm_dsb();
-	}
-#endif
-}
-
-/*
- * hal.h's contract handler: a programming error is recorded like a fault
- * (vector 0, pc = the file name's address, lr = the line) and the core
- * resets; the next boot reports HAL_RESET_FAULT.
- */
-_Noreturn void hal_contract_failed(const char *file, uint32_t line)
-{
-	uint32_t count = 1U;
-
-	if (fault_noinit.magic == STM32_FAULT_MAGIC || fault_noinit.magic == STM32_FAULT_ARMED) {
-		count = fault_noinit.count + 1U;
-	}
-	fault_noinit.vector = 0U;
-	fault_noinit.pc = (uint32_t)(uintptr_t)file;
-	fault_noinit.lr = line;
-	fault_noinit.cfsr = 0U;
-	fault_noinit.hfsr = 0U;
-	fault_noinit.fault_addr = 0U;
-	fault_noinit.count = count;
-	fault_noinit.magic = STM32_FAULT_MAGIC;
-	cm_dsb();
-#if defined(SQ_TARGET_TEST)
-	semihost_print_u32("EVT contract line=", line, "\n");
-#endif
-	SCB_AIRCR = SCB_AIRCR_VECTKEY | SCB_AIRCR_SYSRESETREQ;
-	for (;;) {
-		cm_dsb();
-	}
+	stm32_fault_reset();
 }
 
 /* Called once at boot, before anything can fault again. */
@@ -212,6 +297,9 @@ bool stm32_fault_record_take(stm32_fault_record_t *out)
 		last_fault.hfsr = fault_noinit.hfsr;
 		last_fault.fault_addr = fault_noinit.fault_addr;
 		last_fault.count = fault_noinit.count;
+		last_fault.file = fault_noinit.file;
+		last_fault.line = fault_noinit.line;
+		last_fault.msp = fault_noinit.msp;
 		last_fault_valid = true;
 		/* Keep the count for the next fault, but never report this one
 		 * again after a later, ordinary reset. */

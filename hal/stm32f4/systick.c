@@ -7,7 +7,8 @@
  * bounded in real time too (stm32_timeout_*).
  */
 #include "chip.h"
-#include "hal_stm32.h"
+#include "hal.h"
+#include "stm32_time.h"
 
 static volatile uint32_t tick_ms;     /* written only by SysTick_Handler */
 static volatile uint32_t tick_ms_hi;  /* wraps of tick_ms (every 49 days)  */
@@ -139,26 +140,6 @@ uint32_t hal_cycles(void)
 uint32_t hal_cycles_per_us(void)
 {
 	return core_mhz;
-}
-
-/*
- * WFI with interrupts masked: an interrupt that becomes pending after the
- * checks still ends the WFI, so no wake-up is lost. One WFI per call (the
- * next SysTick at the latest): the caller loops, hal.h allows early returns.
- */
-void hal_idle_until(uint64_t deadline_us)
-{
-	uint32_t primask = cm_irq_save();
-
-	/* A frame already waiting needs the caller now, not after a tick. */
-	if (!stm32_can_rx_pending() && hal_time_us() < deadline_us) {
-		cm_dsb();
-		cm_wfi();
-	}
-	cm_irq_restore(primask);
-#if defined(SQ_TARGET_TEST)
-	stm32_test_event("idle", 0U);
-#endif
 }
 
 void stm32_timeout_start(stm32_timeout_t *t, uint32_t timeout_us)

@@ -90,12 +90,20 @@ static const struct frame_case cases[] = {
 				{ "TxOverflowCount", 300, "300" }, { "RxBadFrameCount", 2, "2" } } },
 	{ MSG_SQUEAL_DIAG_ID, { { "SquealDiag_Page", 0, "0" },
 				{ "Uptime_s", 16777215, "16777215" }, { "BusOffCount", 255, "255" } } },
+	{ MSG_SQUEAL_DIAG_ID, { { "SquealDiag_Page", 4, "4" }, { "Fault_SelfTest", 1, "1" },
+				{ "HseFreq_MHz", 80, "8" }, { "ResetCause", 4, "4" }, { "BorLevel", 3, "3" },
+				{ "LoopbackCan1", 0, "0" }, { "LoopbackCan2", 2, "2" },
+				{ "StackHighWater_B", 480, "480" } } },
+	{ MSG_SQUEAL_DIAG_ID, { { "SquealDiag_Page", 4, "4" }, { "HseFreq_MHz", 255, "NA" },
+				{ "ResetCause", 6, "6" }, { "BorLevel", 7, "NA" }, { "LoopbackCan1", 3, "3" },
+				{ "LoopbackCan2", 1, "1" }, { "StackHighWater_B", 16383, "NA" } } },
 };
 
 static const char *const fault_names[] = {
 	"Fault_SpeedStale", "Fault_ForceStale", "Fault_E2eSpeed", "Fault_E2eForce",
 	"Fault_SpeedImplausible", "Fault_ForceImplausible", "Fault_CalibInvalid",
 	"Fault_BusOffSeen", "Fault_ClockFallback", "Fault_CanInit", "Fault_TxOverflow",
+	"Fault_SelfTest",
 };
 
 union any_msg {
@@ -146,6 +154,12 @@ static int set_field(uint16_t id, union any_msg *m, const char *name, int32_t ra
 		if (IS("E2eErrorCountForce")) { m->dg.e2e_error_count_force = (uint16_t)raw; return 0; }
 		if (IS("TxOverflowCount")) { m->dg.tx_overflow_count = (uint16_t)raw; return 0; }
 		if (IS("RxBadFrameCount")) { m->dg.rx_bad_frame_count = (uint16_t)raw; return 0; }
+		if (IS("HseFreq_MHz")) { m->dg.hse_freq_100khz = (uint8_t)raw; return 0; }
+		if (IS("ResetCause")) { m->dg.reset_cause = (uint8_t)raw; return 0; }
+		if (IS("BorLevel")) { m->dg.bor_level = (uint8_t)raw; return 0; }
+		if (IS("LoopbackCan1")) { m->dg.loopback_can1 = (uint8_t)raw; return 0; }
+		if (IS("LoopbackCan2")) { m->dg.loopback_can2 = (uint8_t)raw; return 0; }
+		if (IS("StackHighWater_B")) { m->dg.stack_high_water_b = (uint16_t)raw; return 0; }
 		for (unsigned int i = 0; i < sizeof(fault_names) / sizeof(fault_names[0]); i++) {
 			if (IS(fault_names[i])) {
 				if (raw != 0) {
@@ -284,6 +298,7 @@ static int emit_table(void)
 	def("MSG_DIAG_PAGE_TASK", MSG_DIAG_PAGE_TASK);
 	def("MSG_DIAG_PAGE_E2E", MSG_DIAG_PAGE_E2E);
 	def("MSG_DIAG_PAGE_FRAMES", MSG_DIAG_PAGE_FRAMES);
+	def("MSG_DIAG_PAGE_SELFTEST", MSG_DIAG_PAGE_SELFTEST);
 	def("MSG_DIAG_PAGE_COUNT", MSG_DIAG_PAGE_COUNT);
 	def("MSG_FAULT_SPEED_STALE", MSG_FAULT_SPEED_STALE);
 	def("MSG_FAULT_FORCE_STALE", MSG_FAULT_FORCE_STALE);
@@ -296,6 +311,7 @@ static int emit_table(void)
 	def("MSG_FAULT_CLOCK_FALLBACK", MSG_FAULT_CLOCK_FALLBACK);
 	def("MSG_FAULT_CAN_INIT", MSG_FAULT_CAN_INIT);
 	def("MSG_FAULT_TX_OVERFLOW", MSG_FAULT_TX_OVERFLOW);
+	def("MSG_FAULT_SELF_TEST", MSG_FAULT_SELF_TEST);
 	def("MSG_FAULT_ALL", MSG_FAULT_ALL);
 	/* the defines the monitor uses directly, per message */
 	def("MSG_DISC_SPEED_ID", MSG_DISC_SPEED_ID);

@@ -75,7 +75,7 @@ files_stm32f4() { [ -d hal/stm32f4 ] && find hal/stm32f4 -name '*.c' | sort; }
 incs_stm32f4=(-Ihal/stm32f4/stm32f405 -Ihal/stm32f4)
 own_stm32f4='^hal/stm32f4/'
 files_stm32f103() { [ -d hal/stm32f103 ] && find hal/stm32f103 -name '*.c' | sort; }
-incs_stm32f103=(-Ihal/stm32f103 -Ihal/stm32f4)
+incs_stm32f103=(-Ihal/stm32f103/stm32f103xb -Ihal/stm32f4)
 own_stm32f103='^hal/stm32f103/'
 
 # Deviation table -> suppressions list

@@ -13,7 +13,7 @@
 #include "e2e_p01.h"
 #include "hal.h"
 #include "bench_ticks.h"
-#include "hal_stm32.h"
+#include "stm32_board.h"
 #include "monitor.h"
 #include "squeal_app.h"
 #include "squeal_msgs.h"

@@ -14,7 +14,8 @@
 
 #include <cmocka.h>
 
-#include "hal_stm32.h"
+#include "bxcan.h"
+#include "sq_status.h"
 
 static uint32_t brp(uint32_t btr) { return (btr & 0x3FFU) + 1U; }
 static uint32_t ts1(uint32_t btr) { return ((btr >> 16) & 0xFU) + 1U; }

@@ -17,7 +17,7 @@
 #include <cmocka.h>
 
 #include "chip.h"
-#include "hal_stm32.h"
+#include "stm32_board.h"
 
 #define SLOT 1024U
 uint8_t calib_flash_sim[2U * SLOT] __attribute__((aligned(4)));
@@ -70,6 +70,13 @@ void hal_watchdog_kick(void)
 {
 }
 
+static bool watchdog_running;
+
+bool stm32_watchdog_running(void)
+{
+	return watchdog_running;
+}
+
 void stm32_fault_raise(uint32_t hal_fault_bits)
 {
 	faults |= hal_fault_bits;
@@ -90,6 +97,7 @@ static int setup(void **state)
 	memset(calib_flash_sim, 0x00, sizeof(calib_flash_sim)); /* garbage, not erased */
 	budget = -1;
 	faults = 0U;
+	watchdog_running = false;
 	return 0;
 }
 
@@ -280,6 +288,29 @@ static void test_short_block_pads_and_bad_args(void **state)
 	assert_int_equal(hal_calib_read(big, sizeof(big)), SQ_EINVAL);
 }
 
+/* issue 14: an erase stalls the CPU longer than a watchdog period, so a
+ * write is refused once the IWDG runs: SQ_EAGAIN, flash untouched (no
+ * erase, no byte programmed), no storage fault; the stored block stays. */
+static void test_write_refused_while_watchdog_runs(void **state)
+{
+	uint8_t a[64];
+	uint8_t b[64];
+	uint8_t out[64];
+	uint8_t before[sizeof(calib_flash_sim)];
+
+	(void)state;
+	fill(a, sizeof(a), 3U);
+	fill(b, sizeof(b), 9U);
+	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
+	memcpy(before, calib_flash_sim, sizeof(before));
+	watchdog_running = true;
+	assert_int_equal(hal_calib_write(b, sizeof(b)), SQ_EAGAIN);
+	assert_memory_equal(before, calib_flash_sim, sizeof(before));
+	assert_int_equal(faults, 0U);
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(a, out, sizeof(a));
+}
+
 static void test_failed_erase_reports_storage_fault(void **state)
 {
 	uint8_t a[16];
@@ -303,6 +334,7 @@ int main(void)
 		cmocka_unit_test_setup(test_sequence_wraps, setup),
 		cmocka_unit_test_setup(test_short_block_pads_and_bad_args, setup),
 		cmocka_unit_test_setup(test_failed_erase_reports_storage_fault, setup),
+		cmocka_unit_test_setup(test_write_refused_while_watchdog_runs, setup),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -11,7 +11,7 @@
  */
 #include "hal.h"
 #include "bench_ticks.h"
-#include "hal_stm32.h"
+#include "stm32_board.h"
 #include "squeal_app.h"
 #include "tv_vectors.h"
 

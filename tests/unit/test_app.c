@@ -393,15 +393,15 @@ static void test_bus_off_and_recovery(void **state)
 		assert_true(i >= 0);
 		assert_true(test_hal_tx_frame((uint32_t)i)->timestamp_us <= T0_US + 1710000U);
 	}
-	/* latched; page 0 at T0 + 2 s... pages: 2 s -> page 2, 3 s -> page 3 */
+	/* latched; pages: 2 s -> page 2, 3 s -> page 3, 4 s -> page 4 (self-test), 5 s -> page 0 */
 	assert_true((diag_faults_at(T0_US + 2000000U, NULL) & MSG_FAULT_BUS_OFF_SEEN) != 0U);
 	assert_true((diag_faults_at(T0_US + 3000000U, NULL) & MSG_FAULT_BUS_OFF_SEEN) != 0U);
 	steady(300U, 500U);
-	run_to(T0_US + 4000000U);
-	assert_true((diag_faults_at(T0_US + 4000000U, &d) & MSG_FAULT_BUS_OFF_SEEN) != 0U);
+	run_to(T0_US + 5000000U);
+	assert_true((diag_faults_at(T0_US + 5000000U, &d) & MSG_FAULT_BUS_OFF_SEEN) != 0U);
 	assert_int_equal(test_frame_sig(d, 12, 4), 0); /* page 0 */
 	assert_int_equal(test_frame_sig(d, 56, 8), 1); /* BusOffCount */
-	assert_int_equal(test_frame_sig(d, 32, 24), 4); /* Uptime_s */
+	assert_int_equal(test_frame_sig(d, 32, 24), 5); /* Uptime_s */
 }
 
 /* ---- TX queue full --------------------------------------------------------------- */

@@ -314,6 +314,59 @@ static void test_out_of_range_field_with_good_crc_rejected(void **state)
 	assert_true(tried >= 50U);
 }
 
+/* RM0090 32.7.7: a bit of 1 + BS1 + BS2 quanta (8..25, BS1 <= 16, BS2 <= 8)
+ * of BRP (1..1024) clocks; exact when clock = rate * quanta * BRP. */
+static bool bxcan_exact(uint32_t clock_hz, uint32_t bps)
+{
+	for (uint32_t ntq = 8U; ntq <= 25U; ntq++) {
+		if (clock_hz % (bps * ntq) == 0U && clock_hz / (bps * ntq) <= 1024U) {
+			return true;
+		}
+	}
+	return false;
+}
+
+/* issue 14: a rate the ECU's CAN clock cannot make exactly is refused by
+ * the calibration, with its own reason; every rate it accepts is exact on
+ * each clock the ECU runs on (APB1 42 MHz F4, 36 MHz F103, HSI fallback
+ * 16 MHz F4 and 8 MHz F103), so hal_can_set_bitrate() never refuses it. */
+static void test_bitrate_must_be_exact(void **state)
+{
+	static const uint32_t clocks[] = { 42000000U, 36000000U, 16000000U, 8000000U };
+	uint8_t buf[CALIB_BLOCK_LEN];
+	calib_t out;
+	uint32_t accepted = 0U;
+
+	(void)state;
+	for (uint32_t kbps = 10U; kbps <= 1000U; kbps++) {
+		calib_error_t why = CALIB_OK;
+		int rc;
+
+		encode_default(buf);
+		put_le(&buf[41], kbps, 2U);
+		reseal(buf);
+		rc = calib_decode(buf, sizeof(buf), &out, &why);
+		if (rc == SQ_OK) {
+			accepted++;
+			for (uint32_t c = 0U; c < 4U; c++) {
+				if (!bxcan_exact(clocks[c], kbps * 1000U)) {
+					fail_msg("%u kbit/s accepted but not exact at %u Hz", kbps, clocks[c]);
+				}
+			}
+		} else {
+			assert_int_equal(rc, SQ_EBADMSG);
+			assert_int_equal(why, CALIB_ERR_BITRATE);
+		}
+	}
+	assert_int_equal(accepted, 8U); /* 10 20 50 100 125 250 500 1000 */
+	encode_default(buf);
+	put_le(&buf[41], 800U, 2U);
+	reseal(buf);
+	assert_int_equal(calib_decode(buf, sizeof(buf), &out, NULL), SQ_EBADMSG);
+	assert_false(bxcan_exact(42000000U, 800000U)); /* why: 52.5 clocks per bit */
+	assert_string_not_equal(calib_error_name(CALIB_ERR_BITRATE), "?");
+}
+
 /* Cross-field rules: distinct identifiers, mu_0 >= 0. */
 static void test_cross_field_rules(void **state)
 {
@@ -444,6 +497,7 @@ int main(void)
 		cmocka_unit_test(test_round_trip_every_field_at_limits),
 		cmocka_unit_test(test_out_of_range_field_with_good_crc_rejected),
 		cmocka_unit_test(test_cross_field_rules),
+		cmocka_unit_test(test_bitrate_must_be_exact),
 		cmocka_unit_test(test_every_single_byte_corruption_rejected),
 		cmocka_unit_test(test_header_errors),
 	};

@@ -374,7 +374,7 @@ static void test_braking_warning_levels(void **state)
 }
 
 /* SquealStatus every 10 ms plus at once on a change; Detail/Detail2 every
- * 100 ms, Diag every 1000 ms with pages 0,1,2,3,0,...; contents of the
+ * 100 ms, Diag every 1000 ms with pages 0,1,2,3,4,0,...; contents of the
  * detail frames against the reference. */
 static void test_braking_tx_schedule_and_details(void **state)
 {
@@ -472,7 +472,7 @@ static void test_braking_tx_schedule_and_details(void **state)
 
 		assert_int_equal(f->timestamp_us - T0_US,
 				 (uint64_t)ndiag * EXP_DBC_SQUEALDIAG_CYCLE_MS * 1000U);
-		assert_int_equal(test_frame_sig(f->data, 12, 4), ndiag % 4U);
+		assert_int_equal(test_frame_sig(f->data, 12, 4), ndiag % MSG_DIAG_PAGE_COUNT);
 		if (test_frame_sig(f->data, 12, 4) == 0U) {
 			assert_int_equal(test_frame_sig(f->data, 32, 24), ndiag); /* uptime s */
 		}

@@ -535,20 +535,31 @@ static void test_layout_squeal_status_extremes(void **state)
 
 static void test_layout_squeal_diag_every_page(void **state)
 {
-	static const uint8_t expect[4][8] = {
+	/* page 4 by hand: counter 13 | page 4 << 4 = 0x4D; Fault_SelfTest =
+	 * bit 27 = byte 3 bit 3; HseFreq 80 (8.0 MHz) = byte 4; ResetCause 4 |
+	 * BorLevel 3 << 3 | LoopbackCan1 0 << 6 = 0x1C; LoopbackCan2 2 |
+	 * (StackHighWater 480 & 0x3F) << 2 = 0x82, 480 >> 6 = 0x07 */
+	static const uint8_t expect[5][8] = {
 		{ 0x11, 0x09, 0x21, 0x04, 0x56, 0x34, 0x12, 0x07 },
-		{ 0x22, 0x1A, 0xFF, 0x07, 0x45, 0x03, 0xEF, 0xBE },
+		{ 0x22, 0x1A, 0xFF, 0x0F, 0x45, 0x03, 0xEF, 0xBE },
 		{ 0x33, 0x2B, 0x02, 0x00, 0x01, 0x00, 0xFF, 0xFF },
 		{ 0x44, 0x3C, 0x00, 0x04, 0x2C, 0x01, 0x02, 0x00 },
+		{ 0x55, 0x4D, 0x00, 0x08, 0x50, 0x1C, 0x82, 0x07 },
 	};
-	msg_squeal_diag_t m[4];
+	msg_squeal_diag_t m[5];
 	uint8_t d[8];
 	uint8_t dlc = 0;
 
 	(void)state;
 	memset(m, 0, sizeof(m));
 	/* every counter filled on every page: pack must send only the page's */
-	for (int p = 0; p < 4; p++) {
+	for (int p = 0; p < 5; p++) {
+		m[p].hse_freq_100khz = 80;
+		m[p].reset_cause = 4;
+		m[p].bor_level = 3;
+		m[p].loopback_can1 = 0;
+		m[p].loopback_can2 = 2;
+		m[p].stack_high_water_b = 480;
 		m[p].uptime_s = 0x123456;
 		m[p].bus_off_count = 7;
 		m[p].worst_task_time_us = 0x0345;
@@ -563,7 +574,8 @@ static void test_layout_squeal_diag_every_page(void **state)
 	m[1].crc = 0x22; m[1].counter = 10; m[1].fault_bits = MSG_FAULT_ALL;
 	m[2].crc = 0x33; m[2].counter = 11; m[2].fault_bits = MSG_FAULT_FORCE_STALE;
 	m[3].crc = 0x44; m[3].counter = 12; m[3].fault_bits = MSG_FAULT_TX_OVERFLOW;
-	for (int p = 0; p < 4; p++) {
+	m[4].crc = 0x55; m[4].counter = 13; m[4].fault_bits = MSG_FAULT_SELF_TEST;
+	for (int p = 0; p < 5; p++) {
 		msg_squeal_diag_t u;
 
 		assert_int_equal(msg_squeal_diag_pack(&m[p], d, &dlc), SQ_OK);
@@ -584,6 +596,11 @@ static void test_layout_squeal_diag_every_page(void **state)
 		assert_int_equal(u.e2e_error_count_force, p == 2 ? 65535 : 0);
 		assert_int_equal(u.tx_overflow_count, p == 3 ? 300 : 0);
 		assert_int_equal(u.rx_bad_frame_count, p == 3 ? 2 : 0);
+		assert_int_equal(u.hse_freq_100khz, p == 4 ? 80 : 0);
+		assert_int_equal(u.reset_cause, p == 4 ? 4 : 0);
+		assert_int_equal(u.bor_level, p == 4 ? 3 : 0);
+		assert_int_equal(u.loopback_can2, p == 4 ? 2 : 0);
+		assert_int_equal(u.stack_high_water_b, p == 4 ? 480 : 0);
 	}
 }
 
@@ -809,7 +826,23 @@ static void test_pack_rejects_out_of_range_values(void **state)
 		assert_int_equal(msg_squeal_diag_pack(&m, d, &dlc), SQ_OK);
 		memcpy(d, before, sizeof(d));
 		dlc = 0x77;
-		m.fault_bits = 1U << 11;
+		m.fault_bits = 1U << 12; /* one above Fault_SelfTest */
+		assert_int_equal(msg_squeal_diag_pack(&m, d, &dlc), SQ_ERANGE);
+		m.fault_bits = 0U;
+		m.page = MSG_DIAG_PAGE_SELFTEST; /* page 4: each field in range */
+		m.hse_freq_100khz = 255U; /* not available: allowed */
+		m.bor_level = 7U;
+		m.stack_high_water_b = 16383U;
+		assert_int_equal(msg_squeal_diag_pack(&m, d, &dlc), SQ_OK);
+		memcpy(d, before, sizeof(d));
+		dlc = 0x77;
+		m.reset_cause = 7U; /* 0..6 */
+		assert_int_equal(msg_squeal_diag_pack(&m, d, &dlc), SQ_ERANGE);
+		m.reset_cause = 0U;
+		m.bor_level = 4U; /* 0..3 or 7 */
+		assert_int_equal(msg_squeal_diag_pack(&m, d, &dlc), SQ_ERANGE);
+		m.bor_level = 3U;
+		m.stack_high_water_b = 16384U; /* 14 bits */
 		assert_int_equal(msg_squeal_diag_pack(&m, d, &dlc), SQ_ERANGE);
 	}
 	assert_memory_equal(d, before, sizeof(d));
@@ -848,8 +881,8 @@ static void test_unpack_rejects_wrong_dlc_for_every_message(void **state)
 	assert_int_equal(msg_squeal_status_unpack(NULL, 8, &st), SQ_EBADMSG);
 	expect_assert_failure(msg_squeal_status_unpack(zeros, 8, NULL));
 	{
-		/* diag page 4 does not exist */
-		const uint8_t bad_page[8] = { 0, 0x40, 0, 0, 0, 0, 0, 0 };
+		/* diag page 5 does not exist */
+		const uint8_t bad_page[8] = { 0, 0x50, 0, 0, 0, 0, 0, 0 };
 		memset(&dg, 0x5A, sizeof(dg));
 		assert_int_equal(msg_squeal_diag_unpack(bad_page, 8, &dg), SQ_EBADMSG);
 		assert_int_equal(dg.page, 0x5A); /* untouched */

@@ -2,7 +2,7 @@
 /*
  * STM32F405/407 (RM0090): addresses, bits and interrupt numbers of the
  * peripherals this HAL touches, and the chip's clock plan. The F103 port has
- * its own chip.h with the same names (hal/stm32f103/chip.h). Kept in its own
+ * its own chip.h with the same names (hal/stm32f103/stm32f103xb/chip.h). Kept in its own
  * directory so that the -I order picks the chip.
  */
 #ifndef CHIP_H
@@ -19,128 +19,165 @@
 #define CHIP_IRQ_CAN1_RX0 20U
 #define CHIP_IRQ_CAN1_RX1 21U
 #define CHIP_IRQ_CAN1_SCE 22U
+#define CHIP_IRQ_CAN2_TX  63U
+#define CHIP_IRQ_CAN2_RX0 64U
+#define CHIP_IRQ_CAN2_RX1 65U
+#define CHIP_IRQ_CAN2_SCE 66U
 
-/* Clock plan: HSE 8 MHz -> PLL (M 8, N 336, P 2, Q 7) -> 168 MHz SYSCLK,
+/* bxCAN: CAN1 (master, owns the 28 filter banks) and CAN2 (slave). */
+#define CHIP_CAN_BUSES 2U
+#define CHIP_CAN_FILTER_BANKS 28U
+
+/* Clock plan: HSE 8 MHz -> PLL (M 4: 2 MHz VCO input as RM0090 recommends,
+ * N 168, P 2, Q 7) -> 168 MHz SYSCLK,
  * AHB 168 MHz, APB1 42 MHz (bxCAN), APB2 84 MHz, USB/SDIO 48 MHz. */
-#define CHIP_HSI_HZ      16000000UL
-#define CHIP_HSE_HZ       8000000UL
-#define CHIP_SYSCLK_HZ  168000000UL
-#define CHIP_APB1_HZ     42000000UL
+#define CHIP_HSI_HZ      16000000U
+#define CHIP_HSE_HZ       8000000U
+#define CHIP_SYSCLK_HZ  168000000U
+#define CHIP_APB1_HZ     42000000U
+
+/* LSI (IWDG clock), datasheet worst case: the reload is computed for the
+ * fastest one, so the watchdog never fires before its timeout. */
+#define CHIP_LSI_MAX_HZ 47000U
+/* DBGMCU: IWDG stopped while the core is halted by a debugger. */
+#define CHIP_DBGMCU_IWDG_REG REG32(0xE0042008U)
+#define CHIP_DBGMCU_IWDG_STOP (1U << 12)
 
 /* Peripheral bases */
-#define CAN1_BASE  0x40006400UL
-#define IWDG_BASE  0x40003000UL
-#define PWR_BASE   0x40007000UL
-#define GPIOB_BASE 0x40020400UL
-#define RCC_BASE   0x40023800UL
-#define FLASH_R_BASE 0x40023C00UL
+#define CAN1_BASE  0x40006400U
+#define CAN2_BASE  0x40006800U
+#define IWDG_BASE  0x40003000U
+#define PWR_BASE   0x40007000U
+#define TIM11_BASE 0x40014800U
+#define GPIOB_BASE 0x40020400U
+#define RCC_BASE   0x40023800U
+#define FLASH_R_BASE 0x40023C00U
 
 /* RCC (RM0090 section 7.3) */
-#define RCC_CR       REG32(RCC_BASE + 0x00UL)
-#define RCC_PLLCFGR  REG32(RCC_BASE + 0x04UL)
-#define RCC_CFGR     REG32(RCC_BASE + 0x08UL)
-#define RCC_CIR      REG32(RCC_BASE + 0x0CUL)
-#define RCC_AHB1ENR  REG32(RCC_BASE + 0x30UL)
-#define RCC_APB1RSTR REG32(RCC_BASE + 0x20UL)
-#define RCC_APB1ENR  REG32(RCC_BASE + 0x40UL)
-#define RCC_CSR      REG32(RCC_BASE + 0x74UL)
+#define RCC_CR       REG32(RCC_BASE + 0x00U)
+#define RCC_PLLCFGR  REG32(RCC_BASE + 0x04U)
+#define RCC_CFGR     REG32(RCC_BASE + 0x08U)
+#define RCC_CIR      REG32(RCC_BASE + 0x0CU)
+#define RCC_AHB1ENR  REG32(RCC_BASE + 0x30U)
+#define RCC_APB1RSTR REG32(RCC_BASE + 0x20U)
+#define RCC_APB1ENR  REG32(RCC_BASE + 0x40U)
+#define RCC_APB2ENR  REG32(RCC_BASE + 0x44U)
+#define RCC_CSR      REG32(RCC_BASE + 0x74U)
 
-#define RCC_CR_HSION  (1UL << 0)
-#define RCC_CR_HSIRDY (1UL << 1)
-#define RCC_CR_HSEON  (1UL << 16)
-#define RCC_CR_HSERDY (1UL << 17)
-#define RCC_CR_HSEBYP (1UL << 18)
-#define RCC_CR_CSSON  (1UL << 19)
-#define RCC_CR_PLLON  (1UL << 24)
-#define RCC_CR_PLLRDY (1UL << 25)
+#define RCC_CR_HSION  (1U << 0)
+#define RCC_CR_HSIRDY (1U << 1)
+#define RCC_CR_HSEON  (1U << 16)
+#define RCC_CR_HSERDY (1U << 17)
+#define RCC_CR_HSEBYP (1U << 18)
+#define RCC_CR_CSSON  (1U << 19)
+#define RCC_CR_PLLON  (1U << 24)
+#define RCC_CR_PLLRDY (1U << 25)
 
 #define RCC_PLLCFGR_PLLM_SHIFT 0U
 #define RCC_PLLCFGR_PLLN_SHIFT 6U
 #define RCC_PLLCFGR_PLLP_SHIFT 16U /* 0: /2 */
-#define RCC_PLLCFGR_PLLSRC_HSE (1UL << 22)
+#define RCC_PLLCFGR_PLLSRC_HSE (1U << 22)
 #define RCC_PLLCFGR_PLLQ_SHIFT 24U
 
-#define RCC_CFGR_SW_MSK    3UL
-#define RCC_CFGR_SW_HSI    0UL
-#define RCC_CFGR_SW_PLL    2UL
-#define RCC_CFGR_SWS_MSK   (3UL << 2)
-#define RCC_CFGR_SWS_PLL   (2UL << 2)
-#define RCC_CFGR_HPRE_MSK  (0xFUL << 4)
-#define RCC_CFGR_PPRE1_MSK (7UL << 10)
-#define RCC_CFGR_PPRE1_DIV4 (5UL << 10)
-#define RCC_CFGR_PPRE2_MSK (7UL << 13)
-#define RCC_CFGR_PPRE2_DIV2 (4UL << 13)
+#define RCC_CFGR_SW_MSK    3U
+#define RCC_CFGR_SW_HSI    0U
+#define RCC_CFGR_SW_PLL    2U
+#define RCC_CFGR_SWS_MSK   (3U << 2)
+#define RCC_CFGR_SWS_PLL   (2U << 2)
+#define RCC_CFGR_HPRE_MSK  (0xFU << 4)
+#define RCC_CFGR_PPRE1_MSK (7U << 10)
+#define RCC_CFGR_PPRE1_DIV4 (5U << 10)
+#define RCC_CFGR_PPRE2_MSK (7U << 13)
+#define RCC_CFGR_PPRE2_DIV2 (4U << 13)
+#define RCC_CFGR_RTCPRE_SHIFT 16U
+#define RCC_CFGR_RTCPRE_MSK (0x1FU << 16)
+#define RCC_CIR_CSSC (1U << 23)
+#define RCC_APB2ENR_TIM11EN (1U << 18)
 
-#define RCC_AHB1ENR_GPIOBEN (1UL << 1)
-#define RCC_APB1ENR_CAN1EN  (1UL << 25)
-#define RCC_APB1ENR_PWREN   (1UL << 28)
-#define RCC_APB1RSTR_CAN1RST (1UL << 25)
+#define RCC_AHB1ENR_GPIOBEN (1U << 1)
+#define RCC_APB1ENR_CAN1EN  (1U << 25)
+#define RCC_APB1ENR_CAN2EN  (1U << 26)
+#define RCC_APB1ENR_PWREN   (1U << 28)
+#define RCC_APB1RSTR_CAN1RST (1U << 25)
 
-#define RCC_CSR_LSION    (1UL << 0)
-#define RCC_CSR_RMVF     (1UL << 24)
-#define RCC_CSR_BORRSTF  (1UL << 25)
-#define RCC_CSR_PINRSTF  (1UL << 26)
-#define RCC_CSR_PORRSTF  (1UL << 27)
-#define RCC_CSR_SFTRSTF  (1UL << 28)
-#define RCC_CSR_IWDGRSTF (1UL << 29)
-#define RCC_CSR_WWDGRSTF (1UL << 30)
-#define RCC_CSR_LPWRRSTF (1UL << 31)
+#define RCC_CSR_LSION    (1U << 0)
+#define RCC_CSR_RMVF     (1U << 24)
+#define RCC_CSR_BORRSTF  (1U << 25)
+#define RCC_CSR_PINRSTF  (1U << 26)
+#define RCC_CSR_PORRSTF  (1U << 27)
+#define RCC_CSR_SFTRSTF  (1U << 28)
+#define RCC_CSR_IWDGRSTF (1U << 29)
+#define RCC_CSR_WWDGRSTF (1U << 30)
+#define RCC_CSR_LPWRRSTF (1U << 31)
 
 /* PWR: regulator scale 1 is needed above 144 MHz */
-#define PWR_CR     REG32(PWR_BASE + 0x00UL)
-#define PWR_CR_VOS (1UL << 14)
+#define PWR_CR     REG32(PWR_BASE + 0x00U)
+#define PWR_CR_VOS (1U << 14)
 
 /* Embedded flash interface (RM0090 section 3.9) */
-#define FLASH_ACR  REG32(FLASH_R_BASE + 0x00UL)
-#define FLASH_KEYR REG32(FLASH_R_BASE + 0x04UL)
-#define FLASH_SR   REG32(FLASH_R_BASE + 0x0CUL)
-#define FLASH_CR   REG32(FLASH_R_BASE + 0x10UL)
-#define FLASH_ACR_LATENCY_MSK 7UL
-#define FLASH_ACR_LATENCY_5WS 5UL /* 150..168 MHz at 2.7..3.6 V */
-#define FLASH_ACR_PRFTEN (1UL << 8)
-#define FLASH_ACR_ICEN   (1UL << 9)
-#define FLASH_ACR_DCEN   (1UL << 10)
-#define FLASH_ACR_ICRST  (1UL << 11)
-#define FLASH_ACR_DCRST  (1UL << 12)
-#define FLASH_KEY1 0x45670123UL
-#define FLASH_KEY2 0xCDEF89ABUL
-#define FLASH_SR_EOP    (1UL << 0)
-#define FLASH_SR_OPERR  (1UL << 1)
-#define FLASH_SR_WRPERR (1UL << 4)
-#define FLASH_SR_PGAERR (1UL << 5)
-#define FLASH_SR_PGPERR (1UL << 6)
-#define FLASH_SR_PGSERR (1UL << 7)
-#define FLASH_SR_BSY    (1UL << 16)
+#define FLASH_ACR  REG32(FLASH_R_BASE + 0x00U)
+#define FLASH_KEYR REG32(FLASH_R_BASE + 0x04U)
+#define FLASH_SR   REG32(FLASH_R_BASE + 0x0CU)
+#define FLASH_CR   REG32(FLASH_R_BASE + 0x10U)
+#define FLASH_OPTCR REG32(FLASH_R_BASE + 0x14U)
+#define FLASH_OPTCR_BOR_LEV_SHIFT 2U
+#define FLASH_OPTCR_BOR_LEV_MSK (3U << 2) /* 00 level 3 (2.7 V) .. 11 off */
+
+/* TIM11 (RM0090 section 17): input capture of HSE_RTC on channel 1 */
+#define TIM11_CR1   REG32(TIM11_BASE + 0x00U)
+#define TIM11_SR    REG32(TIM11_BASE + 0x10U)
+#define TIM11_CCMR1 REG32(TIM11_BASE + 0x18U)
+#define TIM11_CCER  REG32(TIM11_BASE + 0x20U)
+#define TIM11_PSC   REG32(TIM11_BASE + 0x28U)
+#define TIM11_ARR   REG32(TIM11_BASE + 0x2CU)
+#define TIM11_CCR1  REG32(TIM11_BASE + 0x34U)
+#define TIM11_OR    REG32(TIM11_BASE + 0x50U)
+#define TIM_CR1_CEN (1U << 0)
+#define TIM_SR_CC1IF (1U << 1)
+#define TIM_CCMR1_CC1S_TI1 1U
+#define TIM_CCMR1_IC1PSC_8 (3U << 2)
+#define TIM_CCER_CC1E (1U << 0)
+#define TIM11_OR_TI1_HSE_RTC 2U
+#define FLASH_ACR_LATENCY_MSK 7U
+#define FLASH_ACR_LATENCY_5WS 5U /* 150..168 MHz at 2.7..3.6 V */
+#define FLASH_ACR_PRFTEN (1U << 8)
+#define FLASH_ACR_ICEN   (1U << 9)
+#define FLASH_ACR_DCEN   (1U << 10)
+#define FLASH_ACR_ICRST  (1U << 11)
+#define FLASH_ACR_DCRST  (1U << 12)
+#define FLASH_KEY1 0x45670123U
+#define FLASH_KEY2 0xCDEF89ABU
+#define FLASH_SR_EOP    (1U << 0)
+#define FLASH_SR_OPERR  (1U << 1)
+#define FLASH_SR_WRPERR (1U << 4)
+#define FLASH_SR_PGAERR (1U << 5)
+#define FLASH_SR_PGPERR (1U << 6)
+#define FLASH_SR_PGSERR (1U << 7)
+#define FLASH_SR_BSY    (1U << 16)
 #define FLASH_SR_ERRORS (FLASH_SR_OPERR | FLASH_SR_WRPERR | FLASH_SR_PGAERR | \
 			 FLASH_SR_PGPERR | FLASH_SR_PGSERR)
-#define FLASH_CR_PG   (1UL << 0)
-#define FLASH_CR_SER  (1UL << 1)
+#define FLASH_CR_PG   (1U << 0)
+#define FLASH_CR_SER  (1U << 1)
 #define FLASH_CR_SNB_SHIFT 3U
-#define FLASH_CR_SNB_MSK (0xFUL << 3)
-#define FLASH_CR_PSIZE_X32 (2UL << 8)
-#define FLASH_CR_PSIZE_MSK (3UL << 8)
-#define FLASH_CR_STRT (1UL << 16)
-#define FLASH_CR_LOCK (1UL << 31)
+#define FLASH_CR_SNB_MSK (0xFU << 3)
+#define FLASH_CR_PSIZE_X32 (2U << 8)
+#define FLASH_CR_PSIZE_MSK (3U << 8)
+#define FLASH_CR_STRT (1U << 16)
+#define FLASH_CR_LOCK (1U << 31)
 
 /* GPIO (RM0090 section 8.4) */
-#define GPIO_MODER(b)   REG32((b) + 0x00UL)
-#define GPIO_OTYPER(b)  REG32((b) + 0x04UL)
-#define GPIO_OSPEEDR(b) REG32((b) + 0x08UL)
-#define GPIO_PUPDR(b)   REG32((b) + 0x0CUL)
-#define GPIO_AFRH(b)    REG32((b) + 0x24UL)
-#define GPIO_MODE_AF 2UL
-#define GPIO_PUPD_UP 1UL
-#define GPIO_SPEED_HIGH 2UL
-#define GPIO_AF9_CAN1 9UL
+#define GPIO_MODER(b)   REG32((b) + 0x00U)
+#define GPIO_OTYPER(b)  REG32((b) + 0x04U)
+#define GPIO_OSPEEDR(b) REG32((b) + 0x08U)
+#define GPIO_PUPDR(b)   REG32((b) + 0x0CU)
+#define GPIO_AFRL(b)    REG32((b) + 0x20U)
+#define GPIO_AFRH(b)    REG32((b) + 0x24U)
+#define GPIO_MODE_AF 2U
+#define GPIO_PUPD_UP 1U
+#define GPIO_SPEED_HIGH 2U
+#define GPIO_AF9_CAN1 9U
 
-/* Chip-specific parts of the HAL (clock.c, flash.c of each chip). */
-#include <stdbool.h>
-#include <stdint.h>
-int chip_clock_init(void);            /* SQ_OK or SQ_EAGAIN (fell back to HSI) */
-uint32_t chip_core_hz(void);
-uint32_t chip_apb1_hz(void);
-void chip_can_pins_init(void);        /* GPIO + RCC clock of CAN1 */
-int chip_flash_erase_slot(uint32_t slot);
-int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
+/* Chip-specific parts of the HAL (clock.c, can_pins.c, flash.c). */
+#include "chip_api.h"
 
 #endif /* CHIP_H */
