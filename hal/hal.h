@@ -219,7 +219,39 @@ hal_reset_reason_t hal_reset_reason(void);
 #define HAL_FAULT_CLOCK_FALLBACK (1U << 0) /* HSE/PLL failed: running on HSI */
 #define HAL_FAULT_CAN_INIT       (1U << 1) /* CAN controller did not start   */
 #define HAL_FAULT_CALIB_STORAGE  (1U << 2) /* calibration storage unusable   */
+#define HAL_FAULT_SELFTEST       (1U << 3) /* a bring-up self-test check failed (BOR level, stack) */
 uint32_t hal_platform_faults(void);
+
+/* ---- bring-up self-test ---------------------------------------------------- */
+
+/* Result of one controller's silent-loopback test (a frame sent to itself
+ * while nothing reaches the bus). */
+typedef enum {
+	HAL_LOOPBACK_PASS = 0,        /* the frame came back unchanged          */
+	HAL_LOOPBACK_FAIL = 1,        /* the controller ran, the frame did not  */
+	HAL_LOOPBACK_UNAVAILABLE = 2, /* controller not running (no clock, QEMU) */
+	HAL_LOOPBACK_NO_BUS = 3       /* the chip has no such controller        */
+} hal_loopback_t;
+
+#define HAL_SELFTEST_NOT_MEASURED 0xFFFFFFFFUL
+#define HAL_SELFTEST_NO_BOR 0xFFU
+
+/* What the platform measured about itself at this start, before the
+ * firmware ran (the ECU's bring-up self-test). The reset cause is
+ * hal_reset_reason(). */
+typedef struct {
+	uint32_t hse_hz;           /* measured crystal; 0 none; NOT_MEASURED  */
+	uint32_t stack_high_water_prev_b; /* previous run's deepest stack use;
+					   * NOT_MEASURED after power-on */
+	uint8_t bor_level;         /* brown-out reset level 0..3 (3: VDD >= 2.7 V);
+				    * HAL_SELFTEST_NO_BOR: the chip has none */
+	uint8_t loopback[HAL_CAN_BUSES]; /* hal_loopback_t per bus             */
+	bool failed;               /* a check failed (its HAL_FAULT_* bit is set) */
+} hal_selftest_t;
+
+/* SQ_OK with *result filled; SQ_ENOTSUP where the platform has no such
+ * test (Linux, the in-memory bus). */
+int hal_selftest(hal_selftest_t *result);
 
 /* ---- contracts ----------------------------------------------------------- */
 

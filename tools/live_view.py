@@ -128,7 +128,7 @@ class LiveView:
         names = [n for n in DC.CORNERS if n in self.corners] or ["FL"]
         if self.fig is not None:
             plt.close(self.fig)
-        self.fig = plt.figure(figsize=(11.0, 4.2 * len(names)), dpi=80)
+        self.fig = plt.figure(figsize=(11.0, 5.0 * len(names)), dpi=80)
         gs = self.fig.add_gridspec(2 * len(names), 2, width_ratios=(1.25, 1.0), hspace=0.45,
                                    wspace=0.25)
         self.axes = {}

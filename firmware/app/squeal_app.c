@@ -79,6 +79,45 @@ static int start_buses(const calib_t *cal)
 	return first_error;
 }
 
+/* The platform's bring-up self-test in SquealDiag's raw units (page 4;
+ * firmware/protocol/squeal.dbc). A platform without one leaves the page
+ * "not measured". */
+static uint8_t hse_100khz(uint32_t hz)
+{
+	uint32_t v;
+
+	if (hz == HAL_SELFTEST_NOT_MEASURED) {
+		return (uint8_t)MSG_HSE_FREQ_NA;
+	}
+	v = (hz / 1000U + 50U) / 100U;
+	return (v > MSG_HSE_FREQ_MAX) ? (uint8_t)MSG_HSE_FREQ_MAX : (uint8_t)v;
+}
+
+static void report_selftest(void)
+{
+	hal_selftest_t st;
+	monitor_selftest_t m;
+	uint32_t bus;
+
+	if (hal_selftest(&st) != SQ_OK) {
+		return;
+	}
+	m.hse_freq_100khz = hse_100khz(st.hse_hz);
+	m.reset_cause = (uint8_t)hal_reset_reason();
+	m.bor_level = (st.bor_level == HAL_SELFTEST_NO_BOR) ? (uint8_t)MSG_BOR_LEVEL_NA :
+		st.bor_level;
+	for (bus = 0U; bus < 2U; bus++) { /* LoopbackCan1, LoopbackCan2 */
+		m.loopback[bus] = (bus < HAL_CAN_BUSES) ? st.loopback[bus] :
+			(uint8_t)HAL_LOOPBACK_NO_BUS;
+	}
+	m.stack_high_water_b = (st.stack_high_water_prev_b == HAL_SELFTEST_NOT_MEASURED) ?
+		(uint16_t)MSG_STACK_HWM_UNKNOWN :
+		((st.stack_high_water_prev_b >= MSG_STACK_HWM_UNKNOWN) ?
+		 (uint16_t)(MSG_STACK_HWM_UNKNOWN - 1U) : (uint16_t)st.stack_high_water_prev_b);
+	m.failed = st.failed;
+	(void)monitor_set_selftest(&app_monitor, &m);
+}
+
 int squeal_app_init(void)
 {
 	calib_t cal;
@@ -90,6 +129,7 @@ int squeal_app_init(void)
 	rc = monitor_init(&app_monitor, &cal, calib_invalid, hal_platform_faults(),
 			  hal_time_us());
 	note_init(&first_error, rc, false);
+	report_selftest();
 	if (calib_invalid && (first_error == SQ_OK)) {
 		first_error = SQ_EBADMSG;
 	}

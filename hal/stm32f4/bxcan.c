@@ -9,7 +9,9 @@
  *   TX: hal_can_send() queues in software; the three mailboxes are fed
  *       from the queue in order (TXFP: chronological transmit order) by the
  *       sender and by the mailbox-empty interrupt.
- *   Errors: the status-change interrupt counts error frames (LEC) and
+ *   Errors: the status-change interrupt counts error frames (LEC), hands
+ *       each on as a HAL_CAN_FLAG_ERR frame in the receive ring (as every
+ *       backend does; id = SocketCAN error class), and counts
  *       bus-off events; the controller leaves bus-off by itself (ABOM), and
  *       TEC/REC are read live.
  *   Filters: 32-bit mask mode, one bank per hal_can_filter_t. The banks live
@@ -633,6 +635,39 @@ static void tx_irq(uint8_t bus)
 	tx_pump(bus); /* interrupts of this priority are not re-entered */
 }
 
+/*
+ * An error the controller saw, handed on like every other backend does: a
+ * HAL_CAN_FLAG_ERR frame in the receive ring, its id the error class in
+ * SocketCAN's numbering (linux/can/error.h: 0x20 no ACK, 0x08 protocol
+ * violation), so the monitor counts it the same way on every backend. The
+ * SCE and RX0 interrupts share one priority: still a single producer.
+ */
+#define ERR_CLASS_PROT 0x08U
+#define ERR_CLASS_ACK 0x20U
+#define LEC_ACK_ERROR 3U
+static void rx_push_error(bus_state_t *st, uint32_t esr, uint32_t lec)
+{
+	uint32_t head = st->rx_head;
+	hal_can_frame_t *f = &st->rx_ring[head % RX_RING_LEN];
+	uint32_t i;
+
+	if (head - st->rx_tail >= RX_RING_LEN) {
+		st->rx_overruns++;
+		return;
+	}
+	f->id = (lec == LEC_ACK_ERROR) ? ERR_CLASS_ACK : ERR_CLASS_PROT;
+	f->flags = HAL_CAN_FLAG_ERR;
+	f->dlc = HAL_CAN_MAX_DLEN;
+	for (i = 0U; i < HAL_CAN_MAX_DLEN; i++) {
+		f->data[i] = 0U;
+	}
+	f->data[6] = (uint8_t)((esr >> CAN_ESR_TEC_SHIFT) & 0xFFU); /* as SocketCAN */
+	f->data[7] = (uint8_t)((esr >> CAN_ESR_REC_SHIFT) & 0xFFU);
+	f->timestamp_us = hal_time_us();
+	cm_dmb(); /* the frame is complete before the head moves */
+	st->rx_head = head + 1U;
+}
+
 static void sce_irq(uint8_t bus)
 {
 	bus_state_t *st = &can_bus[bus];
@@ -644,6 +679,7 @@ static void sce_irq(uint8_t bus)
 	if (lec != 0U && lec != CAN_ESR_LEC_USER) {
 		st->error_frames++;
 		can_wr(base, CAN_ESR, CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT);
+		rx_push_error(st, esr, lec);
 	}
 	if (boff && !st->bus_off_seen) {
 		st->bus_off_count++;

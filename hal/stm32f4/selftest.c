@@ -83,3 +83,21 @@ const stm32_selftest_t *stm32_selftest(void)
 {
 	return &result;
 }
+
+/* hal.h's view of the same result, for the firmware (SquealDiag page 4). */
+int hal_selftest(hal_selftest_t *out)
+{
+	uint32_t bus;
+
+	HAL_REQUIRE(out != NULL);
+	out->hse_hz = result.hse_hz;
+	out->stack_high_water_prev_b = (result.stack_hwm_prev == STM32_STACK_HWM_UNKNOWN) ?
+		HAL_SELFTEST_NOT_MEASURED : result.stack_hwm_prev;
+	out->bor_level = (result.bor_level == CHIP_BOR_NONE) ? (uint8_t)HAL_SELFTEST_NO_BOR :
+		(uint8_t)result.bor_level;
+	for (bus = 0U; bus < HAL_CAN_BUSES; bus++) {
+		out->loopback[bus] = (uint8_t)result.loopback[bus];
+	}
+	out->failed = result.faults != 0U;
+	return SQ_OK;
+}

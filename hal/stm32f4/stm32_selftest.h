@@ -37,8 +37,7 @@ typedef struct {
 const stm32_selftest_t *stm32_selftest_run(uint32_t stack_reserve_bytes);
 const stm32_selftest_t *stm32_selftest(void);
 
-/* Platform fault bit for self-test failures that hal.h has no bit for
- * (BOR level, stack); proposed for hal.h as HAL_FAULT_SELFTEST. */
-#define STM32_FAULT_SELFTEST (1U << 3)
+/* Platform fault bit for self-test failures (BOR level, stack). */
+#define STM32_FAULT_SELFTEST HAL_FAULT_SELFTEST
 
 #endif /* STM32_SELFTEST_H */

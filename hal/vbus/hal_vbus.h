@@ -121,5 +121,7 @@ uint32_t hal_vbus_watchdog_kicks(void);
 uint32_t hal_vbus_watchdog_timeout_ms(void); /* 0 until started */
 void hal_vbus_set_platform_faults(uint32_t bits);
 void hal_vbus_set_reset_reason(hal_reset_reason_t why);
+/* What hal_selftest() reports (NULL: SQ_ENOTSUP, the default). Copied. */
+void hal_vbus_set_selftest(const hal_selftest_t *result);
 
 #endif /* HAL_VBUS_H */

@@ -22,6 +22,8 @@ static struct {
 	uint32_t wd_timeout_ms;
 	uint32_t platform_faults;
 	hal_reset_reason_t reset_reason;
+	bool has_selftest;
+	hal_selftest_t selftest;
 } sys;
 
 void hal_vbus_sys_reset(void)
@@ -183,4 +185,23 @@ uint32_t hal_platform_faults(void)
 void hal_vbus_set_platform_faults(uint32_t bits)
 {
 	sys.platform_faults = bits;
+}
+
+/* A virtual board has no self-test of its own; a test may give it one. */
+int hal_selftest(hal_selftest_t *result)
+{
+	HAL_REQUIRE(result != NULL);
+	if (!sys.has_selftest) {
+		return SQ_ENOTSUP;
+	}
+	*result = sys.selftest;
+	return SQ_OK;
+}
+
+void hal_vbus_set_selftest(const hal_selftest_t *result)
+{
+	sys.has_selftest = result != NULL;
+	if (result != NULL) {
+		sys.selftest = *result;
+	}
 }
