@@ -14,7 +14,8 @@
 #   build/host/monitor_step_cost  callgrind driver (make monitor-cost)
 
 MONITOR_TEST_VARIANTS := test test-fixed
-MONITOR_TESTS := test_monitor test_monitor_faults test_calib test_app test_monitor_bounds test_app_buses
+MONITOR_TESTS := test_monitor test_monitor_faults test_calib test_app test_monitor_bounds test_app_buses \
+	test_app_selftest
 MONITOR_EXPECT_H := build/monitor/monitor_expect.h
 
 $(MONITOR_EXPECT_H): tests/monitor/gen_monitor_expect.py tests/reference/squeal_reference.py firmware/protocol/squeal.dbc
