@@ -97,13 +97,14 @@ static void report_selftest(void)
 {
 	hal_selftest_t st;
 	monitor_selftest_t m;
+	const hal_reset_reason_t why = hal_reset_reason();
 	uint32_t bus;
 
 	if (hal_selftest(&st) != SQ_OK) {
 		return;
 	}
 	m.hse_freq_100khz = hse_100khz(st.hse_hz);
-	m.reset_cause = (uint8_t)hal_reset_reason();
+	m.reset_cause = (uint8_t)why;
 	m.bor_level = (st.bor_level == HAL_SELFTEST_NO_BOR) ? (uint8_t)MSG_BOR_LEVEL_NA :
 		st.bor_level;
 	for (bus = 0U; bus < 2U; bus++) { /* LoopbackCan1, LoopbackCan2 */

@@ -213,9 +213,7 @@ static calib_error_t validate_why(const calib_t *cal)
 
 int calib_validate(const calib_t *cal)
 {
-	if (cal == NULL) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE(cal != NULL);
 	return (validate_why(cal) == CALIB_OK) ? SQ_OK : SQ_EINVAL;
 }
 

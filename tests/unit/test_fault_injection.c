@@ -396,9 +396,10 @@ static void test_crc_storm_1s(void **state)
 		assert_int_equal(cnt(speed)->e2e_wrong_sequence, 0);
 	}
 	assert_int_equal(mon()->count.state_changes, 3);
-	/* SquealDiag page 2 at T0 + 6 s: E2eErrorCountSpeed/Force */
-	run_to(T0_US + 6000000U);
-	(void)diag_at(T0_US + 6000000U, &page, &d);
+	/* SquealDiag page 2 at T0 + 7 s (pages 0..4, one a second):
+	 * E2eErrorCountSpeed/Force */
+	run_to(T0_US + 7000000U);
+	(void)diag_at(T0_US + 7000000U, &page, &d);
 	assert_int_equal(page, 2);
 	assert_int_equal(test_frame_sig(d, 32, 16), 100);
 	assert_int_equal(test_frame_sig(d, 48, 16), 100);
@@ -619,9 +620,13 @@ static void test_bus_off_during_transmission(void **state)
 	assert_true((diag_at(T0_US + 7000000U, NULL, NULL) & F_BUS_OFF_SEEN) != 0U);
 	assert_int_equal(diag_at(T0_US + 8000000U, &page, &d),
 			 F_BUS_OFF_SEEN | F_TX_OVERFLOW);
+	/* page 0 (pages 0..4, one a second) at T0 + 10 s: BusOffCount */
+	run_steady(T0_US + 10000000U);
+	assert_int_equal(diag_at(T0_US + 10000000U, &page, &d),
+			 F_BUS_OFF_SEEN | F_TX_OVERFLOW);
 	assert_int_equal(page, 0);
 	assert_int_equal(test_frame_sig(d, 56, 8), 3); /* BusOffCount */
-	assert_int_equal(test_frame_sig(d, 32, 24), 8); /* Uptime_s */
+	assert_int_equal(test_frame_sig(d, 32, 24), 10); /* Uptime_s */
 	/* RX never stopped: every pair used and classified, one state change */
 	assert_int_equal(mon()->speed.count.used, next_k);
 	assert_int_equal(mon()->force.count.used, next_k);
@@ -692,9 +697,9 @@ static void test_tx_full_5s(void **state)
 		prev = f->timestamp_us;
 	}
 	assert_true(prev >= t_free + 1000000U - STATUS_US);
-	/* TxOverflow latched; page 3 counts it (T0 + 11 s is page 3) */
-	run_steady(T0_US + 11000000U);
-	assert_int_equal(diag_at(T0_US + 11000000U, &page, &d), F_TX_OVERFLOW);
+	/* TxOverflow latched; page 3 counts it (T0 + 13 s is page 3 of 0..4) */
+	run_steady(T0_US + 13000000U);
+	assert_int_equal(diag_at(T0_US + 13000000U, &page, &d), F_TX_OVERFLOW);
 	assert_int_equal(page, 3);
 	assert_int_equal(test_frame_sig(d, 32, 16), mon()->count.tx_overflow);
 	print_message("  TX full 5 s: %u refusals, %u frames overflowed\n",
@@ -759,10 +764,10 @@ static void test_clock_jump_10s(void **state)
 	 * 1), then every second from the jump on; Uptime_s jumped too */
 	(void)diag_at(tj, &page, &d);
 	assert_int_equal(page, 1);
-	run_to(tj + 3U * DIAG_US);
-	(void)diag_at(tj + 3U * DIAG_US, &page, &d);
-	assert_int_equal(page, 0);
-	assert_int_equal(test_frame_sig(d, 32, 24), (tj + 3U * DIAG_US - T0_US) / 1000000U); /* Uptime_s */
+	run_to(tj + 4U * DIAG_US);
+	(void)diag_at(tj + 4U * DIAG_US, &page, &d);
+	assert_int_equal(page, 0); /* pages 0..4 */
+	assert_int_equal(test_frame_sig(d, 32, 24), (tj + 4U * DIAG_US - T0_US) / 1000000U); /* Uptime_s */
 }
 
 /* what the scheduler does with the queue, the bus taking every frame */
