@@ -1,0 +1,11 @@
+# SPDX-License-Identifier: MIT
+# Input map (issue 11): signal descriptors, E2E P02, counter check, unit
+# conversion; cmocka, both numeric builds, ASan+UBSan.
+#   build/<v>/test_inputmap
+INPUTMAP_TEST_VARIANTS := test test-fixed
+define inputmap_test_rules
+build/$(1)/test_inputmap: build/$(1)/app/tests/unit/test_inputmap.o build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,$(INPUTMAP_TEST_VARIANTS),$(eval $(call inputmap_test_rules,$(v))))
+TEST_PROGS += $(foreach v,$(INPUTMAP_TEST_VARIANTS),build/$(v)/test_inputmap)
