@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "calib_map.h"
 #include "sq_status.h"
 
 #define HEADER_LEN 8U
@@ -17,12 +18,25 @@ typedef struct {
 	uint8_t is_signed;
 	int64_t min;
 	int64_t max;
+	uint8_t count;     /* array rows: this many elements ...            */
+	uint16_t stride;   /* ... this far apart (inputs[], corners[])      */
 } calib_field_t;
 
-#define F_U8(f, lo, hi)  { (uint16_t)offsetof(calib_t, f), 1U, 0U, (lo), (hi) }
-#define F_U16(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 2U, 0U, (lo), (hi) }
-#define F_U32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 0U, (lo), (hi) }
-#define F_I32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 1U, (lo), (hi) }
+#define F_U8(f, lo, hi)  { (uint16_t)offsetof(calib_t, f), 1U, 0U, (lo), (hi), 1U, 0U }
+#define F_U16(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 2U, 0U, (lo), (hi), 1U, 0U }
+#define F_U32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 0U, (lo), (hi), 1U, 0U }
+#define F_I32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 1U, (lo), (hi), 1U, 0U }
+/* One row per field of every input / corner slot. Storage ranges admit the
+ * zeros of an unused slot; calib_map.c checks what a used one means. */
+#define FA(arr, n, f, size, sgn, lo, hi) \
+	{ (uint16_t)offsetof(calib_t, arr[0].f), (size), (sgn), (lo), (hi), (n), \
+	  (uint16_t)sizeof(((calib_t *)0)->arr[0]) }
+#define FI(f, size, sgn, lo, hi) FA(inputs, CALIB_MAX_INPUTS, f, size, sgn, lo, hi)
+#define FC(f, size, sgn, lo, hi) FA(corners, CALIB_MAX_CORNERS, f, size, sgn, lo, hi)
+#define FI_SIG(s) FI(s.start_bit, 1U, 0U, 0, 63), FI(s.length, 1U, 0U, 0, 32), \
+	FI(s.byte_order, 1U, 0U, 0, 1), FI(s.is_signed, 1U, 0U, 0, 1)
+#define FI_DEC(d) FI(d.mant, 4U, 1U, INT32_MIN, INT32_MAX), FI(d.exp, 1U, 1U, -12, 12)
+#define FI_DIL(i) FI(data_id_list[i], 1U, 0U, 0, 255)
 
 /* Model fields get their ranges from squeal_model_params_check() too; the
  * rows repeat the documented domain so a block is range-checked in one pass. */
@@ -62,6 +76,53 @@ static const calib_field_t fields[] = {
 	F_U32(hyst_rho_ppm, 0, 1000000),
 	F_U32(rho_warn_ppm, 0, 1000000),
 	F_U16(watchdog_ms, 10, 10000),
+	F_U8(n_inputs, 0, CALIB_MAX_INPUTS),
+	F_U8(n_corners, 0, CALIB_MAX_CORNERS),
+	FI(id, 4U, 0U, 0, 0x1FFFFFFF),
+	FI(flags, 1U, 0U, 0, CALIB_IN_FLAGS_ALL),
+	FI(min_dlc, 1U, 0U, 0, 8),
+	FI_SIG(sig),
+	FI_DEC(factor),
+	FI_DEC(offset),
+	FI(unit, 1U, 0U, 0, 255),
+	FI_SIG(mux),
+	FI(mux_value, 4U, 0U, 0, UINT32_MAX),
+	FI(na_raw, 4U, 0U, 0, UINT32_MAX),
+	FI(na_raw2, 4U, 0U, 0, UINT32_MAX),
+	FI(qualifier_bit, 1U, 0U, 0, 63),
+	FI(qualifier_invalid, 1U, 0U, 0, 1),
+	FI(protection, 1U, 0U, 0, CALIB_PROT_COUNT - 1),
+	FI(data_id, 2U, 0U, 0, 0xFFFF),
+	FI_DIL(0), FI_DIL(1), FI_DIL(2), FI_DIL(3), FI_DIL(4), FI_DIL(5), FI_DIL(6), FI_DIL(7),
+	FI_DIL(8), FI_DIL(9), FI_DIL(10), FI_DIL(11), FI_DIL(12), FI_DIL(13), FI_DIL(14), FI_DIL(15),
+	FI_SIG(counter),
+	FI(counter_modulus, 1U, 0U, 0, 16),
+	FI(max_delta_counter, 1U, 0U, 0, 15),
+	FI(period_ms, 2U, 0U, 0, 1000),
+	FI(stale_cycles, 1U, 0U, 0, 100),
+	FI_DEC(max),
+	FI_DEC(min),
+	FI_DEC(step_max),
+	FC(pos, 1U, 0U, 0, 3),
+	FC(speed_input, 1U, 0U, 0, CALIB_MAX_INPUTS - 1),
+	FC(force_input, 1U, 0U, 0, CALIB_MAX_INPUTS - 1),
+	FC(friction_faces, 1U, 0U, 0, 4),
+	FC(piston_area_cmm2, 4U, 0U, 0, 100000000),   /* up to 1 m^2 */
+	FC(efficiency_ppm, 4U, 0U, 0, 1000000),
+	FC(axle_factor_ppm, 4U, 0U, 0, 4000000),
+	FC(mass_q16, 4U, 1U, 0, 10000LL << 16),
+	FC(omega0_q12, 4U, 1U, 0, 500000LL << 12),
+	FC(damping_q30, 4U, 1U, 0, 1LL << 30),
+	FC(mu_inf_q30, 4U, 1U, 0, 3LL << 29),
+	FC(delta_mu_q30, 4U, 1U, -(3LL << 29), 3LL << 29),
+	FC(slope_q24, 4U, 1U, 0, 20LL << 24),
+	FC(criterion, 1U, 0U, 0, 1),
+	FC(pad_radius_um, 4U, 0U, 0, 1000000),
+	FC(wheel_radius_um, 4U, 0U, 0, 2000000),
+	FC(status_id, 2U, 0U, 0, 0x7FF),
+	FC(detail_id, 2U, 0U, 0, 0x7FF),
+	FC(detail2_id, 2U, 0U, 0, 0x7FF),
+	FC(diag_id, 2U, 0U, 0, 0x7FF),
 };
 
 #define FIELD_COUNT (sizeof(fields) / sizeof(fields[0]))
@@ -107,14 +168,26 @@ void calib_default(calib_t *cal)
 	cal->hyst_rho_ppm = 20000U;        /* 0.02 in rho                     */
 	cal->rho_warn_ppm = 500000U;       /* 0.5                             */
 	cal->watchdog_ms = 100U;
+	/* no input map: the legacy DiscSpeed/PadForce corner (calib_map.c) */
+	cal->n_inputs = 0U;
+	cal->n_corners = 0U;
+	for (uint32_t i = 0U; i < CALIB_MAX_INPUTS; i++) {
+		cal->inputs[i] = (calib_input_t){ 0 };
+	}
+	for (uint32_t i = 0U; i < CALIB_MAX_CORNERS; i++) {
+		cal->corners[i] = (calib_corner_t){ 0 };
+	}
 }
 
-static int64_t field_get(const calib_t *cal, const calib_field_t *f)
+static int64_t field_get(const calib_t *cal, const calib_field_t *f, uint32_t k)
 {
-	const uint8_t *base = (const uint8_t *)cal + f->offset;
+	const uint8_t *base = (const uint8_t *)cal + f->offset + (k * f->stride);
 
 	switch (f->size) {
 	case 1U:
+		if (f->is_signed != 0U) {
+			return *(const int8_t *)(const void *)base;
+		}
 		return *(const uint8_t *)base;
 	case 2U:
 		return *(const uint16_t *)(const void *)base;
@@ -126,13 +199,18 @@ static int64_t field_get(const calib_t *cal, const calib_field_t *f)
 	}
 }
 
-static void field_set(calib_t *cal, const calib_field_t *f, uint32_t raw)
+static void field_set(calib_t *cal, const calib_field_t *f, uint32_t k, uint32_t raw)
 {
-	uint8_t *base = (uint8_t *)cal + f->offset;
+	uint8_t *base = (uint8_t *)cal + f->offset + (k * f->stride);
 
 	switch (f->size) {
 	case 1U:
-		*base = (uint8_t)raw;
+		if (f->is_signed != 0U) {
+			*(int8_t *)(void *)base = (raw <= 0x7FU) ? (int8_t)raw :
+				(int8_t)(-(int32_t)((~raw) & 0xFFU) - 1);
+		} else {
+			*base = (uint8_t)raw;
+		}
 		break;
 	case 2U:
 		*(uint16_t *)(void *)base = (uint16_t)raw;
@@ -176,16 +254,20 @@ int calib_validate(const calib_t *cal)
 		return SQ_EINVAL;
 	}
 	for (i = 0U; i < FIELD_COUNT; i++) {
-		const int64_t v = field_get(cal, &fields[i]);
+		uint32_t k;
 
-		if ((v < fields[i].min) || (v > fields[i].max)) {
-			return SQ_EINVAL;
+		for (k = 0U; k < fields[i].count; k++) {
+			const int64_t v = field_get(cal, &fields[i], k);
+
+			if ((v < fields[i].min) || (v > fields[i].max)) {
+				return SQ_EINVAL;
+			}
 		}
 	}
 	if (((int64_t)cal->mu_inf_q30 + cal->delta_mu_q30 < 0) || !ids_distinct(cal)) {
 		return SQ_EINVAL;
 	}
-	return SQ_OK;
+	return calib_map_validate(cal);
 }
 
 int calib_field_range(uint32_t offset, int64_t *min, int64_t *max)
@@ -238,10 +320,14 @@ int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len)
 	put_le(&buf[4], CALIB_VERSION, 2U);
 	put_le(&buf[6], CALIB_BLOCK_LEN, 2U);
 	for (i = 0U; i < FIELD_COUNT; i++) {
-		const int64_t v = field_get(cal, &fields[i]);
+		uint32_t k;
 
-		put_le(&buf[pos], (uint32_t)(v & 0xFFFFFFFFLL), fields[i].size);
-		pos += fields[i].size;
+		for (k = 0U; k < fields[i].count; k++) {
+			const int64_t v = field_get(cal, &fields[i], k);
+
+			put_le(&buf[pos], (uint32_t)(v & 0xFFFFFFFFLL), fields[i].size);
+			pos += fields[i].size;
+		}
 	}
 	if (pos != CALIB_BLOCK_LEN - CRC_LEN) {
 		return SQ_EINVAL; /* layout and CALIB_BLOCK_LEN disagree */
@@ -275,8 +361,12 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 		err = CALIB_ERR_CRC;
 	} else {
 		for (i = 0U; i < FIELD_COUNT; i++) {
-			field_set(&tmp, &fields[i], get_le(&buf[pos], fields[i].size));
-			pos += fields[i].size;
+			uint32_t k;
+
+			for (k = 0U; k < fields[i].count; k++) {
+				field_set(&tmp, &fields[i], k, get_le(&buf[pos], fields[i].size));
+				pos += fields[i].size;
+			}
 		}
 		if (calib_validate(&tmp) != SQ_OK) {
 			err = CALIB_ERR_RANGE;
@@ -292,24 +382,32 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 	return SQ_OK;
 }
 
-void calib_model_params(const calib_t *cal, squeal_params_t *params)
+void calib_corner_params(const calib_corner_t *c, squeal_params_t *params)
 {
 #if defined(SQUEAL_NUMERIC_FIXED)
-	params->mass_kg = cal->mass_q16;
-	params->omega0_radps = cal->omega0_q12;
-	params->damping = cal->damping_q30;
-	params->mu_inf = cal->mu_inf_q30;
-	params->delta_mu = cal->delta_mu_q30;
-	params->slope_spm = cal->slope_q24;
+	params->mass_kg = c->mass_q16;
+	params->omega0_radps = c->omega0_q12;
+	params->damping = c->damping_q30;
+	params->mu_inf = c->mu_inf_q30;
+	params->delta_mu = c->delta_mu_q30;
+	params->slope_spm = c->slope_q24;
 #else
 	/* exact: every Q value is an integer times a power of two */
-	params->mass_kg = (float)cal->mass_q16 * (1.0f / 65536.0f);
-	params->omega0_radps = (float)cal->omega0_q12 * (1.0f / 4096.0f);
-	params->damping = (float)cal->damping_q30 * (1.0f / 1073741824.0f);
-	params->mu_inf = (float)cal->mu_inf_q30 * (1.0f / 1073741824.0f);
-	params->delta_mu = (float)cal->delta_mu_q30 * (1.0f / 1073741824.0f);
-	params->slope_spm = (float)cal->slope_q24 * (1.0f / 16777216.0f);
+	params->mass_kg = (float)c->mass_q16 * (1.0f / 65536.0f);
+	params->omega0_radps = (float)c->omega0_q12 * (1.0f / 4096.0f);
+	params->damping = (float)c->damping_q30 * (1.0f / 1073741824.0f);
+	params->mu_inf = (float)c->mu_inf_q30 * (1.0f / 1073741824.0f);
+	params->delta_mu = (float)c->delta_mu_q30 * (1.0f / 1073741824.0f);
+	params->slope_spm = (float)c->slope_q24 * (1.0f / 16777216.0f);
 #endif
+}
+
+void calib_model_params(const calib_t *cal, squeal_params_t *params)
+{
+	calib_corner_t c;
+
+	calib_corner_defaults(cal, 0U, &c);
+	calib_corner_params(&c, params);
 }
 
 uint32_t calib_crc32(uint32_t crc, const uint8_t *data, uint32_t len)

@@ -205,12 +205,18 @@ static void test_block_layout(void **state)
 	uint8_t buf[CALIB_BLOCK_LEN];
 
 	(void)state;
-	assert_int_equal(CALIB_BLOCK_LEN, 103);
+	/* version 2: the 99 bytes of v1 (header + fields), then n_inputs,
+	 * n_corners, 8 inputs x 82 and 4 corners x 57 bytes, then the CRC:
+	 * 99 + 2 + 656 + 228 = 985, block 989 */
+	assert_int_equal(CALIB_VERSION, 2);
+	assert_int_equal(CALIB_BLOCK_LEN, 989);
 	encode_default(buf);
 	assert_memory_equal(buf, "SQCB", 4);
 	assert_int_equal(get_le(&buf[4], 2U), CALIB_VERSION);
 	assert_int_equal(get_le(&buf[6], 2U), CALIB_BLOCK_LEN);
-	assert_int_equal(get_le(&buf[99], 4U), ref_crc32(buf, 99U));
+	assert_int_equal(buf[99], 0); /* no input map: the legacy corner */
+	assert_int_equal(buf[100], 0);
+	assert_int_equal(get_le(&buf[985], 4U), ref_crc32(buf, 985U));
 }
 
 /* ---- round trip ---------------------------------------------------------------- */
