@@ -10,6 +10,7 @@
 #include <stddef.h>
 
 #include "calib.h"
+#include "calib_map.h"
 #include "hal.h"
 #include "monitor.h"
 #include "sq_status.h"
@@ -19,9 +20,72 @@
  * kernel/FIFO keeps the rest for the next one */
 #define RX_BUDGET 64U
 
-static monitor_t app_monitor;
+/* One monitor per corner; the 1 ms step classifies at most one of them
+ * (round robin over the corners that have a new input pair). */
+static monitor_t app_monitor[CALIB_MAX_CORNERS];
+static uint32_t app_corners = 1U;
+static uint32_t app_next_corner;
 static uint64_t app_next_tick_us;
 static int app_init_rc;
+
+/* A receive filter entry: identifier and frame format. */
+typedef struct {
+	uint32_t id;
+	bool ext;
+} app_rx_id_t;
+
+/*
+ * The identifiers the corners listen to, each once, from the input map
+ * (the legacy form: DiscSpeed and PadForce). The one place that knows what
+ * the receive filter holds.
+ */
+static uint32_t rx_filter_ids(app_rx_id_t ids[2U * CALIB_MAX_CORNERS])
+{
+	uint32_t n = 0U;
+	uint32_t k;
+
+	for (k = 0U; k < app_corners; k++) {
+		const calib_input_t *in[2] = { &app_monitor[k].speed_rx.desc,
+					       &app_monitor[k].force_rx.desc };
+		uint32_t j;
+
+		for (j = 0U; j < 2U; j++) {
+			const bool ext = (in[j]->flags & CALIB_IN_EXTENDED) != 0U;
+			bool seen = false;
+			uint32_t i;
+
+			for (i = 0U; i < n; i++) {
+				seen = seen || ((ids[i].id == in[j]->id) && (ids[i].ext == ext));
+			}
+			if (!seen) {
+				ids[n] = (app_rx_id_t){ in[j]->id, ext };
+				n++;
+			}
+		}
+	}
+	return n;
+}
+
+/* The HAL filters standard identifiers only (until the bus-index HAL):
+ * with a 29-bit input the filter stays open and the monitors sort. */
+static int set_rx_filter(void)
+{
+	app_rx_id_t list[2U * CALIB_MAX_CORNERS];
+	uint32_t ids[2U * CALIB_MAX_CORNERS];
+	const uint32_t n = rx_filter_ids(list);
+	uint32_t i;
+
+	if (n > HAL_CAN_MAX_FILTERS) {
+		return SQ_OK;
+	}
+	for (i = 0U; i < n; i++) {
+		if (list[i].ext) {
+			return SQ_OK;
+		}
+		ids[i] = list[i].id;
+	}
+	return hal_can_set_rx_filter(ids, n);
+}
 
 /* Calibration from storage: none stored -> defaults (factory state, not a
  * fault); unreadable or corrupt -> defaults and the CalibInvalid fault. */
@@ -45,31 +109,37 @@ int squeal_app_init(void)
 {
 	calib_t cal;
 	bool calib_invalid;
-	uint32_t ids[2];
 	int rc;
 	int first_error = SQ_OK;
+	uint32_t k;
 
 	calib_invalid = load_calibration(&cal);
-	rc = monitor_init(&app_monitor, &cal, calib_invalid, hal_platform_faults(),
+	rc = monitor_init(&app_monitor[0], &cal, calib_invalid, hal_platform_faults(),
 			  hal_time_us());
 	if (rc != SQ_OK) {
 		first_error = rc;
 	}
+	/* corners 1.. only with a valid calibration (monitor 0 fell back to
+	 * the defaults' single corner otherwise) */
+	app_corners = calib_corner_count(&app_monitor[0].cal);
+	for (k = 1U; k < app_corners; k++) {
+		(void)monitor_init_corner(&app_monitor[k], &app_monitor[0].cal, k, calib_invalid,
+					  hal_platform_faults(), hal_time_us());
+	}
+	app_next_corner = 0U;
 	if (calib_invalid && (first_error == SQ_OK)) {
 		first_error = SQ_EBADMSG;
 	}
 	/* bit rate first: a restart of the controller resets its filters */
-	rc = hal_can_set_bitrate(app_monitor.cal.bitrate_kbps);
+	rc = hal_can_set_bitrate(app_monitor[0].cal.bitrate_kbps);
 	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
 		first_error = rc;
 	}
-	ids[0] = app_monitor.cal.disc_speed_id;
-	ids[1] = app_monitor.cal.pad_force_id;
-	rc = hal_can_set_rx_filter(ids, 2U);
+	rc = set_rx_filter();
 	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
 		first_error = rc;
 	}
-	rc = hal_watchdog_start(app_monitor.cal.watchdog_ms);
+	rc = hal_watchdog_start(app_monitor[0].cal.watchdog_ms);
 	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
 		first_error = rc;
 	}
@@ -78,7 +148,8 @@ int squeal_app_init(void)
 	return first_error;
 }
 
-static void transmit(void)
+/* false when the HAL's queue is full (the rest waits for the next tick) */
+static bool transmit(monitor_t *mon)
 {
 	hal_can_frame_t f;
 	uint32_t i;
@@ -86,15 +157,33 @@ static void transmit(void)
 	for (i = 0U; i < MONITOR_TX_QUEUE_LEN; i++) {
 		int rc;
 
-		if (monitor_peek_tx(&app_monitor, &f) != SQ_OK) {
+		if (monitor_peek_tx(mon, &f) != SQ_OK) {
 			break;
 		}
 		rc = hal_can_send(&f);
 		if (rc == SQ_ENOBUFS) {
-			break; /* stays queued: retried next tick */
+			return false; /* stays queued: retried next tick */
 		}
-		monitor_tx_done(&app_monitor, rc);
+		monitor_tx_done(mon, rc);
 	}
+	return true;
+}
+
+/* The corner that may classify in this step: the next one, in turn, that
+ * has a new input pair; UINT32_MAX when none has. */
+static uint32_t classify_slot(void)
+{
+	uint32_t i;
+
+	for (i = 0U; i < app_corners; i++) {
+		const uint32_t k = (app_next_corner + i) % app_corners;
+
+		if (monitor_wants_classify(&app_monitor[k])) {
+			app_next_corner = (k + 1U) % app_corners;
+			return k;
+		}
+	}
+	return UINT32_MAX;
 }
 
 uint64_t squeal_app_poll(void)
@@ -104,26 +193,42 @@ uint64_t squeal_app_poll(void)
 	uint64_t now = hal_time_us();
 	uint32_t i;
 
+	uint32_t k;
+
 	for (i = 0U; i < RX_BUDGET; i++) {
 		if (hal_can_receive(&f) != SQ_OK) {
 			break;
 		}
-		monitor_on_frame(&app_monitor, &f);
+		for (k = 0U; k < app_corners; k++) {
+			monitor_on_frame(&app_monitor[k], &f);
+		}
 	}
 	if (now >= app_next_tick_us) {
 		const uint32_t t0 = hal_cycles();
 		uint32_t cpu = hal_cycles_per_us();
+		const uint32_t slot = classify_slot();
+		bool tx_room = true;
+		uint32_t task_us;
 
 		if (hal_can_get_status(&st) == SQ_OK) {
-			monitor_on_can_status(&app_monitor, &st);
+			for (k = 0U; k < app_corners; k++) {
+				monitor_on_can_status(&app_monitor[k], &st);
+			}
 		}
-		monitor_step(&app_monitor, now);
-		transmit();
+		for (k = 0U; k < app_corners; k++) {
+			monitor_step_slot(&app_monitor[k], now, (app_corners == 1U) || (k == slot));
+			if (tx_room) {
+				tx_room = transmit(&app_monitor[k]);
+			}
+		}
 		hal_watchdog_kick();
 		if (cpu == 0U) {
 			cpu = 1U;
 		}
-		monitor_report_task_time(&app_monitor, (hal_cycles() - t0) / cpu);
+		task_us = (hal_cycles() - t0) / cpu;
+		for (k = 0U; k < app_corners; k++) {
+			monitor_report_task_time(&app_monitor[k], task_us);
+		}
 		app_next_tick_us += TICK_US;
 		if (app_next_tick_us <= now) {
 			app_next_tick_us = now + TICK_US; /* late: skip, don't burst */
@@ -144,7 +249,17 @@ int squeal_main(volatile const bool *stop)
 
 const monitor_t *squeal_app_monitor(void)
 {
-	return &app_monitor;
+	return &app_monitor[0];
+}
+
+uint32_t squeal_app_corner_count(void)
+{
+	return app_corners;
+}
+
+const monitor_t *squeal_app_corner(uint32_t k)
+{
+	return (k < app_corners) ? &app_monitor[k] : NULL;
 }
 
 int squeal_app_init_status(void)

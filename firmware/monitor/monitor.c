@@ -651,6 +651,12 @@ static bool due(uint64_t *next_us, uint64_t now_us, uint16_t period_ms)
 	return true;
 }
 
+bool monitor_wants_classify(const monitor_t *me)
+{
+	return (me != NULL) && me->speed.fresh && me->force.fresh &&
+	       (me->speed.faults == 0U) && (me->force.faults == 0U);
+}
+
 void monitor_step(monitor_t *me, uint64_t now_us)
 {
 	monitor_step_slot(me, now_us, true);

@@ -168,6 +168,10 @@ void monitor_step(monitor_t *me, uint64_t now_us);
  * still fresh, for the corner's next slot. */
 void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify);
 
+/* True when a new input pair waits for classification (the app's choice
+ * of the corner that gets the step's classification slot). */
+bool monitor_wants_classify(const monitor_t *me);
+
 /* Controller status from the HAL (bus-off, overruns), read every step. */
 void monitor_on_can_status(monitor_t *me, const hal_can_status_t *status);
 
