@@ -446,14 +446,68 @@ static char *trim(char *s)
 	return s;
 }
 
+int calib_text_flat_key(const char *key, const char *value, calib_t *cal, char *msg,
+			size_t msglen)
+{
+	const key_desc_t *k = find_key(key);
+	int64_t raw = 0;
+
+	if (k == NULL) {
+		set_err(msg, msglen, "unknown key '%s'", key);
+		return -1;
+	}
+	if (convert_value(k, value, &raw, msg, msglen) != 0) {
+		return -1;
+	}
+	field_set(cal, k, raw);
+	return 0;
+}
+
+void calib_text_flat_format(const char *key, const calib_t *cal, char *buf, size_t len)
+{
+	const key_desc_t *k = find_key(key);
+
+	if (k == NULL) {
+		snprintf(buf, len, "?");
+		return;
+	}
+	format_value(k, field_get(cal, k), buf, len);
+}
+
+/* The flat keys that describe the legacy DiscSpeed/PadForce inputs: a file
+ * with [corner] sections configures its inputs there instead. */
+static bool legacy_input_key(const char *key)
+{
+	static const char *const legacy[] = { "disc_speed_id", "pad_force_id",
+		"e2e_check_inputs", "input_period_ms", "speed_max_radps",
+		"speed_step_max_radps", "force_max_n", "force_step_max_n" };
+	size_t i;
+
+	for (i = 0; i < sizeof(legacy) / sizeof(legacy[0]); i++) {
+		if (strcmp(key, legacy[i]) == 0) {
+			return true;
+		}
+	}
+	return false;
+}
+
 int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 		     size_t errlen)
+{
+	return calib_text_parse_map(f, name, out, NULL, err, errlen);
+}
+
+int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t *names,
+			 char *err, size_t errlen)
 {
 	char line[LINE_MAX_LEN];
 	unsigned int seen_line[KEY_COUNT];
 	char msg[200];
 	calib_t cal;
 	unsigned int lineno = 0;
+	static calib_sections_t sections; /* large: not on the stack */
+	unsigned int legacy_line = 0;
+	const char *legacy_key = "";
 
 	if ((f == NULL) || (out == NULL)) {
 		set_err(err, errlen, "calib_text_parse: NULL argument");
@@ -463,6 +517,10 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 		name = "<calibration>";
 	}
 	memset(seen_line, 0, sizeof(seen_line));
+	calib_sections_init(&sections);
+	if (names != NULL) {
+		memset(names, 0, sizeof(*names));
+	}
 	calib_default(&cal);
 	while (fgets(line, sizeof(line), f) != NULL) {
 		const key_desc_t *k;
@@ -487,6 +545,13 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 		if (*key == '\0') {
 			continue;
 		}
+		if (*key == '[') {
+			if (calib_sections_header(&sections, key, lineno, msg, sizeof(msg)) != 0) {
+				set_err(err, errlen, "%s:%u: %s", name, lineno, msg);
+				return SQ_EBADMSG;
+			}
+			continue;
+		}
 		eq = strchr(key, '=');
 		if (eq == NULL) {
 			set_err(err, errlen, "%s:%u: expected 'key = value', got '%s'",
@@ -499,6 +564,18 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 		if (*key == '\0') {
 			set_err(err, errlen, "%s:%u: missing key before '='", name, lineno);
 			return SQ_EBADMSG;
+		}
+		if (calib_sections_open(&sections)) {
+			/* a key of the current [input]/[corner] section */
+			if (*value == '\0') {
+				set_err(err, errlen, "%s:%u: %s has no value", name, lineno, key);
+				return SQ_EBADMSG;
+			}
+			if (calib_sections_key(&sections, key, value, lineno, msg, sizeof(msg)) != 0) {
+				set_err(err, errlen, "%s:%u: %s", name, lineno, msg);
+				return SQ_EBADMSG;
+			}
+			continue;
 		}
 		k = find_key(key);
 		if (k == NULL) {
@@ -513,6 +590,10 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 			return SQ_EBADMSG;
 		}
 		seen_line[idx] = lineno;
+		if ((legacy_line == 0U) && legacy_input_key(key)) {
+			legacy_line = lineno;
+			legacy_key = k->key;
+		}
 		if (*value == '\0') {
 			set_err(err, errlen, "%s:%u: %s has no value", name, lineno, key);
 			return SQ_EBADMSG;
@@ -532,6 +613,10 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 		set_err(err, errlen, "%s: read error", name);
 		return SQ_EIO;
 	}
+	if (calib_sections_finish(&sections, name, legacy_line, legacy_key, &cal, names, err,
+				  errlen) != 0) {
+		return SQ_EBADMSG;
+	}
 	if (calib_validate(&cal) != SQ_OK) {
 		if ((int64_t)cal.mu_inf_q30 + cal.delta_mu_q30 < 0) {
 			set_err(err, errlen, "%s: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
@@ -548,6 +633,12 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 
 int calib_text_load(const char *path, calib_t *out, char *err, size_t errlen)
 {
+	return calib_text_load_map(path, out, NULL, err, errlen);
+}
+
+int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, char *err,
+			size_t errlen)
+{
 	FILE *f;
 	int rc;
 
@@ -560,7 +651,7 @@ int calib_text_load(const char *path, calib_t *out, char *err, size_t errlen)
 		set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
 		return SQ_ENOENT;
 	}
-	rc = calib_text_parse(f, path, out, err, errlen);
+	rc = calib_text_parse_map(f, path, out, names, err, errlen);
 	fclose(f);
 	return rc;
 }
@@ -587,8 +678,14 @@ int calib_text_write(FILE *f, const calib_t *cal)
 		format_value(k, field_get(&def, k), dval, sizeof(dval));
 		range_text(k, range, sizeof(range));
 		snprintf(line, sizeof(line), "%s = %s", k->key, val);
+		if ((cal->n_corners != 0U) && legacy_input_key(k->key)) {
+			continue; /* the [input] sections configure the inputs */
+		}
 		fprintf(f, "%-34s # %s; default %s; range %s\n", line, k->what, dval,
 			range);
+	}
+	if (calib_sections_write(f, cal, NULL) != SQ_OK) {
+		return SQ_EIO;
 	}
 	fflush(f);
 	return ferror(f) ? SQ_EIO : SQ_OK;
