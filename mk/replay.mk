@@ -7,7 +7,7 @@
 #   tests/replay/test_replay.py     replay/decode end to end (python-can,
 #                                   canmatrix, the reference model)
 #   tests/replay/bench-replay.sh    make bench: replay vs python-can+canmatrix
-REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_replay.c host-sim/cmd_decode.c
+REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_replay.c host-sim/cmd_decode.c host-sim/decode_inputs.c
 SIM_SRCS += $(REPLAY_SIM_SRCS)
 
 # host.mk's rule expands its prerequisites when it is read (before this
