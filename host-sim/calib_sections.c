@@ -876,16 +876,6 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 	if (s->count == 0U) {
 		return 0;
 	}
-	if (s->corners == 0U) {
-		msgf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
-		     s->sec[0].line);
-		return -1;
-	}
-	if (legacy_line != 0U) {
-		msgf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
-		     file, legacy_line, legacy_key);
-		return -1;
-	}
 	for (i = 0; i < s->count; i++) {
 		c.sec = &s->sec[i];
 		if (!c.sec->is_corner) {
@@ -899,6 +889,16 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 		}
 	}
 	out.n_inputs = (uint8_t)ni;
+	if (s->corners == 0U) {
+		msgf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
+		     s->sec[0].line);
+		return -1;
+	}
+	if (legacy_line != 0U) {
+		msgf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
+		     file, legacy_line, legacy_key);
+		return -1;
+	}
 	for (i = 0; i < s->count; i++) {
 		c.sec = &s->sec[i];
 		if (c.sec->is_corner) {
