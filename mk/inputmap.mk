@@ -19,3 +19,8 @@ build/$(1)/test_vehicle_inputs: build/$(1)/app/tests/unit/test_vehicle_inputs.o 
 endef
 $(foreach v,$(INPUTMAP_TEST_VARIANTS),$(eval $(call vehicle_inputs_rules,$(v))))
 TEST_PROGS += $(foreach v,$(INPUTMAP_TEST_VARIANTS),build/$(v)/test_vehicle_inputs)
+
+# A braking drive in each fixture layout: plant --calib -> replay --calib,
+# operating points and states against values derived in Python.
+tests/inputmap/test_vehicle_drive.py: build/host/squeal-sim
+TEST_PROGS += tests/inputmap/test_vehicle_drive.py
