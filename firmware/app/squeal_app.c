@@ -16,12 +16,15 @@
 #include "sq_status.h"
 
 #define TICK_US 1000U
+
+_Static_assert(CALIB_BLOCK_LEN <= HAL_CALIB_MAX_LEN, "the calibration block fits the storage");
 /* frames taken from the HAL per poll: bounds the time of one poll; the
  * kernel/FIFO keeps the rest for the next one */
 #define RX_BUDGET 64U
 
 /* One monitor per corner; the 1 ms step classifies at most one of them
  * (round robin over the corners that have a new input pair). */
+static calib_t app_cal; /* the one calibration all corners read */
 static monitor_t app_monitor[CALIB_MAX_CORNERS];
 static uint32_t app_corners = 1U;
 static uint32_t app_next_corner;
@@ -107,23 +110,22 @@ static bool load_calibration(calib_t *cal)
 
 int squeal_app_init(void)
 {
-	calib_t cal;
 	bool calib_invalid;
 	int rc;
 	int first_error = SQ_OK;
 	uint32_t k;
 
-	calib_invalid = load_calibration(&cal);
-	rc = monitor_init(&app_monitor[0], &cal, calib_invalid, hal_platform_faults(),
+	calib_invalid = load_calibration(&app_cal);
+	rc = monitor_init(&app_monitor[0], &app_cal, calib_invalid, hal_platform_faults(),
 			  hal_time_us());
 	if (rc != SQ_OK) {
 		first_error = rc;
 	}
 	/* corners 1.. only with a valid calibration (monitor 0 fell back to
 	 * the defaults' single corner otherwise) */
-	app_corners = calib_corner_count(&app_monitor[0].cal);
+	app_corners = calib_corner_count(app_monitor[0].cal);
 	for (k = 1U; k < app_corners; k++) {
-		(void)monitor_init_corner(&app_monitor[k], &app_monitor[0].cal, k, calib_invalid,
+		(void)monitor_init_corner(&app_monitor[k], app_monitor[0].cal, k, calib_invalid,
 					  hal_platform_faults(), hal_time_us());
 	}
 	app_next_corner = 0U;
@@ -131,7 +133,7 @@ int squeal_app_init(void)
 		first_error = SQ_EBADMSG;
 	}
 	/* bit rate first: a restart of the controller resets its filters */
-	rc = hal_can_set_bitrate(app_monitor[0].cal.bitrate_kbps);
+	rc = hal_can_set_bitrate(app_monitor[0].cal->bitrate_kbps);
 	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
 		first_error = rc;
 	}
@@ -139,7 +141,7 @@ int squeal_app_init(void)
 	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
 		first_error = rc;
 	}
-	rc = hal_watchdog_start(app_monitor[0].cal.watchdog_ms);
+	rc = hal_watchdog_start(app_monitor[0].cal->watchdog_ms);
 	if ((rc != SQ_OK) && (rc != SQ_ENOTSUP) && (first_error == SQ_OK)) {
 		first_error = rc;
 	}

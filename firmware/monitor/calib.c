@@ -127,56 +127,60 @@ static const calib_field_t fields[] = {
 
 #define FIELD_COUNT (sizeof(fields) / sizeof(fields[0]))
 
+/* The factory defaults (model.md section 8, the DBC's IDs and periods); no
+ * input map (n_corners 0: the legacy DiscSpeed/PadForce corner). A const
+ * object, so that a monitor running on defaults needs no copy of its own. */
+static const calib_t factory = {
+	.mass_q16 = 1 << 16,
+	.omega0_q12 = 5000 << 12,
+	.damping_q30 = 24696062,   /* 0.023 * 2^30 */
+	.mu_inf_q30 = 1 << 28,     /* 0.25 */
+	.delta_mu_q30 = 161061274, /* 0.15 * 2^30 */
+	.slope_q24 = 2 << 24,
+	.criterion = (uint8_t)SQUEAL_CRITERION_EXACT,
+	.pad_radius_um = 120000U,
+	.wheel_radius_um = 300000U,
+	.bitrate_kbps = 500U,
+	.disc_speed_id = 0x110U,
+	.pad_force_id = 0x111U,
+	.status_id = 0x300U,
+	.detail_id = 0x301U,
+	.diag_id = 0x302U,
+	.detail2_id = 0x303U,
+	.e2e_check_inputs = 1U,
+	.e2e_max_delta_counter = 2U,
+	.input_period_ms = 10U,
+	.status_period_ms = 10U,
+	.detail_period_ms = 100U,
+	.diag_period_ms = 1000U,
+	.stale_cycles = 3U,
+	.speed_max_raw = 40000U,       /* 400 rad/s: 432 km/h at r_w 0.3 m */
+	.speed_step_max_raw = 1000U,   /* 10 rad/s in one 10 ms period    */
+	.force_max_raw = 60000U,       /* 30 kN                           */
+	.force_step_max_raw = 20000U,  /* 10 kN in one period             */
+	.lowpass_alpha_q15 = 32768U,   /* filter off                      */
+	.v0_min_umps = 10000U,         /* 0.01 m/s                        */
+	.force_min_mn = 100000U,       /* 100 N                           */
+	.debounce_count = 3U,
+	.hyst_lnq_micro = 20000U,      /* 0.02 in ln Q                    */
+	.hyst_rho_ppm = 20000U,        /* 0.02 in rho                     */
+	.rho_warn_ppm = 500000U,       /* 0.5                             */
+	.watchdog_ms = 100U,
+	.n_inputs = 0U,
+	.n_corners = 0U,
+};
+
 void calib_default(calib_t *cal)
 {
 	if (cal == NULL) {
 		return;
 	}
-	/* the model's defaults in fixed-build units, whatever this build is */
-	cal->mass_q16 = 1 << 16;
-	cal->omega0_q12 = 5000 << 12;
-	cal->damping_q30 = 24696062;   /* 0.023 * 2^30 */
-	cal->mu_inf_q30 = 1 << 28;     /* 0.25 */
-	cal->delta_mu_q30 = 161061274; /* 0.15 * 2^30 */
-	cal->slope_q24 = 2 << 24;
-	cal->criterion = (uint8_t)SQUEAL_CRITERION_EXACT;
-	cal->pad_radius_um = 120000U;
-	cal->wheel_radius_um = 300000U;
-	cal->bitrate_kbps = 500U;
-	cal->disc_speed_id = 0x110U;
-	cal->pad_force_id = 0x111U;
-	cal->status_id = 0x300U;
-	cal->detail_id = 0x301U;
-	cal->diag_id = 0x302U;
-	cal->detail2_id = 0x303U;
-	cal->e2e_check_inputs = 1U;
-	cal->e2e_max_delta_counter = 2U;
-	cal->input_period_ms = 10U;
-	cal->status_period_ms = 10U;
-	cal->detail_period_ms = 100U;
-	cal->diag_period_ms = 1000U;
-	cal->stale_cycles = 3U;
-	cal->speed_max_raw = 40000U;       /* 400 rad/s: 432 km/h at r_w 0.3 m */
-	cal->speed_step_max_raw = 1000U;   /* 10 rad/s in one 10 ms period    */
-	cal->force_max_raw = 60000U;       /* 30 kN                           */
-	cal->force_step_max_raw = 20000U;  /* 10 kN in one period             */
-	cal->lowpass_alpha_q15 = 32768U;   /* filter off                      */
-	cal->v0_min_umps = 10000U;         /* 0.01 m/s                        */
-	cal->force_min_mn = 100000U;       /* 100 N                           */
-	cal->debounce_count = 3U;
-	cal->hyst_lnq_micro = 20000U;      /* 0.02 in ln Q                    */
-	cal->hyst_rho_ppm = 20000U;        /* 0.02 in rho                     */
-	cal->rho_warn_ppm = 500000U;       /* 0.5                             */
-	cal->watchdog_ms = 100U;
-	/* no input map: the legacy DiscSpeed/PadForce corner (calib_map.c) */
-	cal->n_inputs = 0U;
-	cal->n_corners = 0U;
-	for (uint32_t i = 0U; i < CALIB_MAX_INPUTS; i++) {
-		cal->inputs[i] = (calib_input_t){ 0 };
-	}
-	for (uint32_t i = 0U; i < CALIB_MAX_CORNERS; i++) {
-		cal->corners[i] = (calib_corner_t){ 0 };
-	}
+	*cal = factory;
+}
+
+const calib_t *calib_factory(void)
+{
+	return &factory;
 }
 
 static int64_t field_get(const calib_t *cal, const calib_field_t *f, uint32_t k)

@@ -186,6 +186,8 @@ typedef enum {
 
 /* The factory defaults (model.md section 8, the DBC's IDs and periods). */
 void calib_default(calib_t *cal);
+/* The same, as one read-only object. */
+const calib_t *calib_factory(void);
 
 /* Range check of every field. SQ_OK or SQ_EINVAL. */
 int calib_validate(const calib_t *cal);

@@ -54,8 +54,8 @@ static int corner_setup(monitor_t *me, uint32_t k)
 	calib_input_t force;
 	input_geom_t g;
 
-	if ((calib_validate(&me->cal) != SQ_OK) ||
-	    (calib_corner_view(&me->cal, k, &me->corner, &speed, &force) != SQ_OK)) {
+	if ((calib_validate(me->cal) != SQ_OK) ||
+	    (calib_corner_view(me->cal, k, &me->corner, &speed, &force) != SQ_OK)) {
 		return SQ_EINVAL;
 	}
 	g = corner_geom(&me->corner);
@@ -76,12 +76,10 @@ int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
 		return SQ_EINVAL;
 	}
 	*me = (monitor_t){ 0 };
-	if (cal != NULL) {
-		me->cal = *cal;
-	}
+	me->cal = cal;
 	me->calib_invalid = calib_invalid;
 	if ((cal == NULL) || (corner_setup(me, k) != SQ_OK)) {
-		calib_default(&me->cal);
+		me->cal = calib_factory();
 		(void)corner_setup(me, 0U); /* the defaults always set up */
 		me->calib_invalid = true;
 		rc = SQ_EINVAL;
@@ -124,7 +122,7 @@ static void input_accept(monitor_t *me, input_t *in, int32_t value,
 	} else {
 		/* first-order low pass, alpha in Q15 (32768 = no filtering) */
 		in->filtered_q8 += (((x_q8 - in->filtered_q8) *
-				    (int64_t)me->cal.lowpass_alpha_q15) / 32768);
+				    (int64_t)me->cal->lowpass_alpha_q15) / 32768);
 	}
 	in->value = (int32_t)(in->filtered_q8 / 256);
 	in->faults &= ~(INPUT_FAULT_IMPLAUSIBLE | INPUT_FAULT_STALE |
@@ -307,11 +305,11 @@ static bool beyond_band(const monitor_t *me, uint8_t from, uint8_t to)
 
 	if (hopf) {
 		return ((me->eval.has & MODEL_EVAL_HAS_LNQ) != 0U) &&
-		       (abs32(me->eval.ln_2q_micro) > me->cal.hyst_lnq_micro);
+		       (abs32(me->eval.ln_2q_micro) > me->cal->hyst_lnq_micro);
 	}
 	/* stable <-> bistable: rho crosses 1 */
 	return ((me->eval.has & MODEL_EVAL_HAS_BASIN) == 0U) ||
-	       (abs32(me->eval.basin_ratio_ppm - PPM_ONE) > me->cal.hyst_rho_ppm);
+	       (abs32(me->eval.basin_ratio_ppm - PPM_ONE) > me->cal->hyst_rho_ppm);
 }
 
 static void set_state(monitor_t *me, uint8_t state)
@@ -348,7 +346,7 @@ static void debounce(monitor_t *me, uint8_t cls)
 		me->candidate = cls;
 		me->candidate_count = 1U;
 	}
-	if (me->candidate_count >= me->cal.debounce_count) {
+	if (me->candidate_count >= me->cal->debounce_count) {
 		set_state(me, cls);
 	}
 }
@@ -359,7 +357,7 @@ static uint8_t classify_pair(monitor_t *me)
 	const int32_t force = me->force.value;
 
 	sat_inc(&me->count.classifications);
-	if (((uint32_t)v0 < me->cal.v0_min_umps) || ((uint32_t)force < me->cal.force_min_mn)) {
+	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
 		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
 		me->have_eval = true;
 		return SQUEAL_STATE_NOT_SLIDING;
@@ -383,7 +381,7 @@ static uint8_t warning_level(const monitor_t *me)
 		/* small basin (rho below the threshold): a small disturbance
 		 * starts stick-slip */
 		if (((me->eval.has & MODEL_EVAL_HAS_BASIN) == 0U) ||
-		    ((uint32_t)me->eval.basin_ratio_ppm < me->cal.rho_warn_ppm)) {
+		    ((uint32_t)me->eval.basin_ratio_ppm < me->cal->rho_warn_ppm)) {
 			return MSG_WARNING_LEVEL_WARNING;
 		}
 		return MSG_WARNING_LEVEL_ADVISORY;
@@ -691,14 +689,14 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 		me->status_now = true;
 	}
 
-	if (due(&me->next_status_us, me->now_us, me->cal.status_period_ms) || me->status_now) {
+	if (due(&me->next_status_us, me->now_us, me->cal->status_period_ms) || me->status_now) {
 		me->status_now = false;
 		send_status(me);
 	}
-	if (due(&me->next_detail_us, me->now_us, me->cal.detail_period_ms)) {
+	if (due(&me->next_detail_us, me->now_us, me->cal->detail_period_ms)) {
 		send_detail(me);
 	}
-	if (due(&me->next_diag_us, me->now_us, me->cal.diag_period_ms)) {
+	if (due(&me->next_diag_us, me->now_us, me->cal->diag_period_ms)) {
 		send_diag(me);
 	}
 }

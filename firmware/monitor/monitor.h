@@ -98,7 +98,10 @@ typedef struct {
  * classifications over the 1 ms steps (monitor_step_slot()).
  */
 typedef struct {
-	calib_t cal;
+	/* the calibration in use, read-only: the caller's (it must outlive the
+	 * monitor; the app keeps one for all corners), or the factory
+	 * defaults when it was refused */
+	const calib_t *cal;
 	uint8_t corner_index;        /* k in cal.corners (0 for the legacy form) */
 	calib_corner_t corner;       /* this corner's brake and output IDs       */
 	input_rx_cfg_t speed_rx;     /* the inputs as configured for this corner */
@@ -144,7 +147,8 @@ typedef struct {
 
 /*
  * Start with a calibration (must validate; otherwise the defaults are used
- * and calib_invalid is set). calib_invalid also forces the CalibInvalid fault
+ * and calib_invalid is set). The monitor keeps a pointer to cal: it must
+ * stay valid and unchanged while the monitor runs. calib_invalid also forces the CalibInvalid fault
  * bit, for a caller that fell back to defaults itself.
  * Returns SQ_OK, or SQ_EINVAL when cal was rejected (defaults in use).
  */

@@ -145,7 +145,7 @@ static void check_monitor(const ctx_t *c, const monitor_t *before, bool stepped)
 	uint32_t i;
 
 	/* write protection: the calibration never changes after init */
-	FUZZ_REQUIRE(memcmp(&me->cal, &c->cal0, sizeof(me->cal)) == 0);
+	FUZZ_REQUIRE(memcmp(me->cal, &c->cal0, sizeof(*me->cal)) == 0);
 	FUZZ_REQUIRE(memcmp(&me->params, &c->params0, sizeof(me->params)) == 0);
 	FUZZ_REQUIRE(me->calib_invalid == c->calib_invalid0);
 
@@ -286,7 +286,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	c->now_us = 1000000U;
 	FUZZ_REQUIRE(monitor_init(&c->me, &cal, false, 0U, c->now_us) == SQ_OK);
 	/* byte copies (a struct assignment need not copy padding) */
-	memcpy(&c->cal0, &c->me.cal, sizeof(c->cal0));
+	memcpy(&c->cal0, c->me.cal, sizeof(c->cal0));
 	memcpy(&c->params0, &c->me.params, sizeof(c->params0));
 	c->calib_invalid0 = c->me.calib_invalid;
 	{
