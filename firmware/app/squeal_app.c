@@ -48,9 +48,11 @@ static uint32_t rx_filter_ids(app_rx_id_t ids[2U * CALIB_MAX_CORNERS])
 	uint32_t k;
 
 	for (k = 0U; k < app_corners; k++) {
-		const calib_input_t *in[2] = { &app_monitor[k].speed_rx.desc,
-					       &app_monitor[k].force_rx.desc };
+		const calib_input_t *in[2];
 		uint32_t j;
+
+		in[0] = &app_monitor[k].speed_rx.desc;
+		in[1] = &app_monitor[k].force_rx.desc;
 
 		for (j = 0U; j < 2U; j++) {
 			const bool ext = (in[j]->flags & CALIB_IN_EXTENDED) != 0U;

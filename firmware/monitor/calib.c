@@ -26,17 +26,15 @@ typedef struct {
 #define F_U16(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 2U, 0U, (lo), (hi), 1U, 0U }
 #define F_U32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 0U, (lo), (hi), 1U, 0U }
 #define F_I32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 1U, (lo), (hi), 1U, 0U }
-/* One row per field of every input / corner slot. Storage ranges admit the
- * zeros of an unused slot; calib_map.c checks what a used one means. */
-#define FA(arr, n, f, size, sgn, lo, hi) \
-	{ (uint16_t)offsetof(calib_t, arr[0].f), (size), (sgn), (lo), (hi), (n), \
-	  (uint16_t)sizeof(((calib_t *)0)->arr[0]) }
-#define FI(f, size, sgn, lo, hi) FA(inputs, CALIB_MAX_INPUTS, f, size, sgn, lo, hi)
-#define FC(f, size, sgn, lo, hi) FA(corners, CALIB_MAX_CORNERS, f, size, sgn, lo, hi)
-#define FI_SIG(s) FI(s.start_bit, 1U, 0U, 0, 63), FI(s.length, 1U, 0U, 0, 32), \
-	FI(s.byte_order, 1U, 0U, 0, 1), FI(s.is_signed, 1U, 0U, 0, 1)
-#define FI_DEC(d) FI(d.mant, 4U, 1U, INT32_MIN, INT32_MAX), FI(d.exp, 1U, 1U, -12, 12)
-#define FI_DIL(i) FI(data_id_list[i], 1U, 0U, 0, 255)
+/* One row per field of every input / corner slot (count and stride: the
+ * array; off: the field in element 0). Storage ranges admit the zeros of an
+ * unused slot; calib_map.c checks what a used one means. */
+#define FI(off, size, sgn, lo, hi) \
+	{ (uint16_t)(off), (size), (sgn), (lo), (hi), (uint8_t)CALIB_MAX_INPUTS, \
+	  (uint16_t)sizeof(calib_input_t) }
+#define FC(off, size, sgn, lo, hi) \
+	{ (uint16_t)(off), (size), (sgn), (lo), (hi), (uint8_t)CALIB_MAX_CORNERS, \
+	  (uint16_t)sizeof(calib_corner_t) }
 
 /* Model fields get their ranges from squeal_model_params_check() too; the
  * rows repeat the documented domain so a block is range-checked in one pass. */
@@ -76,53 +74,81 @@ static const calib_field_t fields[] = {
 	F_U32(hyst_rho_ppm, 0, 1000000),
 	F_U32(rho_warn_ppm, 0, 1000000),
 	F_U16(watchdog_ms, 10, 10000),
-	F_U8(n_inputs, 0, CALIB_MAX_INPUTS),
-	F_U8(n_corners, 0, CALIB_MAX_CORNERS),
-	FI(id, 4U, 0U, 0, 0x1FFFFFFF),
-	FI(flags, 1U, 0U, 0, CALIB_IN_FLAGS_ALL),
-	FI(min_dlc, 1U, 0U, 0, 8),
-	FI_SIG(sig),
-	FI_DEC(factor),
-	FI_DEC(offset),
-	FI(unit, 1U, 0U, 0, 255),
-	FI_SIG(mux),
-	FI(mux_value, 4U, 0U, 0, UINT32_MAX),
-	FI(na_raw, 4U, 0U, 0, UINT32_MAX),
-	FI(na_raw2, 4U, 0U, 0, UINT32_MAX),
-	FI(qualifier_bit, 1U, 0U, 0, 63),
-	FI(qualifier_invalid, 1U, 0U, 0, 1),
-	FI(protection, 1U, 0U, 0, CALIB_PROT_COUNT - 1),
-	FI(data_id, 2U, 0U, 0, 0xFFFF),
-	FI_DIL(0), FI_DIL(1), FI_DIL(2), FI_DIL(3), FI_DIL(4), FI_DIL(5), FI_DIL(6), FI_DIL(7),
-	FI_DIL(8), FI_DIL(9), FI_DIL(10), FI_DIL(11), FI_DIL(12), FI_DIL(13), FI_DIL(14), FI_DIL(15),
-	FI_SIG(counter),
-	FI(counter_modulus, 1U, 0U, 0, 16),
-	FI(max_delta_counter, 1U, 0U, 0, 15),
-	FI(period_ms, 2U, 0U, 0, 1000),
-	FI(stale_cycles, 1U, 0U, 0, 100),
-	FI_DEC(max),
-	FI_DEC(min),
-	FI_DEC(step_max),
-	FC(pos, 1U, 0U, 0, 3),
-	FC(speed_input, 1U, 0U, 0, CALIB_MAX_INPUTS - 1),
-	FC(force_input, 1U, 0U, 0, CALIB_MAX_INPUTS - 1),
-	FC(friction_faces, 1U, 0U, 0, 4),
-	FC(piston_area_cmm2, 4U, 0U, 0, 100000000),   /* up to 1 m^2 */
-	FC(efficiency_ppm, 4U, 0U, 0, 1000000),
-	FC(axle_factor_ppm, 4U, 0U, 0, 4000000),
-	FC(mass_q16, 4U, 1U, 0, 10000LL << 16),
-	FC(omega0_q12, 4U, 1U, 0, 500000LL << 12),
-	FC(damping_q30, 4U, 1U, 0, 1LL << 30),
-	FC(mu_inf_q30, 4U, 1U, 0, 3LL << 29),
-	FC(delta_mu_q30, 4U, 1U, -(3LL << 29), 3LL << 29),
-	FC(slope_q24, 4U, 1U, 0, 20LL << 24),
-	FC(criterion, 1U, 0U, 0, 1),
-	FC(pad_radius_um, 4U, 0U, 0, 1000000),
-	FC(wheel_radius_um, 4U, 0U, 0, 2000000),
-	FC(status_id, 2U, 0U, 0, 0x7FF),
-	FC(detail_id, 2U, 0U, 0, 0x7FF),
-	FC(detail2_id, 2U, 0U, 0, 0x7FF),
-	FC(diag_id, 2U, 0U, 0, 0x7FF),
+	F_U8(n_inputs, 0, (int64_t)CALIB_MAX_INPUTS),
+	F_U8(n_corners, 0, (int64_t)CALIB_MAX_CORNERS),
+	FI(offsetof(calib_t, inputs[0].id), 4U, 0U, 0, 0x1FFFFFFF),
+	FI(offsetof(calib_t, inputs[0].flags), 1U, 0U, 0, (int64_t)CALIB_IN_FLAGS_ALL),
+	FI(offsetof(calib_t, inputs[0].min_dlc), 1U, 0U, 0, 8),
+	FI(offsetof(calib_t, inputs[0].sig.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].sig.length), 1U, 0U, 0, 32),
+	FI(offsetof(calib_t, inputs[0].sig.byte_order), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].sig.is_signed), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].factor.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].factor.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].offset.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].offset.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].unit), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].mux.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].mux.length), 1U, 0U, 0, 32),
+	FI(offsetof(calib_t, inputs[0].mux.byte_order), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].mux.is_signed), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].mux_value), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].na_raw), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].na_raw2), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].qualifier_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].qualifier_invalid), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].protection), 1U, 0U, 0, (int64_t)CALIB_PROT_COUNT - 1),
+	FI(offsetof(calib_t, inputs[0].data_id), 2U, 0U, 0, 0xFFFF),
+	FI(offsetof(calib_t, inputs[0].data_id_list[0]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[1]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[2]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[3]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[4]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[5]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[6]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[7]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[8]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[9]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[10]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[11]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[12]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[13]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[14]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[15]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].counter.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].counter.length), 1U, 0U, 0, 32),
+	FI(offsetof(calib_t, inputs[0].counter.byte_order), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].counter.is_signed), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].counter_modulus), 1U, 0U, 0, 16),
+	FI(offsetof(calib_t, inputs[0].max_delta_counter), 1U, 0U, 0, 15),
+	FI(offsetof(calib_t, inputs[0].period_ms), 2U, 0U, 0, 1000),
+	FI(offsetof(calib_t, inputs[0].stale_cycles), 1U, 0U, 0, 100),
+	FI(offsetof(calib_t, inputs[0].max.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].max.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].min.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].min.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].step_max.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].step_max.exp), 1U, 1U, -12, 12),
+	FC(offsetof(calib_t, corners[0].pos), 1U, 0U, 0, 3),
+	FC(offsetof(calib_t, corners[0].speed_input), 1U, 0U, 0, (int64_t)CALIB_MAX_INPUTS - 1),
+	FC(offsetof(calib_t, corners[0].force_input), 1U, 0U, 0, (int64_t)CALIB_MAX_INPUTS - 1),
+	FC(offsetof(calib_t, corners[0].friction_faces), 1U, 0U, 0, 4),
+	FC(offsetof(calib_t, corners[0].piston_area_cmm2), 4U, 0U, 0, 100000000),   /* up to 1 m^2 */
+	FC(offsetof(calib_t, corners[0].efficiency_ppm), 4U, 0U, 0, 1000000),
+	FC(offsetof(calib_t, corners[0].axle_factor_ppm), 4U, 0U, 0, 4000000),
+	FC(offsetof(calib_t, corners[0].mass_q16), 4U, 1U, 0, 10000LL << 16),
+	FC(offsetof(calib_t, corners[0].omega0_q12), 4U, 1U, 0, 500000LL << 12),
+	FC(offsetof(calib_t, corners[0].damping_q30), 4U, 1U, 0, 1LL << 30),
+	FC(offsetof(calib_t, corners[0].mu_inf_q30), 4U, 1U, 0, 3LL << 29),
+	FC(offsetof(calib_t, corners[0].delta_mu_q30), 4U, 1U, -(3LL << 29), 3LL << 29),
+	FC(offsetof(calib_t, corners[0].slope_q24), 4U, 1U, 0, 20LL << 24),
+	FC(offsetof(calib_t, corners[0].criterion), 1U, 0U, 0, 1),
+	FC(offsetof(calib_t, corners[0].pad_radius_um), 4U, 0U, 0, 1000000),
+	FC(offsetof(calib_t, corners[0].wheel_radius_um), 4U, 0U, 0, 2000000),
+	FC(offsetof(calib_t, corners[0].status_id), 2U, 0U, 0, 0x7FF),
+	FC(offsetof(calib_t, corners[0].detail_id), 2U, 0U, 0, 0x7FF),
+	FC(offsetof(calib_t, corners[0].detail2_id), 2U, 0U, 0, 0x7FF),
+	FC(offsetof(calib_t, corners[0].diag_id), 2U, 0U, 0, 0x7FF),
 };
 
 #define FIELD_COUNT (sizeof(fields) / sizeof(fields[0]))

@@ -52,13 +52,12 @@
 #define CALIB_IN_DLC_EXACT (1U << 5) /* DLC must equal min_dlc              */
 #define CALIB_IN_FLAGS_ALL 0x3FU
 
-typedef enum {
-	CALIB_PROT_NONE = 0,
-	CALIB_PROT_P01,      /* AUTOSAR E2E P01 1A: CRC byte 0, counter byte 1 */
-	CALIB_PROT_P02,      /* AUTOSAR E2E P02: CRC-8H2F, DataIDList          */
-	CALIB_PROT_COUNTER,  /* alive counter signal only                      */
-	CALIB_PROT_COUNT
-} calib_protection_t;
+/* calib_input_t.protection */
+#define CALIB_PROT_NONE    0U
+#define CALIB_PROT_P01     1U /* AUTOSAR E2E P01 1A: CRC byte 0, counter byte 1 */
+#define CALIB_PROT_P02     2U /* AUTOSAR E2E P02: CRC-8H2F, DataIDList          */
+#define CALIB_PROT_COUNTER 3U /* alive counter signal only                      */
+#define CALIB_PROT_COUNT   4U
 
 /* A decimal as DBC files write it: mant x 10^exp (exp -12..12). */
 typedef struct {
@@ -80,7 +79,7 @@ typedef struct {
 	uint32_t na_raw2;          /* CALIB_IN_NA2                            */
 	uint8_t qualifier_bit;     /* DBC bit number (CALIB_IN_QUALIFIER)     */
 	uint8_t qualifier_invalid; /* the bit's value that means invalid     */
-	uint8_t protection;        /* calib_protection_t                      */
+	uint8_t protection;        /* CALIB_PROT_*                            */
 	uint16_t data_id;          /* P01                                     */
 	uint8_t data_id_list[CALIB_DATA_ID_LIST_LEN]; /* P02                  */
 	can_signal_t counter;      /* CALIB_PROT_COUNTER                      */

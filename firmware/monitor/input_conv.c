@@ -83,24 +83,25 @@ static const char *const unit_names[INPUT_UNIT_COUNT] = {
 	"km/h", "m/s", "mph", "rad/s", "rpm", "N", "kN", "bar", "kPa", "MPa", "psi", "Nm"
 };
 
-static char lower(char c)
+/* ASCII lower case as a byte value (unit strings are ASCII) */
+static uint8_t lower(char c)
 {
-	return ((c >= 'A') && (c <= 'Z')) ? (char)(c - 'A' + 'a') : c;
+	const uint8_t u = (uint8_t)c;
+
+	return ((u >= 0x41U) && (u <= 0x5AU)) ? (uint8_t)(u + 0x20U) : u;
 }
 
+/* a equals the short literal b, ignoring case; the loop runs along b */
 static bool same_nocase(const char *a, const char *b)
 {
 	uint32_t i;
 
-	for (i = 0U; i < 16U; i++) {
+	for (i = 0U; b[i] != '\0'; i++) {
 		if (lower(a[i]) != lower(b[i])) {
 			return false;
 		}
-		if (a[i] == '\0') {
-			return true;
-		}
 	}
-	return false;
+	return a[i] == '\0';
 }
 
 int input_unit_parse(const char *s, input_unit_t *unit)
@@ -238,7 +239,11 @@ int input_conv_make(int32_t f_mant, int8_t f_exp, int32_t o_mant, int8_t o_exp,
 		}
 		conv->add = add;
 	}
-	conv->qty = (uint8_t)input_unit_qty(unit);
+	{
+		const input_qty_t qty = input_unit_qty(unit);
+
+		conv->qty = (uint8_t)qty;
+	}
 	return SQ_OK;
 }
 

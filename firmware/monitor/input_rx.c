@@ -188,10 +188,16 @@ input_rx_result_t input_rx_frame(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e,
 {
 	const calib_input_t *in = &cfg->desc;
 	input_rx_result_t r = { (uint8_t)INPUT_RX_OK, (uint8_t)E2E_P01_STATUS_NONEWDATA, 0U, 0U, 0 };
-	const bool dlc_ok = ((in->flags & CALIB_IN_DLC_EXACT) != 0U) ?
-		(f->dlc == in->min_dlc) : ((f->dlc >= in->min_dlc) && (f->dlc <= 8U));
+	bool dlc_ok;
 	e2e_p01_status_t st = E2E_P01_STATUS_NONEWDATA;
-	input_rx_reason_t why = protection(cfg, e2e, f, dlc_ok, &st);
+	input_rx_reason_t why;
+
+	if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
+		dlc_ok = f->dlc == in->min_dlc;
+	} else {
+		dlc_ok = (f->dlc >= in->min_dlc) && (f->dlc <= CAN_SIGNAL_FRAME_BYTES);
+	}
+	why = protection(cfg, e2e, f, dlc_ok, &st);
 
 	r.e2e_status = (uint8_t)st;
 	r.lost = (st == E2E_P01_STATUS_OKSOMELOST) ? e2e->lost_data : 0U;

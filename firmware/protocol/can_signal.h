@@ -22,15 +22,14 @@
 #define CAN_SIGNAL_MAX_LEN 32U
 #define CAN_SIGNAL_FRAME_BYTES 8U
 
-typedef enum {
-	CAN_SIGNAL_INTEL = 0,    /* DBC @1 */
-	CAN_SIGNAL_MOTOROLA = 1  /* DBC @0 */
-} can_byte_order_t;
+/* can_signal_t.byte_order */
+#define CAN_SIGNAL_INTEL    0U /* DBC @1 */
+#define CAN_SIGNAL_MOTOROLA 1U /* DBC @0 */
 
 typedef struct {
 	uint8_t start_bit;   /* DBC start bit, 0..63                          */
 	uint8_t length;      /* 1..32                                         */
-	uint8_t byte_order;  /* can_byte_order_t                              */
+	uint8_t byte_order;  /* CAN_SIGNAL_INTEL or CAN_SIGNAL_MOTOROLA        */
 	uint8_t is_signed;   /* 1: two's complement                           */
 } can_signal_t;
 
