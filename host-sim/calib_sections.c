@@ -24,21 +24,6 @@
 static const char *const pos_names[CALIB_MAX_CORNERS] = { "FL", "FR", "RL", "RR" };
 static const char *const prot_names[CALIB_PROT_COUNT] = { "none", "p01", "p02", "counter" };
 
-static void msgf(char *msg, size_t len, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
-static void msgf(char *msg, size_t len, const char *fmt, ...)
-{
-	va_list ap;
-
-	if ((msg == NULL) || (len == 0U)) {
-		return;
-	}
-	va_start(ap, fmt);
-	vsnprintf(msg, len, fmt, ap);
-	va_end(ap);
-}
-
 void calib_sections_init(calib_sections_t *s)
 {
 	memset(s, 0, sizeof(*s));
@@ -152,31 +137,6 @@ double calib_dec_value(calib_dec_t d)
 	return (double)d.mant * pow(10.0, d.exp);
 }
 
-static bool parse_int(const char *text, int64_t *out)
-{
-	char *end = NULL;
-	long long v;
-
-	errno = 0;
-	if ((text[0] == '0') && ((text[1] == 'x') || (text[1] == 'X'))) {
-		if (!isxdigit((unsigned char)text[2])) {
-			return false;
-		}
-		v = strtoll(text + 2, &end, 16);
-	} else {
-		if (!isdigit((unsigned char)text[0]) &&
-		    !((text[0] == '-') && isdigit((unsigned char)text[1]))) {
-			return false;
-		}
-		v = strtoll(text, &end, 10);
-	}
-	if ((errno != 0) || (end == NULL) || (*end != '\0')) {
-		return false;
-	}
-	*out = v;
-	return true;
-}
-
 static bool parse_bool(const char *t, uint8_t *out)
 {
 	if ((strcmp(t, "1") == 0) || (strcasecmp(t, "yes") == 0) || (strcasecmp(t, "true") == 0)) {
@@ -245,29 +205,29 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 
 	n = sscanf(text, "[%15s %63[^] \t] ]%7s", kind, name, extra);
 	if ((n != 2) || (text[strlen(text) - 1U] != ']')) {
-		msgf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
+		calib_text_errf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
 		return -1;
 	}
 	if ((strcmp(kind, "input") != 0) && (strcmp(kind, "corner") != 0)) {
-		msgf(msg, msglen, "unknown section '%s' (input or corner)", kind);
+		calib_text_errf(msg, msglen, "unknown section '%s' (input or corner)", kind);
 		return -1;
 	}
 	if (s->count >= CALIB_SECTIONS_MAX) {
-		msgf(msg, msglen, "too many sections");
+		calib_text_errf(msg, msglen, "too many sections");
 		return -1;
 	}
 	if (strcmp(kind, "input") == 0) {
 		if (!valid_name(name)) {
-			msgf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
+			calib_text_errf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
 			return -1;
 		}
 		if (s->inputs >= CALIB_MAX_INPUTS) {
-			msgf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
+			calib_text_errf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
 			return -1;
 		}
 	} else {
 		if (pos_of(name) < 0) {
-			msgf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
+			calib_text_errf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
 			return -1;
 		}
 	}
@@ -276,7 +236,7 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 
 		if ((o->is_corner == (strcmp(kind, "corner") == 0)) &&
 		    (strcasecmp(o->name, name) == 0)) {
-			msgf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
+			calib_text_errf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
 			return -1;
 		}
 	}
@@ -308,14 +268,14 @@ int calib_sections_key(calib_sections_t *s, const char *key, const char *value,
 
 	for (i = 0; i < sec->nkv; i++) {
 		if (strcmp(sec->kv[i].key, key) == 0) {
-			msgf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
+			calib_text_errf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
 			     sec->kv[i].line);
 			return -1;
 		}
 	}
 	if ((sec->nkv >= CALIB_SECTION_KEYS_MAX) || (strlen(key) >= sizeof(sec->kv[0].key)) ||
 	    (strlen(value) >= sizeof(sec->kv[0].value))) {
-		msgf(msg, msglen, "key or value too long, or too many keys in the section");
+		calib_text_errf(msg, msglen, "key or value too long, or too many keys in the section");
 		return -1;
 	}
 	snprintf(sec->kv[sec->nkv].key, sizeof(sec->kv[0].key), "%s", key);
@@ -357,7 +317,7 @@ static int kv_err(const ctx_t *c, const calib_section_kv_t *kv, const char *fmt,
 	va_start(ap, fmt);
 	vsnprintf(m, sizeof(m), fmt, ap);
 	va_end(ap);
-	msgf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
+	calib_text_errf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
 	     c->sec->is_corner ? "corner" : "input", c->sec->name, m);
 	return -1;
 }
@@ -374,7 +334,7 @@ static int get_int(const ctx_t *c, const char *key, int64_t lo, int64_t hi, bool
 	if (kv == NULL) {
 		return required ? kv_err(c, NULL, "%s is required", key) : 0;
 	}
-	if (!parse_int(kv->value, out)) {
+	if (!calib_text_parse_int(kv->value, out)) {
 		return kv_err(c, kv, "%s needs an integer (decimal or 0x hex), got '%s'", key,
 			      kv->value);
 	}
@@ -491,7 +451,7 @@ static int get_dil(const ctx_t *c, calib_input_t *in)
 	for (tok = strtok_r(buf, " \t,", &save); tok != NULL; tok = strtok_r(NULL, " \t,", &save)) {
 		int64_t v;
 
-		if ((n >= CALIB_DATA_ID_LIST_LEN) || !parse_int(tok, &v) || (v < 0) || (v > 255)) {
+		if ((n >= CALIB_DATA_ID_LIST_LEN) || !calib_text_parse_int(tok, &v) || (v < 0) || (v > 255)) {
 			return kv_err(c, kv, "data_id_list: 16 byte values 0..255 separated by blanks or commas");
 		}
 		in->data_id_list[n] = (uint8_t)v;
@@ -783,31 +743,17 @@ static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t
 	if (unknown_keys(c, corner_keys) != 0) {
 		return -1;
 	}
-	/* the corner's output identifiers default to the flat ones + 0x10 pos */
+	/* the corner's defaults (outputs: the flat ones + 0x10 pos), then its
+	 * keys, each read with the flat key's own rules */
 	calib_corner_defaults(flat, (uint8_t)pos, corner);
-	tmp.status_id = corner->status_id;
-	tmp.detail_id = corner->detail_id;
-	tmp.detail2_id = corner->detail2_id;
-	tmp.diag_id = corner->diag_id;
+	calib_flat_from_corner(corner, &tmp);
 	for (i = 0; flat_keys[i] != NULL; i++) {
 		kv = kv_of(c->sec, flat_keys[i]);
 		if ((kv != NULL) && (calib_text_flat_key(kv->key, kv->value, &tmp, msg, sizeof(msg)) != 0)) {
 			return kv_err(c, kv, "%s", msg);
 		}
 	}
-	corner->mass_q16 = tmp.mass_q16;
-	corner->omega0_q12 = tmp.omega0_q12;
-	corner->damping_q30 = tmp.damping_q30;
-	corner->mu_inf_q30 = tmp.mu_inf_q30;
-	corner->delta_mu_q30 = tmp.delta_mu_q30;
-	corner->slope_q24 = tmp.slope_q24;
-	corner->criterion = tmp.criterion;
-	corner->pad_radius_um = tmp.pad_radius_um;
-	corner->wheel_radius_um = tmp.wheel_radius_um;
-	corner->status_id = tmp.status_id;
-	corner->detail_id = tmp.detail_id;
-	corner->detail2_id = tmp.detail2_id;
-	corner->diag_id = tmp.diag_id;
+	calib_corner_from_flat(&tmp, corner);
 	for (i = 0; i < 2U; i++) {
 		const char *key = (i == 0U) ? "speed" : "force";
 
@@ -890,12 +836,12 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 	}
 	out.n_inputs = (uint8_t)ni;
 	if (s->corners == 0U) {
-		msgf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
+		calib_text_errf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
 		     s->sec[0].line);
 		return -1;
 	}
 	if (legacy_line != 0U) {
-		msgf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
+		calib_text_errf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
 		     file, legacy_line, legacy_key);
 		return -1;
 	}
@@ -1023,19 +969,7 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 			"status_id", "detail_id", "detail2_id", "diag_id", NULL };
 		size_t k;
 
-		tmp.mass_q16 = c->mass_q16;
-		tmp.omega0_q12 = c->omega0_q12;
-		tmp.damping_q30 = c->damping_q30;
-		tmp.mu_inf_q30 = c->mu_inf_q30;
-		tmp.delta_mu_q30 = c->delta_mu_q30;
-		tmp.slope_q24 = c->slope_q24;
-		tmp.criterion = c->criterion;
-		tmp.pad_radius_um = c->pad_radius_um;
-		tmp.wheel_radius_um = c->wheel_radius_um;
-		tmp.status_id = c->status_id;
-		tmp.detail_id = c->detail_id;
-		tmp.detail2_id = c->detail2_id;
-		tmp.diag_id = c->diag_id;
+		calib_flat_from_corner(c, &tmp);
 		fprintf(f, "\n[corner %s]\nspeed = %s\nforce = %s\n", pos_names[c->pos],
 			nm[c->speed_input], nm[c->force_input]);
 		if (c->piston_area_cmm2 != 0U) {

@@ -26,7 +26,9 @@
 #ifndef CALIB_TEXT_H
 #define CALIB_TEXT_H
 
+#include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "calib.h"
@@ -58,6 +60,13 @@ int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, ch
  * flat key's rules (for the corner sections). 0, or -1 with msg. */
 int calib_text_flat_key(const char *key, const char *value, calib_t *cal, char *msg,
 			size_t msglen);
+
+/* One line of error text into err (nothing when errlen is 0). */
+void calib_text_errf(char *err, size_t errlen, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+
+/* An integer: decimal with an optional sign, or 0x hex. */
+bool calib_text_parse_int(const char *text, int64_t *out);
 
 /* A flat key's value in cal, formatted as calib_text_write() does. */
 void calib_text_flat_format(const char *key, const calib_t *cal, char *buf, size_t len);

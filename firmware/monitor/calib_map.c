@@ -311,15 +311,8 @@ uint32_t calib_corner_count(const calib_t *cal)
 	return ((cal == NULL) || (cal->n_corners == 0U)) ? 1U : cal->n_corners;
 }
 
-void calib_corner_defaults(const calib_t *cal, uint8_t pos, calib_corner_t *c)
+void calib_corner_from_flat(const calib_t *cal, calib_corner_t *c)
 {
-	const uint16_t step = (uint16_t)(CORNER_ID_STEP * pos);
-
-	*c = (calib_corner_t){ 0 };
-	c->pos = pos;
-	c->friction_faces = 2U;
-	c->efficiency_ppm = 1000000U;
-	c->axle_factor_ppm = 1000000U;
 	c->mass_q16 = cal->mass_q16;
 	c->omega0_q12 = cal->omega0_q12;
 	c->damping_q30 = cal->damping_q30;
@@ -329,10 +322,43 @@ void calib_corner_defaults(const calib_t *cal, uint8_t pos, calib_corner_t *c)
 	c->criterion = cal->criterion;
 	c->pad_radius_um = cal->pad_radius_um;
 	c->wheel_radius_um = cal->wheel_radius_um;
-	c->status_id = (uint16_t)(cal->status_id + step);
-	c->detail_id = (uint16_t)(cal->detail_id + step);
-	c->detail2_id = (uint16_t)(cal->detail2_id + step);
-	c->diag_id = (uint16_t)(cal->diag_id + step);
+	c->status_id = cal->status_id;
+	c->detail_id = cal->detail_id;
+	c->detail2_id = cal->detail2_id;
+	c->diag_id = cal->diag_id;
+}
+
+void calib_flat_from_corner(const calib_corner_t *c, calib_t *cal)
+{
+	cal->mass_q16 = c->mass_q16;
+	cal->omega0_q12 = c->omega0_q12;
+	cal->damping_q30 = c->damping_q30;
+	cal->mu_inf_q30 = c->mu_inf_q30;
+	cal->delta_mu_q30 = c->delta_mu_q30;
+	cal->slope_q24 = c->slope_q24;
+	cal->criterion = c->criterion;
+	cal->pad_radius_um = c->pad_radius_um;
+	cal->wheel_radius_um = c->wheel_radius_um;
+	cal->status_id = c->status_id;
+	cal->detail_id = c->detail_id;
+	cal->detail2_id = c->detail2_id;
+	cal->diag_id = c->diag_id;
+}
+
+void calib_corner_defaults(const calib_t *cal, uint8_t pos, calib_corner_t *c)
+{
+	const uint16_t step = (uint16_t)(CORNER_ID_STEP * pos);
+
+	*c = (calib_corner_t){ 0 };
+	c->pos = pos;
+	c->friction_faces = 2U;
+	c->efficiency_ppm = 1000000U;
+	c->axle_factor_ppm = 1000000U;
+	calib_corner_from_flat(cal, c);
+	c->status_id = (uint16_t)(c->status_id + step);
+	c->detail_id = (uint16_t)(c->detail_id + step);
+	c->detail2_id = (uint16_t)(c->detail2_id + step);
+	c->diag_id = (uint16_t)(c->diag_id + step);
 }
 
 /* DiscSpeed_radps / PadForce_N (squeal.dbc: 16|16@1+ after CRC and counter)

@@ -44,4 +44,9 @@ int calib_corner_view(const calib_t *cal, uint32_t k, calib_corner_t *corner,
  * output identifiers of position pos (0x300.. + 0x10 pos). */
 void calib_corner_defaults(const calib_t *cal, uint8_t pos, calib_corner_t *corner);
 
+/* A corner's brake and output identifiers <-> the flat keys of the same
+ * names (the text front end converts a corner's keys with the flat rules). */
+void calib_corner_from_flat(const calib_t *cal, calib_corner_t *corner);
+void calib_flat_from_corner(const calib_corner_t *corner, calib_t *cal);
+
 #endif /* CALIB_MAP_H */
