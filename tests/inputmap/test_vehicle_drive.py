@@ -17,6 +17,8 @@ At the end of every hold of the drive, for every corner of the layout:
     ("not sliding" below the calibration's v0_min_mps / force_min_n)
     (skipped where a 1 % change of v0 or N would change the state: the
     debounce/hysteresis band).
+And a log of the same drive twice, the logger's clock restarting in
+between, replays as two segments (nothing squeezed into one instant).
 Prints "RESULT: N passed, M failed, K skipped".
 """
 import json
@@ -254,12 +256,45 @@ def run_layout(r, db, tmp, layout):
                     "%s: state %s, classify %s" % (what, STATES.get(int(got_state)), want))
 
 
+def summary_number(err, key):
+    m = re.search(r"^\s+" + re.escape(key) + r"\s+(\d+(?:\.\d+)?)", err, re.M)
+    return None if m is None else float(m.group(1))
+
+
+def test_restarted_logger(r, tmp):
+    """The same drive logged twice, the logger's clock restarting in
+    between (a jump back of 8.8 s): two segments, every frame used, the
+    virtual time the sum of both."""
+    path = os.path.join(HERE, LAYOUTS[0])
+    log = os.path.join(tmp, "in.log")
+    subprocess.run([SIM, "plant", "--calib", path, "--scenario", os.path.join(tmp, "drive.txt"),
+                    "--log", log, "--quiet"], check=True)
+    with open(log) as f:
+        once = f.read()
+    twice = os.path.join(tmp, "twice.log")
+    with open(twice, "w") as f:
+        f.write(once + once)
+    p = subprocess.run([SIM, "replay", "--calib", path, twice], stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE, check=True)
+    err = p.stderr.decode()
+    n = len(once.splitlines())
+    r.check(summary_number(err, "segments") == 2, "restarted log: 2 segments")
+    r.check(summary_number(err, "time_backwards") == 0, "restarted log: no frame squeezed")
+    r.check(re.search(r"new segment 2, log time re-based", err) is not None,
+            "restarted log: the new segment is reported with its line")
+    vt = summary_number(err, "virtual_time_s")
+    r.check(vt is not None and abs(vt - (2 * DRIVE[-1][0] + 0.01 + 0.1)) < 0.05,
+            "restarted log: virtual time %.3f s = both segments" % (vt or 0))
+    r.check(summary_number(err, "frames_read") == 2 * n, "restarted log: every frame read")
+
+
 def main():
     r = Results()
     db = canmatrix.formats.loadp_flat(DBC)
     with tempfile.TemporaryDirectory() as tmp:
         for layout in LAYOUTS:
             run_layout(r, db, tmp, layout)
+        test_restarted_logger(r, tmp)
     print("RESULT: %d passed, %d failed, %d skipped" % (r.passed, r.failed, r.skipped))
     return 0 if r.failed == 0 else 1
 
