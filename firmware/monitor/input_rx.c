@@ -7,8 +7,6 @@
 #include "e2e_p02.h"
 #include "sq_status.h"
 
-#define STD_ID_MASK 0x7FFU
-#define EXT_ID_MASK 0x1FFFFFFFUL
 #define POW10_MAX 9 /* 10^9 x 2^31 < 2^63 */
 
 static const char *const reason_names[INPUT_RX_REASON_COUNT] = {
@@ -107,10 +105,9 @@ bool input_rx_matches(const input_rx_cfg_t *cfg, const hal_can_frame_t *f, bool 
 	const calib_input_t *in = &cfg->desc;
 	const bool ext = (f->flags & HAL_CAN_FLAG_EXT) != 0U;
 	const bool want_ext = (in->flags & CALIB_IN_EXTENDED) != 0U;
-	const uint32_t id = f->id & (ext ? EXT_ID_MASK : STD_ID_MASK);
 
 	*id_only = false;
-	if (id != in->id) {
+	if (f->id != in->id) {
 		return false;
 	}
 	if ((ext != want_ext) || ((f->flags & HAL_CAN_FLAG_RTR) != 0U)) {
