@@ -96,9 +96,12 @@ int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
 	e2e_p01_tx_init(&me->tx_diag);
 	me->start_us = now_us;
 	me->now_us = now_us;
-	me->next_status_us = now_us;
-	me->next_detail_us = now_us;
-	me->next_diag_us = now_us;
+	/* corner k sends its periodic messages k ms after corner 0: the
+	 * corners' transmissions (and their E2E work) fall into different
+	 * 1 ms steps */
+	me->next_status_us = now_us + ((uint64_t)me->corner_index * US_PER_MS);
+	me->next_detail_us = me->next_status_us;
+	me->next_diag_us = me->next_status_us;
 	me->started = true;
 	return rc;
 }
