@@ -194,7 +194,9 @@ void hal_watchdog_kick(void);
  *        is interrupted (reset, power loss) leaves either the old or the new
  *        block readable, never a mix; the CRC inside the block proves which.
  */
-#define HAL_CALIB_MAX_LEN 512U
+/* 1 KiB flash page of the F103 minus the slot header (16): calib v2 with
+ * the input map is 989 bytes */
+#define HAL_CALIB_MAX_LEN 1008U
 int hal_calib_read(uint8_t *buf, uint32_t len);
 int hal_calib_write(const uint8_t *buf, uint32_t len);
 

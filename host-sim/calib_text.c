@@ -257,10 +257,7 @@ static void format_value(const key_desc_t *k, int64_t raw, char *buf, size_t len
 	snprintf(buf, len, "%.17g", physical(k, raw));
 }
 
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
+void calib_text_errf(char *err, size_t errlen, const char *fmt, ...)
 {
 	va_list ap;
 
@@ -285,7 +282,7 @@ static const key_desc_t *find_key(const char *name)
 }
 
 /* Integer: decimal with optional sign, or 0x hex. */
-static bool parse_int(const char *text, int64_t *out)
+bool calib_text_parse_int(const char *text, int64_t *out)
 {
 	char *end = NULL;
 	long long v;
@@ -377,7 +374,7 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 		} else if (strcmp(text, "cubic") == 0) {
 			*raw = (int64_t)SQUEAL_CRITERION_CUBIC;
 		} else {
-			set_err(err, errlen, "%s must be 'exact' or 'cubic', got '%s'",
+			calib_text_errf(err, errlen, "%s must be 'exact' or 'cubic', got '%s'",
 				k->key, text);
 			return -1;
 		}
@@ -391,27 +388,27 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 			   (strcasecmp(text, "off") == 0)) {
 			*raw = 0;
 		} else {
-			set_err(err, errlen, "%s must be yes/no (or 1/0), got '%s'",
+			calib_text_errf(err, errlen, "%s must be yes/no (or 1/0), got '%s'",
 				k->key, text);
 			return -1;
 		}
 		return 0;
 	case KIND_INT:
 	case KIND_HEX:
-		if (!parse_int(text, &iv)) {
-			set_err(err, errlen, "%s needs an integer (decimal or 0x hex), got '%s'",
+		if (!calib_text_parse_int(text, &iv)) {
+			calib_text_errf(err, errlen, "%s needs an integer (decimal or 0x hex), got '%s'",
 				k->key, text);
 			return -1;
 		}
 		break;
 	default:
 		if (!parse_real(text, &v)) {
-			set_err(err, errlen, "%s needs a number, got '%s'", k->key, text);
+			calib_text_errf(err, errlen, "%s needs a number, got '%s'", k->key, text);
 			return -1;
 		}
 		v *= k->scale;
 		if (!(v >= (double)min - 0.5) || !(v <= (double)max + 0.5)) {
-			set_err(err, errlen, "%s = %s is out of range (%s)", k->key,
+			calib_text_errf(err, errlen, "%s = %s is out of range (%s)", k->key,
 				text, range);
 			return -1;
 		}
@@ -421,7 +418,7 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 			char step[40];
 
 			format_value(k, 1, step, sizeof(step));
-			set_err(err, errlen, "%s = %s is not a whole multiple of its resolution %s%s%s",
+			calib_text_errf(err, errlen, "%s = %s is not a whole multiple of its resolution %s%s%s",
 				k->key, text, step,
 				strcmp(k->unit, "-") != 0 ? " " : "",
 				strcmp(k->unit, "-") != 0 ? k->unit : "");
@@ -430,7 +427,7 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 		break;
 	}
 	if ((iv < min) || (iv > max)) {
-		set_err(err, errlen, "%s = %s is out of range (%s)", k->key, text, range);
+		calib_text_errf(err, errlen, "%s = %s is out of range (%s)", k->key, text, range);
 		return -1;
 	}
 	*raw = iv;
@@ -452,23 +449,81 @@ static char *trim(char *s)
 	return s;
 }
 
+int calib_text_flat_key(const char *key, const char *value, calib_t *cal, char *msg,
+			size_t msglen)
+{
+	const key_desc_t *k = find_key(key);
+	int64_t raw = 0;
+
+	if (k == NULL) {
+		calib_text_errf(msg, msglen, "unknown key '%s'", key);
+		return -1;
+	}
+	if (convert_value(k, value, &raw, msg, msglen) != 0) {
+		return -1;
+	}
+	field_set(cal, k, raw);
+	return 0;
+}
+
+void calib_text_flat_format(const char *key, const calib_t *cal, char *buf, size_t len)
+{
+	const key_desc_t *k = find_key(key);
+
+	if (k == NULL) {
+		snprintf(buf, len, "?");
+		return;
+	}
+	format_value(k, field_get(cal, k), buf, len);
+}
+
+/* The flat keys that describe the legacy DiscSpeed/PadForce inputs: a file
+ * with [corner] sections configures its inputs there instead. */
+static bool legacy_input_key(const char *key)
+{
+	static const char *const legacy[] = { "disc_speed_id", "pad_force_id",
+		"e2e_check_inputs", "input_period_ms", "speed_max_radps",
+		"speed_step_max_radps", "force_max_n", "force_step_max_n" };
+	size_t i;
+
+	for (i = 0; i < sizeof(legacy) / sizeof(legacy[0]); i++) {
+		if (strcmp(key, legacy[i]) == 0) {
+			return true;
+		}
+	}
+	return false;
+}
+
 int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 		     size_t errlen)
+{
+	return calib_text_parse_map(f, name, out, NULL, err, errlen);
+}
+
+int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t *names,
+			 char *err, size_t errlen)
 {
 	char line[LINE_MAX_LEN];
 	unsigned int seen_line[KEY_COUNT];
 	char msg[200];
 	calib_t cal;
 	unsigned int lineno = 0;
+	static calib_sections_t sections; /* large: not on the stack */
+	unsigned int legacy_line = 0;
+	const char *legacy_key = "";
 
 	if ((f == NULL) || (out == NULL)) {
-		set_err(err, errlen, "calib_text_parse: NULL argument");
+		calib_text_errf(err, errlen, "calib_text_parse: NULL argument");
 		return SQ_EINVAL;
 	}
 	if (name == NULL) {
 		name = "<calibration>";
 	}
 	memset(seen_line, 0, sizeof(seen_line));
+	calib_sections_init(&sections);
+	if (names != NULL) {
+		memset(names, 0, sizeof(*names));
+	}
 	calib_default(&cal);
 	while (fgets(line, sizeof(line), f) != NULL) {
 		const key_desc_t *k;
@@ -481,7 +536,7 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 
 		lineno++;
 		if ((strchr(line, '\n') == NULL) && !feof(f)) {
-			set_err(err, errlen, "%s:%u: line longer than %d characters",
+			calib_text_errf(err, errlen, "%s:%u: line longer than %d characters",
 				name, lineno, LINE_MAX_LEN - 2);
 			return SQ_EBADMSG;
 		}
@@ -493,9 +548,16 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 		if (*key == '\0') {
 			continue;
 		}
+		if (*key == '[') {
+			if (calib_sections_header(&sections, key, lineno, msg, sizeof(msg)) != 0) {
+				calib_text_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
+				return SQ_EBADMSG;
+			}
+			continue;
+		}
 		eq = strchr(key, '=');
 		if (eq == NULL) {
-			set_err(err, errlen, "%s:%u: expected 'key = value', got '%s'",
+			calib_text_errf(err, errlen, "%s:%u: expected 'key = value', got '%s'",
 				name, lineno, key);
 			return SQ_EBADMSG;
 		}
@@ -503,47 +565,67 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 		value = trim(eq + 1);
 		key = trim(key);
 		if (*key == '\0') {
-			set_err(err, errlen, "%s:%u: missing key before '='", name, lineno);
+			calib_text_errf(err, errlen, "%s:%u: missing key before '='", name, lineno);
 			return SQ_EBADMSG;
+		}
+		if (calib_sections_open(&sections)) {
+			/* a key of the current [input]/[corner] section */
+			if (*value == '\0') {
+				calib_text_errf(err, errlen, "%s:%u: %s has no value", name, lineno, key);
+				return SQ_EBADMSG;
+			}
+			if (calib_sections_key(&sections, key, value, lineno, msg, sizeof(msg)) != 0) {
+				calib_text_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
+				return SQ_EBADMSG;
+			}
+			continue;
 		}
 		k = find_key(key);
 		if (k == NULL) {
-			set_err(err, errlen, "%s:%u: unknown key '%s' (docs/calib-example.txt lists them)",
+			calib_text_errf(err, errlen, "%s:%u: unknown key '%s' (docs/calib-example.txt lists them)",
 				name, lineno, key);
 			return SQ_EBADMSG;
 		}
 		idx = (size_t)(k - keys);
 		if (seen_line[idx] != 0U) {
-			set_err(err, errlen, "%s:%u: duplicate key '%s' (first set on line %u)",
+			calib_text_errf(err, errlen, "%s:%u: duplicate key '%s' (first set on line %u)",
 				name, lineno, key, seen_line[idx]);
 			return SQ_EBADMSG;
 		}
 		seen_line[idx] = lineno;
+		if ((legacy_line == 0U) && legacy_input_key(key)) {
+			legacy_line = lineno;
+			legacy_key = k->key;
+		}
 		if (*value == '\0') {
-			set_err(err, errlen, "%s:%u: %s has no value", name, lineno, key);
+			calib_text_errf(err, errlen, "%s:%u: %s has no value", name, lineno, key);
 			return SQ_EBADMSG;
 		}
 		if (strpbrk(value, " \t") != NULL) {
-			set_err(err, errlen, "%s:%u: %s: one value expected, got '%s'",
+			calib_text_errf(err, errlen, "%s:%u: %s: one value expected, got '%s'",
 				name, lineno, key, value);
 			return SQ_EBADMSG;
 		}
 		if (convert_value(k, value, &raw, msg, sizeof(msg)) != 0) {
-			set_err(err, errlen, "%s:%u: %s", name, lineno, msg);
+			calib_text_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
 			return SQ_EBADMSG;
 		}
 		field_set(&cal, k, raw);
 	}
 	if (ferror(f)) {
-		set_err(err, errlen, "%s: read error", name);
+		calib_text_errf(err, errlen, "%s: read error", name);
 		return SQ_EIO;
+	}
+	if (calib_sections_finish(&sections, name, legacy_line, legacy_key, &cal, names, err,
+				  errlen) != 0) {
+		return SQ_EBADMSG;
 	}
 	if (calib_validate(&cal) != SQ_OK) {
 		if ((int64_t)cal.mu_inf_q30 + cal.delta_mu_q30 < 0) {
-			set_err(err, errlen, "%s: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
+			calib_text_errf(err, errlen, "%s: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
 				name);
 		} else {
-			set_err(err, errlen, "%s: the six CAN identifiers (disc_speed_id, pad_force_id, status_id, detail_id, diag_id, detail2_id) must all differ",
+			calib_text_errf(err, errlen, "%s: the six CAN identifiers (disc_speed_id, pad_force_id, status_id, detail_id, diag_id, detail2_id) must all differ",
 				name);
 		}
 		return SQ_EBADMSG;
@@ -554,19 +636,25 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 
 int calib_text_load(const char *path, calib_t *out, char *err, size_t errlen)
 {
+	return calib_text_load_map(path, out, NULL, err, errlen);
+}
+
+int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, char *err,
+			size_t errlen)
+{
 	FILE *f;
 	int rc;
 
 	if ((path == NULL) || (out == NULL)) {
-		set_err(err, errlen, "calib_text_load: NULL argument");
+		calib_text_errf(err, errlen, "calib_text_load: NULL argument");
 		return SQ_EINVAL;
 	}
 	f = fopen(path, "r");
 	if (f == NULL) {
-		set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+		calib_text_errf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
 		return SQ_ENOENT;
 	}
-	rc = calib_text_parse(f, path, out, err, errlen);
+	rc = calib_text_parse_map(f, path, out, names, err, errlen);
 	fclose(f);
 	return rc;
 }
@@ -593,8 +681,14 @@ int calib_text_write(FILE *f, const calib_t *cal)
 		format_value(k, field_get(&def, k), dval, sizeof(dval));
 		range_text(k, range, sizeof(range));
 		snprintf(line, sizeof(line), "%s = %s", k->key, val);
+		if ((cal->n_corners != 0U) && legacy_input_key(k->key)) {
+			continue; /* the [input] sections configure the inputs */
+		}
 		fprintf(f, "%-34s # %s; default %s; range %s\n", line, k->what, dval,
 			range);
+	}
+	if (calib_sections_write(f, cal, NULL) != SQ_OK) {
+		return SQ_EIO;
 	}
 	fflush(f);
 	return ferror(f) ? SQ_EIO : SQ_OK;

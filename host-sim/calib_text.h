@@ -26,10 +26,13 @@
 #ifndef CALIB_TEXT_H
 #define CALIB_TEXT_H
 
+#include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "calib.h"
+#include "calib_sections.h"
 
 /*
  * Parse a calibration text from f; name is used in messages. *out is
@@ -42,6 +45,31 @@ int calib_text_parse(FILE *f, const char *name, calib_t *out, char *err,
 
 /* Open path and parse it; SQ_ENOENT (with err) when it cannot be opened. */
 int calib_text_load(const char *path, calib_t *out, char *err, size_t errlen);
+
+/*
+ * The same, also giving the names of the `[input NAME]` sections (by index
+ * in out->inputs; empty for the legacy form). docs/calib-input-map.md
+ * describes the sections.
+ */
+int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t *names,
+			 char *err, size_t errlen);
+int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, char *err,
+			size_t errlen);
+
+/* One flat key (brake, geometry, identifiers) converted into cal with the
+ * flat key's rules (for the corner sections). 0, or -1 with msg. */
+int calib_text_flat_key(const char *key, const char *value, calib_t *cal, char *msg,
+			size_t msglen);
+
+/* One line of error text into err (nothing when errlen is 0). */
+void calib_text_errf(char *err, size_t errlen, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+
+/* An integer: decimal with an optional sign, or 0x hex. */
+bool calib_text_parse_int(const char *text, int64_t *out);
+
+/* A flat key's value in cal, formatted as calib_text_write() does. */
+void calib_text_flat_format(const char *key, const calib_t *cal, char *buf, size_t len);
 
 /*
  * Write a complete file for cal: every key, in the shortest form that parses

@@ -50,6 +50,7 @@
 
 #include "candump_log.h"
 #include "crc8_p01.h"
+#include "decode_inputs.h"
 #include "hal.h"
 #include "hal_linux.h"
 #include "sim_commands.h"
@@ -62,6 +63,8 @@ typedef struct {
 
 typedef struct {
 	bool csv;
+	decode_inputs_t *inputs;   /* --calib: the input map's inputs          */
+	bool inputs_csv;           /* --inputs-csv: only those, as CSV         */
 	e2e_track_t e2e[MSG_COUNT];
 	uint8_t decimals[MSG_SIG_COUNT];
 	char *out;      /* line being built */
@@ -368,6 +371,23 @@ static void decode_frame(decoder_t *d, const candump_frame_t *f)
 	put(d, "\n");
 }
 
+static int flush_line(decoder_t *d);
+
+/* One frame: the DBC view (unless --inputs-csv), then the input map's. */
+static int decode_one(decoder_t *d, const candump_frame_t *f)
+{
+	int rc = 0;
+
+	if (!d->inputs_csv) {
+		decode_frame(d, f);
+		rc = flush_line(d);
+	}
+	if (d->inputs != NULL) {
+		decode_inputs_frame(d->inputs, f, d->inputs_csv, stdout);
+	}
+	return rc;
+}
+
 static int flush_line(decoder_t *d)
 {
 	int rc = 0;
@@ -385,8 +405,8 @@ static int flush_line(decoder_t *d)
 static void decode_usage(FILE *f)
 {
 	fprintf(f,
-		"usage: squeal-sim decode [LOG|-] [--bus NAME] [--csv]\n"
-		"       squeal-sim decode --iface IF [--csv]\n\n"
+		"usage: squeal-sim decode [LOG|-] [--bus NAME] [--csv] [--calib FILE [--inputs-csv]]\n"
+		"       squeal-sim decode --iface IF [--csv] [--calib FILE [--inputs-csv]]\n\n"
 		"Prints every frame of the monitor's messages and inputs (squeal.dbc) as\n"
 		"physical values with names and state names, checking E2E (CRC with the\n"
 		"DBC's data ID, alive counter sequence per message); other frames raw.\n"
@@ -397,7 +417,13 @@ static void decode_usage(FILE *f)
 		"              NA if not available),raw\n"
 		"  --iface IF  read from a CAN interface (vcan0, can0, ...)\n"
 		"  --bus NAME  of a log, only the frames of interface NAME (one bus of a\n"
-		"              multi-bus log; default: every interface)\n\n"
+		"              multi-bus log; default: every interface)\n"
+		"  --calib FILE  calibration text with an input map (docs/calib-input-map.md):\n"
+		"              after each frame, every input it carries as the monitor sees\n"
+		"              it: raw, physical, valid/reason, and per corner v0 [m/s] or\n"
+		"              the clamp force [N]\n"
+		"  --inputs-csv  with --calib: only the inputs, one CSV row each:\n"
+		"              t_s,iface,id,input,raw,physical,unit,valid,reason\n\n"
 		"Malformed log lines are reported on stderr as LOG:LINE: message.\n"
 		"Exit status: 0 done, 1 input error, 2 bad usage.\n");
 }
@@ -434,8 +460,7 @@ static int decode_iface(decoder_t *d, const char *iface)
 			} else if ((hf.flags & HAL_CAN_FLAG_RTR) != 0U) {
 				f.kind = CANDUMP_KIND_RTR;
 			}
-			decode_frame(d, &f);
-			if (flush_line(d) != 0) {
+			if (decode_one(d, &f) != 0) {
 				hal_linux_close();
 				return 1;
 			}
@@ -481,8 +506,7 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 			if ((bus_name != NULL) && (strcmp(f.iface, bus_name) != 0)) {
 				break; /* another bus of the log */
 			}
-			decode_frame(d, &f);
-			if (flush_line(d) != 0) {
+			if (decode_one(d, &f) != 0) {
 				status = 1;
 			}
 			break;
@@ -509,10 +533,12 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 
 int cmd_decode(int argc, char **argv)
 {
-	enum { OPT_CSV = 256, OPT_IFACE, OPT_BUS, OPT_HELP };
+	enum { OPT_CSV = 256, OPT_IFACE, OPT_BUS, OPT_HELP, OPT_CALIB, OPT_INPUTS_CSV };
 	static const struct option options[] = {
 		{ "csv", no_argument, NULL, OPT_CSV },
 		{ "bus", required_argument, NULL, OPT_BUS },
+		{ "calib", required_argument, NULL, OPT_CALIB },
+		{ "inputs-csv", no_argument, NULL, OPT_INPUTS_CSV },
 		{ "iface", required_argument, NULL, OPT_IFACE },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ NULL, 0, NULL, 0 },
@@ -520,6 +546,8 @@ int cmd_decode(int argc, char **argv)
 	static char linebuf[4096];
 	static char outbuf[1U << 16];
 	static decoder_t d;
+	static decode_inputs_t inputs;
+	const char *calib_path = NULL;
 	const char *iface = NULL;
 	const char *bus_name = NULL;
 	const char *path = NULL;
@@ -540,6 +568,12 @@ int cmd_decode(int argc, char **argv)
 			break;
 		case OPT_BUS:
 			bus_name = optarg;
+			break;
+		case OPT_CALIB:
+			calib_path = optarg;
+			break;
+		case OPT_INPUTS_CSV:
+			d.inputs_csv = true;
 			break;
 		case OPT_HELP:
 		case 'h':
@@ -562,6 +596,16 @@ int cmd_decode(int argc, char **argv)
 		decode_usage(stderr);
 		return 2;
 	}
+	if (d.inputs_csv && (calib_path == NULL)) {
+		fprintf(stderr, "squeal-sim decode: --inputs-csv needs --calib FILE\n");
+		return 2;
+	}
+	if (calib_path != NULL) {
+		if (decode_inputs_load(&inputs, calib_path) != 0) {
+			return 1;
+		}
+		d.inputs = &inputs;
+	}
 	for (i = 0U; i < MSG_SIG_COUNT; i++) {
 		d.decimals[i] = sig_decimals(&msg_sig_table[i]);
 	}
@@ -571,7 +615,9 @@ int cmd_decode(int argc, char **argv)
 	} else {
 		(void)setvbuf(stdout, outbuf, _IOFBF, sizeof(outbuf));
 	}
-	if (d.csv) {
+	if (d.inputs_csv) {
+		decode_inputs_csv_header(stdout);
+	} else if (d.csv) {
 		csv_header(&d);
 		if (flush_line(&d) != 0) {
 			return 1;

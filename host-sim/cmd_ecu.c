@@ -308,7 +308,7 @@ static void ecu_summary(const uint64_t state_us[5], uint64_t run_us)
 	{
 		hal_can_status_t in;
 
-		if (hal_can_get_status(m->cal.input_bus, &in) == SQ_OK) {
+		if (hal_can_get_status(m->cal->input_bus, &in) == SQ_OK) {
 			fprintf(stderr, "in_listen_only=%d in_tx_refused_listen_only=%" PRIu32 "\n",
 				(in.mode == HAL_CAN_MODE_LISTEN_ONLY) ? 1 : 0, in.tx_refused_listen_only);
 		}

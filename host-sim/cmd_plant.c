@@ -23,6 +23,7 @@
 #include "hal.h"
 #include "hal_linux.h"
 #include "plant_scenario.h"
+#include "plant_vehicle.h"
 #include "sim_commands.h"
 #include "sq_status.h"
 #include "squeal_msgs.h"
@@ -48,10 +49,12 @@ typedef struct {
 	bool quiet;
 } plant_args_t;
 
-/* One sender (DiscSpeed or PadForce). */
+/* One sender (DiscSpeed or PadForce, or one frame of an input map). */
 typedef struct {
 	const char *name;
-	uint16_t id;
+	uint32_t id;
+	int vframe;             /* index into plant_t.vframes, -1: legacy    */
+	uint64_t period_ns;
 	e2e_p01_config_t e2e;
 	e2e_p01_tx_t tx;
 	uint64_t next_ns;       /* nominal time of the next frame            */
@@ -77,7 +80,10 @@ typedef struct {
 	uint64_t rng;
 	uint64_t period_ns;
 	uint64_t end_ns;
-	sender_t s[2];
+	uint32_t n_senders;
+	sender_t s[CALIB_MAX_INPUTS];
+	plant_vframe_t vframes[CALIB_MAX_INPUTS];
+	char vnames[CALIB_MAX_INPUTS][16];
 } plant_t;
 
 static plant_t plant; /* large (scenario table): static, not on the stack */
@@ -122,7 +128,10 @@ static void plant_usage(FILE *f)
 		"  --rate-hz N         frames per second of EACH message (default 100:\n"
 		"                      the DBC period); higher for flood tests\n"
 		"  --calib FILE        take identifiers and radii from a calibration\n"
-		"                      text file (as the ECU's --calib)\n"
+		"                      text file (as the ECU's --calib); with an input\n"
+		"                      map ([input]/[corner] sections) send that vehicle's\n"
+		"                      frames instead, in its layout and protection, each\n"
+		"                      at its period (--rate-hz 100 = that period)\n"
 		"  --drop P            lose each frame with probability P (the sender's\n"
 		"                      counter still advances, as for a frame lost on\n"
 		"                      the bus)\n"
@@ -302,7 +311,12 @@ static void make_frame(plant_t *p, unsigned int i)
 	plant_scenario_eval(&p->sc, t_s, &speed_mps, &force_n);
 	memset(&f, 0, sizeof(f));
 	f.id = s->id;
-	if (i == 0U) {
+	counter_before = s->tx.counter;
+	rc = SQ_OK;
+	if (s->vframe >= 0) {
+		plant_vehicle_pack(&p->cal, &p->vframes[s->vframe], &s->tx, speed_mps, force_n, &f,
+				   &s->saturated);
+	} else if (i == 0U) {
 		msg_disc_speed_t m = { 0U, 0U, 0U };
 		const double r_w_m = (double)p->cal.wheel_radius_um * 1e-6;
 
@@ -315,8 +329,8 @@ static void make_frame(plant_t *p, unsigned int i)
 		m.pad_force_n = to_raw(force_n, 0.5, MSG_PAD_FORCE_N_MAX, &s->saturated);
 		rc = msg_pad_force_pack(&m, f.data, &f.dlc);
 	}
-	counter_before = s->tx.counter;
-	if ((rc != SQ_OK) || (e2e_p01_protect(&s->e2e, &s->tx, f.data, f.dlc) != SQ_OK)) {
+	if ((rc != SQ_OK) ||
+	    ((s->vframe < 0) && (e2e_p01_protect(&s->e2e, &s->tx, f.data, f.dlc) != SQ_OK))) {
 		/* cannot happen with saturated raw values; never send garbage */
 		fprintf(stderr, "squeal-sim plant: internal error packing %s\n", s->name);
 		exit(1);
@@ -345,7 +359,7 @@ static void make_frame(plant_t *p, unsigned int i)
 		s->dropped++;
 		s->has_pending = false;
 	}
-	s->next_ns = s->offset_ns + (s->made * p->period_ns);
+	s->next_ns = s->offset_ns + (s->made * s->period_ns);
 }
 
 /* Fill both senders' pending frames (while there is scenario time left). */
@@ -353,7 +367,7 @@ static void refill(plant_t *p)
 {
 	unsigned int i;
 
-	for (i = 0U; i < 2U; i++) {
+	for (i = 0U; i < p->n_senders; i++) {
 		/* a dropped frame leaves nothing pending: go on to the next */
 		while (!p->s[i].has_pending && (p->s[i].next_ns < p->end_ns)) {
 			make_frame(p, i);
@@ -361,16 +375,20 @@ static void refill(plant_t *p)
 	}
 }
 
-/* The next frame to emit, or -1 when both senders are done. */
+/* The next frame to emit (the earliest; the first sender on a tie), or -1
+ * when every sender is done. */
 static int next_sender(const plant_t *p)
 {
-	if (p->s[0].has_pending && p->s[1].has_pending) {
-		return (p->s[1].pending_ns < p->s[0].pending_ns) ? 1 : 0;
+	int best = -1;
+	uint32_t i;
+
+	for (i = 0U; i < p->n_senders; i++) {
+		if (p->s[i].has_pending &&
+		    ((best < 0) || (p->s[i].pending_ns < p->s[best].pending_ns))) {
+			best = (int)i;
+		}
 	}
-	if (p->s[0].has_pending) {
-		return 0;
-	}
-	return p->s[1].has_pending ? 1 : -1;
+	return best;
 }
 
 static void write_log_line(FILE *out, const char *iface, uint64_t t_ns,
@@ -384,7 +402,9 @@ static void write_log_line(FILE *out, const char *iface, uint64_t t_ns,
 		snprintf(&data[2U * k], 3, "%02X", f->data[k]);
 	}
 	data[2U * f->dlc] = '\0';
-	fprintf(out, "(%010" PRIu64 ".%06" PRIu64 ") %s %03" PRIX32 "#%s\n",
+	fprintf(out, ((f->flags & HAL_CAN_FLAG_EXT) != 0U) ?
+		"(%010" PRIu64 ".%06" PRIu64 ") %s %08" PRIX32 "#%s\n" :
+		"(%010" PRIu64 ".%06" PRIu64 ") %s %03" PRIX32 "#%s\n",
 		us / 1000000U, us % 1000000U, iface, f->id, data);
 }
 
@@ -450,6 +470,29 @@ static int plant_setup(plant_t *p, int argc, char **argv)
 		p->rng = 1U;
 	}
 	memset(p->s, 0, sizeof(p->s));
+	p->n_senders = plant_vehicle_frames(&p->cal, p->vframes);
+	if (p->n_senders > 0U) {
+		/* a vehicle layout: one sender per frame, at its inputs' period
+		 * (--rate-hz scales it: 100 Hz is each frame's own period) */
+		for (i = 0U; i < p->n_senders; i++) {
+			sender_t *s = &p->s[i];
+
+			snprintf(p->vnames[i], sizeof(p->vnames[i]), "frame%u", i);
+			s->name = p->vnames[i];
+			s->id = p->vframes[i].id;
+			s->vframe = (int)i;
+			s->period_ns = (uint64_t)llround((double)p->vframes[i].period_ms * 1e6 *
+							 100.0 / p->a.rate_hz);
+			if (s->period_ns < 2U) {
+				s->period_ns = 2U;
+			}
+			s->offset_ns = (s->period_ns * i) / p->n_senders;
+			e2e_p01_tx_init(&s->tx);
+			s->next_ns = s->offset_ns;
+		}
+		return -1;
+	}
+	p->n_senders = 2U;
 	p->s[0].name = "DiscSpeed";
 	p->s[0].id = p->cal.disc_speed_id;
 	p->s[0].e2e.data_id = MSG_DISC_SPEED_DATA_ID;
@@ -460,6 +503,8 @@ static int plant_setup(plant_t *p, int argc, char **argv)
 	p->s[1].e2e.data_len = MSG_PAD_FORCE_DLC;
 	p->s[1].offset_ns = p->period_ns / 2U; /* two senders, half a period apart */
 	for (i = 0U; i < 2U; i++) {
+		p->s[i].vframe = -1;
+		p->s[i].period_ns = p->period_ns;
 		p->s[i].e2e.max_delta_counter = p->cal.e2e_max_delta_counter;
 		e2e_p01_tx_init(&p->s[i].tx);
 		p->s[i].next_ns = p->s[i].offset_ns;
@@ -480,18 +525,22 @@ static void plant_summary(const plant_t *p, double wall_s, bool stopped)
 		fprintf(stderr, ", %.3f s wall time", wall_s);
 	}
 	fprintf(stderr, "\n");
-	for (i = 0U; i < 2U; i++) {
+	for (i = 0U; i < p->n_senders; i++) {
 		const sender_t *s = &p->s[i];
 
-		fprintf(stderr, "  %-9s id 0x%03X: made %" PRIu64 ", sent %" PRIu64
+		fprintf(stderr, "  %-9s id 0x%03" PRIX32 ": made %" PRIu64 ", sent %" PRIu64
 			", dropped %" PRIu64 ", corrupted %" PRIu64 ", frozen %" PRIu64
 			", send errors %" PRIu64 ", saturated %" PRIu64 "\n",
 			s->name, s->id, s->made, s->sent, s->dropped, s->corrupted,
 			s->frozen, s->send_errors, s->saturated);
 	}
 	if (wall_s > 0.0) {
-		fprintf(stderr, "  rate: %.0f frames/s in all\n",
-			(double)(p->s[0].sent + p->s[1].sent) / wall_s);
+		uint64_t sent = 0U;
+
+		for (i = 0U; i < p->n_senders; i++) {
+			sent += p->s[i].sent;
+		}
+		fprintf(stderr, "  rate: %.0f frames/s in all\n", (double)sent / wall_s);
 	}
 }
 

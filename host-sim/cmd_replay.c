@@ -15,7 +15,11 @@
  * the wall clock, so the same log gives the same bytes.
  *
  * A timestamp earlier than the current virtual time is reported and the
- * frame is given at the current time (time never goes back). A gap longer
+ * frame is given at the current time (time never goes back). A jump back of
+ * more than SEGMENT_BACK_US (1 s: a logger that restarted) starts a new
+ * segment instead: the log's time from there on is re-based onto the
+ * current virtual time, so the frames that follow keep their spacing;
+ * segments are counted and reported. A gap longer
  * than --max-gap seconds (default 3600) is reported and skipped: the clock
  * jumps, without the ticks in between (a mix of relative and absolute
  * timestamps would otherwise tick for decades).
@@ -53,6 +57,7 @@
 #include "squeal_msgs.h"
 
 #define TICK_US 1000U
+#define SEGMENT_BACK_US 1000000U /* a jump back beyond this starts a segment */
 #define N_STATES 5U /* stable, bistable, unstable, not sliding, fault */
 #define N_LEVELS 4U
 
@@ -99,6 +104,8 @@ typedef struct {
 	uint64_t now_us;
 	uint64_t next_tick_us;
 	uint64_t backwards;
+	uint64_t segments;         /* new segments after a jump back > 1 s  */
+	int64_t rebase_us;         /* added to the log's time (segments)    */
 	uint64_t gaps;
 	uint64_t state_us[N_STATES];
 	uint8_t state;
@@ -359,9 +366,17 @@ static void start(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
 	(void)squeal_app_init();
 	m = squeal_app_monitor();
 	if (r->summary != NULL) {
-		const rs_corner_ids_t ids = { m->cal.status_id, m->cal.detail_id, m->cal.detail2_id };
+		uint32_t k;
 
-		replay_summary_set_ids(r->summary, &ids);
+		/* each configured corner by its position (FL, FR, RL, RR) with
+		 * its own output identifiers from the calibration */
+		for (k = 0U; k < squeal_app_corner_count(); k++) {
+			const monitor_t *c = squeal_app_corner(k);
+			const rs_corner_ids_t ids = { c->corner.status_id, c->corner.detail_id,
+						      c->corner.detail2_id };
+
+			replay_summary_set_corner(r->summary, c->corner.pos, &ids);
+		}
 	}
 	r->state = m->state;
 	r->warning = m->warning;
@@ -382,7 +397,7 @@ static uint8_t bus_of_frame(replay_t *r, const candump_frame_t *f, const replay_
 
 static void give_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
 {
-	const calib_t *cal = &squeal_app_monitor()->cal;
+	const calib_t *cal = squeal_app_monitor()->cal;
 	const uint8_t bus = bus_of_frame(r, f, a);
 	hal_can_frame_t hf;
 	int rc;
@@ -439,12 +454,23 @@ static void give_frame(replay_t *r, const candump_frame_t *f, const replay_args_
 static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a,
 		     uint64_t line_no)
 {
-	uint64_t t_us = f->t_ns / 1000U;
+	uint64_t t_us;
 
 	if (!r->started) {
 		start(r, f, a);
 	}
-	if (t_us < r->now_us) {
+	t_us = (uint64_t)((int64_t)(f->t_ns / 1000U) + r->rebase_us);
+	if ((t_us < r->now_us) && (r->now_us - t_us > SEGMENT_BACK_US)) {
+		const uint64_t back = r->now_us - t_us;
+
+		r->segments++;
+		r->rebase_us += (int64_t)back;
+		fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s: new segment %llu, log time re-based\n",
+			a->log_name, (unsigned long long)line_no,
+			(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U),
+			(unsigned long long)(r->segments + 1U));
+		t_us = r->now_us;
+	} else if (t_us < r->now_us) {
 		const uint64_t back = r->now_us - t_us;
 
 		r->backwards++;
@@ -521,6 +547,15 @@ static void summary(const replay_t *r, const replay_args_t *a)
 	fprintf(o, "  frames_read           %llu\n", (unsigned long long)r->frames);
 	fprintf(o, "  frames_used           %llu (DiscSpeed %u, PadForce %u)\n",
 		(unsigned long long)sp->used + fo->used, sp->used, fo->used);
+	for (i = 0U; i < squeal_app_corner_count(); i++) {
+		const monitor_t *c = squeal_app_corner(i);
+		static const char *const pos[4] = { "FL", "FR", "RL", "RR" };
+
+		fprintf(o, "  corner %s              inputs used speed %u force %u, implausible %u/%u, final %s\n",
+			pos[c->corner.pos & 3U], c->speed.count.used, c->force.count.used,
+			c->speed.count.implausible, c->force.count.implausible,
+			state_names[state_index(c->state)]);
+	}
 	fprintf(o, "  rejected:\n");
 	fprintf(o, "    malformed_lines     %llu\n", (unsigned long long)r->malformed);
 	fprintf(o, "    filtered_ids        %llu (other ids %llu, remote %llu, extended %llu)\n",
@@ -557,6 +592,8 @@ static void summary(const replay_t *r, const replay_args_t *a)
 		fo->stale_events);
 	fprintf(o, "  candump_dropped       %llu\n", (unsigned long long)r->dropped);
 	fprintf(o, "  time_backwards        %llu\n", (unsigned long long)r->backwards);
+	fprintf(o, "  segments              %llu (new after a jump back of more than 1 s: %llu)\n",
+		(unsigned long long)(r->segments + 1U), (unsigned long long)r->segments);
 	fprintf(o, "  gaps_skipped          %llu\n", (unsigned long long)r->gaps);
 	fprintf(o, "  state_time_s         ");
 	for (i = 0U; i < N_STATES; i++) {

@@ -79,7 +79,7 @@ ifeq ($(words $(wildcard host-sim/candump_log.c tests/fuzz/fuzz_candump.c)),2)
 $(eval $(call fuzz_target,fuzz_candump,fuzz,tests/fuzz/fuzz_candump.c,build/fuzz/app/host-sim/candump_log.o))
 endif
 ifeq ($(words $(wildcard host-sim/calib_text.c tests/fuzz/fuzz_calib_text.c)),2)
-$(eval $(call fuzz_target,fuzz_calib_text,fuzz,tests/fuzz/fuzz_calib_text.c,build/fuzz/app/host-sim/calib_text.o))
+$(eval $(call fuzz_target,fuzz_calib_text,fuzz,tests/fuzz/fuzz_calib_text.c,build/fuzz/app/host-sim/calib_text.o build/fuzz/app/host-sim/calib_sections.o))
 endif
 
 export FUZZ_TARGETS
@@ -97,7 +97,7 @@ fuzz: $(FUZZ_TARGETS)
 # encoders (valid frames and blocks are the interesting starting points).
 FUZZ_SEEDGEN := build/host/tests/fuzz/gen_seeds
 $(FUZZ_SEEDGEN): build/host/app/tests/fuzz/gen_seeds.o build/host/app/host-sim/candump_log.o \
-		build/host/app/host-sim/calib_text.o build/host/libfirmware.a
+		build/host/app/host-sim/calib_text.o build/host/app/host-sim/calib_sections.o build/host/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_host) -o $@ $^ -lm
 fuzz-seeds: $(FUZZ_SEEDGEN)

@@ -11,7 +11,7 @@
 
 CALIB_TEXT_TEST := build/test/test_calib_text
 
-$(CALIB_TEXT_TEST): build/test/app/tests/unit/test_calib_text.o build/test/app/host-sim/calib_text.o build/test/libfirmware.a
+$(CALIB_TEXT_TEST): build/test/app/tests/unit/test_calib_text.o build/test/app/host-sim/calib_text.o build/test/app/host-sim/calib_sections.o build/test/libfirmware.a
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
 
 TEST_PROGS += $(CALIB_TEXT_TEST)

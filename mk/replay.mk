@@ -12,7 +12,7 @@
 #   host-sim/replay_summary.c, json_writer.c   replay --summary-json (issue 13)
 #   build/test/test_json_writer     cmocka: the JSON writer's output and misuse
 #   tests/replay/test_summary_json.py  the JSON vs Python's json + canmatrix
-REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_decode.c
+REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_decode.c host-sim/decode_inputs.c
 SIM_SRCS += $(REPLAY_SIM_SRCS)
 
 # host.mk's rule expands its prerequisites when it is read (before this
@@ -23,7 +23,7 @@ $(foreach v,$(VARIANTS),$(eval build/$(v)/squeal-sim: $(patsubst %.c,build/$(v)/
 # build/<v>/squeal-replay (libhal_vbus.a instead of libhal_linux.a), which
 # `squeal-sim replay` execs from its own directory, so it is built with it.
 REPLAY_SRCS := host-sim/squeal_replay.c host-sim/cmd_replay.c host-sim/candump_log.c \
-	host-sim/calib_text.c host-sim/replay_summary.c host-sim/json_writer.c
+	host-sim/calib_text.c host-sim/calib_sections.c host-sim/replay_summary.c host-sim/json_writer.c
 define replay_program
 build/$(1)/squeal-replay: $$(patsubst %.c,build/$(1)/app/%.o,$$(REPLAY_SRCS)) build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lm

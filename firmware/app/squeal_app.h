@@ -29,6 +29,11 @@ int squeal_main(volatile const bool *stop);
  * inspect it. */
 const monitor_t *squeal_app_monitor(void);
 
+/* The corners' monitors (1..4; corner 0 is squeal_app_monitor()). NULL
+ * beyond the count. */
+uint32_t squeal_app_corner_count(void);
+const monitor_t *squeal_app_corner(uint32_t k);
+
 /* What squeal_app_init() returned. */
 int squeal_app_init_status(void);
 

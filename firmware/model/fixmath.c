@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 #include "fixmath.h"
 
-#if defined(SQUEAL_NUMERIC_FIXED)
+/* Integer only, so both numeric builds link it: the fixed model uses all of
+ * it, and the input conditioning (firmware/monitor/input_conv.c) takes mu(v0)
+ * from fx_exp in either build so that both convert torque identically. */
 
 #define SQRT2_Q30 ((int64_t)1518500250)  /* sqrt(2) * 2^30 */
 #define ONE_Q30 ((int64_t)1 << 30)
@@ -186,4 +188,3 @@ int32_t fx_q32_to_i32(int64_t v_q32, int32_t q_out, bool *sat)
 	return (int32_t)v;
 }
 
-#endif /* SQUEAL_NUMERIC_FIXED */

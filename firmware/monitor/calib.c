@@ -4,6 +4,7 @@
 #include <stddef.h>
 
 #include "hal.h"
+#include "calib_map.h"
 #include "sq_status.h"
 
 #define HEADER_LEN 8U
@@ -18,12 +19,23 @@ typedef struct {
 	uint8_t is_signed;
 	int64_t min;
 	int64_t max;
+	uint8_t count;     /* array rows: this many elements ...            */
+	uint16_t stride;   /* ... this far apart (inputs[], corners[])      */
 } calib_field_t;
 
-#define F_U8(f, lo, hi)  { (uint16_t)offsetof(calib_t, f), 1U, 0U, (lo), (hi) }
-#define F_U16(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 2U, 0U, (lo), (hi) }
-#define F_U32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 0U, (lo), (hi) }
-#define F_I32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 1U, (lo), (hi) }
+#define F_U8(f, lo, hi)  { (uint16_t)offsetof(calib_t, f), 1U, 0U, (lo), (hi), 1U, 0U }
+#define F_U16(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 2U, 0U, (lo), (hi), 1U, 0U }
+#define F_U32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 0U, (lo), (hi), 1U, 0U }
+#define F_I32(f, lo, hi) { (uint16_t)offsetof(calib_t, f), 4U, 1U, (lo), (hi), 1U, 0U }
+/* One row per field of every input / corner slot (count and stride: the
+ * array; off: the field in element 0). Storage ranges admit the zeros of an
+ * unused slot; calib_map.c checks what a used one means. */
+#define FI(off, size, sgn, lo, hi) \
+	{ (uint16_t)(off), (size), (sgn), (lo), (hi), (uint8_t)CALIB_MAX_INPUTS, \
+	  (uint16_t)sizeof(calib_input_t) }
+#define FC(off, size, sgn, lo, hi) \
+	{ (uint16_t)(off), (size), (sgn), (lo), (hi), (uint8_t)CALIB_MAX_CORNERS, \
+	  (uint16_t)sizeof(calib_corner_t) }
 
 /* Model fields get their ranges from squeal_model_params_check() too; the
  * rows repeat the documented domain so a block is range-checked in one pass. */
@@ -66,60 +78,151 @@ static const calib_field_t fields[] = {
 	F_U8(input_bus, 0, 1),
 	F_U8(output_bus, 0, 1),
 	F_U8(input_listen_only, 0, 1),
+	F_U8(n_inputs, 0, (int64_t)CALIB_MAX_INPUTS),
+	F_U8(n_corners, 0, (int64_t)CALIB_MAX_CORNERS),
+	FI(offsetof(calib_t, inputs[0].id), 4U, 0U, 0, 0x1FFFFFFF),
+	FI(offsetof(calib_t, inputs[0].flags), 1U, 0U, 0, (int64_t)CALIB_IN_FLAGS_ALL),
+	FI(offsetof(calib_t, inputs[0].min_dlc), 1U, 0U, 0, 8),
+	FI(offsetof(calib_t, inputs[0].sig.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].sig.length), 1U, 0U, 0, 32),
+	FI(offsetof(calib_t, inputs[0].sig.byte_order), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].sig.is_signed), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].factor.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].factor.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].offset.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].offset.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].unit), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].mux.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].mux.length), 1U, 0U, 0, 32),
+	FI(offsetof(calib_t, inputs[0].mux.byte_order), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].mux.is_signed), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].mux_value), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].na_raw), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].na_raw2), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].qualifier_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].qualifier_invalid), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].protection), 1U, 0U, 0, (int64_t)CALIB_PROT_COUNT - 1),
+	FI(offsetof(calib_t, inputs[0].data_id), 2U, 0U, 0, 0xFFFF),
+	FI(offsetof(calib_t, inputs[0].data_id_list[0]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[1]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[2]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[3]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[4]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[5]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[6]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[7]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[8]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[9]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[10]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[11]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[12]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[13]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[14]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].data_id_list[15]), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].counter.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].counter.length), 1U, 0U, 0, 32),
+	FI(offsetof(calib_t, inputs[0].counter.byte_order), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].counter.is_signed), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].counter_modulus), 1U, 0U, 0, 16),
+	FI(offsetof(calib_t, inputs[0].max_delta_counter), 1U, 0U, 0, 15),
+	FI(offsetof(calib_t, inputs[0].period_ms), 2U, 0U, 0, 1000),
+	FI(offsetof(calib_t, inputs[0].stale_cycles), 1U, 0U, 0, 100),
+	FI(offsetof(calib_t, inputs[0].max.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].max.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].min.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].min.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].step_max.mant), 4U, 1U, INT32_MIN, INT32_MAX),
+	FI(offsetof(calib_t, inputs[0].step_max.exp), 1U, 1U, -12, 12),
+	FC(offsetof(calib_t, corners[0].pos), 1U, 0U, 0, 3),
+	FC(offsetof(calib_t, corners[0].speed_input), 1U, 0U, 0, (int64_t)CALIB_MAX_INPUTS - 1),
+	FC(offsetof(calib_t, corners[0].force_input), 1U, 0U, 0, (int64_t)CALIB_MAX_INPUTS - 1),
+	FC(offsetof(calib_t, corners[0].friction_faces), 1U, 0U, 0, 4),
+	FC(offsetof(calib_t, corners[0].piston_area_cmm2), 4U, 0U, 0, 100000000),   /* up to 1 m^2 */
+	FC(offsetof(calib_t, corners[0].efficiency_ppm), 4U, 0U, 0, 1000000),
+	FC(offsetof(calib_t, corners[0].axle_factor_ppm), 4U, 0U, 0, 4000000),
+	FC(offsetof(calib_t, corners[0].mass_q16), 4U, 1U, 0, 10000LL << 16),
+	FC(offsetof(calib_t, corners[0].omega0_q12), 4U, 1U, 0, 500000LL << 12),
+	FC(offsetof(calib_t, corners[0].damping_q30), 4U, 1U, 0, 1LL << 30),
+	FC(offsetof(calib_t, corners[0].mu_inf_q30), 4U, 1U, 0, 3LL << 29),
+	FC(offsetof(calib_t, corners[0].delta_mu_q30), 4U, 1U, -(3LL << 29), 3LL << 29),
+	FC(offsetof(calib_t, corners[0].slope_q24), 4U, 1U, 0, 20LL << 24),
+	FC(offsetof(calib_t, corners[0].criterion), 1U, 0U, 0, 1),
+	FC(offsetof(calib_t, corners[0].pad_radius_um), 4U, 0U, 0, 1000000),
+	FC(offsetof(calib_t, corners[0].wheel_radius_um), 4U, 0U, 0, 2000000),
+	FC(offsetof(calib_t, corners[0].status_id), 2U, 0U, 0, 0x7FF),
+	FC(offsetof(calib_t, corners[0].detail_id), 2U, 0U, 0, 0x7FF),
+	FC(offsetof(calib_t, corners[0].detail2_id), 2U, 0U, 0, 0x7FF),
+	FC(offsetof(calib_t, corners[0].diag_id), 2U, 0U, 0, 0x7FF),
 };
 
 #define FIELD_COUNT (sizeof(fields) / sizeof(fields[0]))
 
+/* The factory defaults (model.md section 8, the DBC's IDs and periods); no
+ * input map (n_corners 0: the legacy DiscSpeed/PadForce corner). A const
+ * object, so that a monitor running on defaults needs no copy of its own. */
+static const calib_t factory = {
+	.mass_q16 = 1 << 16,
+	.omega0_q12 = 5000 << 12,
+	.damping_q30 = 24696062,   /* 0.023 * 2^30 */
+	.mu_inf_q30 = 1 << 28,     /* 0.25 */
+	.delta_mu_q30 = 161061274, /* 0.15 * 2^30 */
+	.slope_q24 = 2 << 24,
+	.criterion = (uint8_t)SQUEAL_CRITERION_EXACT,
+	.pad_radius_um = 120000U,
+	.wheel_radius_um = 300000U,
+	.bitrate_kbps = 500U,
+	.disc_speed_id = 0x110U,
+	.pad_force_id = 0x111U,
+	.status_id = 0x300U,
+	.detail_id = 0x301U,
+	.diag_id = 0x302U,
+	.detail2_id = 0x303U,
+	.e2e_check_inputs = 1U,
+	.e2e_max_delta_counter = 2U,
+	.input_period_ms = 10U,
+	.status_period_ms = 10U,
+	.detail_period_ms = 100U,
+	.diag_period_ms = 1000U,
+	.stale_cycles = 3U,
+	.speed_max_raw = 40000U,       /* 400 rad/s: 432 km/h at r_w 0.3 m */
+	.speed_step_max_raw = 1000U,   /* 10 rad/s in one 10 ms period    */
+	.force_max_raw = 60000U,       /* 30 kN                           */
+	.force_step_max_raw = 20000U,  /* 10 kN in one period             */
+	.lowpass_alpha_q15 = 32768U,   /* filter off                      */
+	.v0_min_umps = 10000U,         /* 0.01 m/s                        */
+	.force_min_mn = 100000U,       /* 100 N                           */
+	.debounce_count = 3U,
+	.hyst_lnq_micro = 20000U,      /* 0.02 in ln Q                    */
+	.hyst_rho_ppm = 20000U,        /* 0.02 in rho                     */
+	.rho_warn_ppm = 500000U,       /* 0.5                             */
+	.watchdog_ms = 100U,
+	.input_bus = 0U,               /* one bus, in normal mode: as before */
+	.output_bus = 0U,
+	.input_listen_only = 0U,
+	.n_inputs = 0U,
+	.n_corners = 0U,
+};
+
 void calib_default(calib_t *cal)
 {
 	HAL_REQUIRE(cal != NULL);
-	/* the model's defaults in fixed-build units, whatever this build is */
-	cal->mass_q16 = 1 << 16;
-	cal->omega0_q12 = 5000 << 12;
-	cal->damping_q30 = 24696062;   /* 0.023 * 2^30 */
-	cal->mu_inf_q30 = 1 << 28;     /* 0.25 */
-	cal->delta_mu_q30 = 161061274; /* 0.15 * 2^30 */
-	cal->slope_q24 = 2 << 24;
-	cal->criterion = (uint8_t)SQUEAL_CRITERION_EXACT;
-	cal->pad_radius_um = 120000U;
-	cal->wheel_radius_um = 300000U;
-	cal->bitrate_kbps = 500U;
-	cal->disc_speed_id = 0x110U;
-	cal->pad_force_id = 0x111U;
-	cal->status_id = 0x300U;
-	cal->detail_id = 0x301U;
-	cal->diag_id = 0x302U;
-	cal->detail2_id = 0x303U;
-	cal->e2e_check_inputs = 1U;
-	cal->e2e_max_delta_counter = 2U;
-	cal->input_period_ms = 10U;
-	cal->status_period_ms = 10U;
-	cal->detail_period_ms = 100U;
-	cal->diag_period_ms = 1000U;
-	cal->stale_cycles = 3U;
-	cal->speed_max_raw = 40000U;       /* 400 rad/s: 432 km/h at r_w 0.3 m */
-	cal->speed_step_max_raw = 1000U;   /* 10 rad/s in one 10 ms period    */
-	cal->force_max_raw = 60000U;       /* 30 kN                           */
-	cal->force_step_max_raw = 20000U;  /* 10 kN in one period             */
-	cal->lowpass_alpha_q15 = 32768U;   /* filter off                      */
-	cal->v0_min_umps = 10000U;         /* 0.01 m/s                        */
-	cal->force_min_mn = 100000U;       /* 100 N                           */
-	cal->debounce_count = 3U;
-	cal->hyst_lnq_micro = 20000U;      /* 0.02 in ln Q                    */
-	cal->hyst_rho_ppm = 20000U;        /* 0.02 in rho                     */
-	cal->rho_warn_ppm = 500000U;       /* 0.5                             */
-	cal->watchdog_ms = 100U;
-	cal->input_bus = 0U;          /* one bus, in normal mode: as before */
-	cal->output_bus = 0U;
-	cal->input_listen_only = 0U;
+	*cal = factory;
 }
 
-static int64_t field_get(const calib_t *cal, const calib_field_t *f)
+const calib_t *calib_factory(void)
 {
-	const uint8_t *base = (const uint8_t *)cal + f->offset;
+	return &factory;
+}
+
+static int64_t field_get(const calib_t *cal, const calib_field_t *f, uint32_t k)
+{
+	const uint8_t *base = (const uint8_t *)cal + f->offset + (k * f->stride);
 
 	switch (f->size) {
 	case 1U:
+		if (f->is_signed != 0U) {
+			return *(const int8_t *)(const void *)base;
+		}
 		return *(const uint8_t *)base;
 	case 2U:
 		return *(const uint16_t *)(const void *)base;
@@ -131,13 +234,18 @@ static int64_t field_get(const calib_t *cal, const calib_field_t *f)
 	}
 }
 
-static void field_set(calib_t *cal, const calib_field_t *f, uint32_t raw)
+static void field_set(calib_t *cal, const calib_field_t *f, uint32_t k, uint32_t raw)
 {
-	uint8_t *base = (uint8_t *)cal + f->offset;
+	uint8_t *base = (uint8_t *)cal + f->offset + (k * f->stride);
 
 	switch (f->size) {
 	case 1U:
-		*base = (uint8_t)raw;
+		if (f->is_signed != 0U) {
+			*(int8_t *)(void *)base = (raw <= 0x7FU) ? (int8_t)raw :
+				(int8_t)(-(int32_t)((~raw) & 0xFFU) - 1);
+		} else {
+			*base = (uint8_t)raw;
+		}
 		break;
 	case 2U:
 		*(uint16_t *)(void *)base = (uint16_t)raw;
@@ -196,10 +304,14 @@ static calib_error_t validate_why(const calib_t *cal)
 
 	HAL_REQUIRE(cal != NULL);
 	for (i = 0U; i < FIELD_COUNT; i++) {
-		const int64_t v = field_get(cal, &fields[i]);
+		uint32_t k;
 
-		if ((v < fields[i].min) || (v > fields[i].max)) {
-			return CALIB_ERR_RANGE;
+		for (k = 0U; k < fields[i].count; k++) {
+			const int64_t v = field_get(cal, &fields[i], k);
+
+			if ((v < fields[i].min) || (v > fields[i].max)) {
+				return CALIB_ERR_RANGE;
+			}
 		}
 	}
 	if (((int64_t)cal->mu_inf_q30 + cal->delta_mu_q30 < 0) || !ids_distinct(cal)) {
@@ -207,6 +319,9 @@ static calib_error_t validate_why(const calib_t *cal)
 	}
 	if (!bitrate_exact(cal->bitrate_kbps)) {
 		return CALIB_ERR_BITRATE;
+	}
+	if (calib_map_validate(cal) != SQ_OK) {
+		return CALIB_ERR_RANGE;
 	}
 	return CALIB_OK;
 }
@@ -265,10 +380,14 @@ int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len)
 	put_le(&buf[4], CALIB_VERSION, 2U);
 	put_le(&buf[6], CALIB_BLOCK_LEN, 2U);
 	for (i = 0U; i < FIELD_COUNT; i++) {
-		const int64_t v = field_get(cal, &fields[i]);
+		uint32_t k;
 
-		put_le(&buf[pos], (uint32_t)(v & 0xFFFFFFFFLL), fields[i].size);
-		pos += fields[i].size;
+		for (k = 0U; k < fields[i].count; k++) {
+			const int64_t v = field_get(cal, &fields[i], k);
+
+			put_le(&buf[pos], (uint32_t)(v & 0xFFFFFFFFLL), fields[i].size);
+			pos += fields[i].size;
+		}
 	}
 	if (pos != CALIB_BLOCK_LEN - CRC_LEN) {
 		return SQ_EINVAL; /* layout and CALIB_BLOCK_LEN disagree */
@@ -300,8 +419,12 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 		err = CALIB_ERR_CRC;
 	} else {
 		for (i = 0U; i < FIELD_COUNT; i++) {
-			field_set(&tmp, &fields[i], get_le(&buf[pos], fields[i].size));
-			pos += fields[i].size;
+			uint32_t k;
+
+			for (k = 0U; k < fields[i].count; k++) {
+				field_set(&tmp, &fields[i], k, get_le(&buf[pos], fields[i].size));
+				pos += fields[i].size;
+			}
 		}
 		err = validate_why(&tmp);
 	}
@@ -315,24 +438,32 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 	return SQ_OK;
 }
 
-void calib_model_params(const calib_t *cal, squeal_params_t *params)
+void calib_corner_params(const calib_corner_t *c, squeal_params_t *params)
 {
 #if defined(SQUEAL_NUMERIC_FIXED)
-	params->mass_kg = cal->mass_q16;
-	params->omega0_radps = cal->omega0_q12;
-	params->damping = cal->damping_q30;
-	params->mu_inf = cal->mu_inf_q30;
-	params->delta_mu = cal->delta_mu_q30;
-	params->slope_spm = cal->slope_q24;
+	params->mass_kg = c->mass_q16;
+	params->omega0_radps = c->omega0_q12;
+	params->damping = c->damping_q30;
+	params->mu_inf = c->mu_inf_q30;
+	params->delta_mu = c->delta_mu_q30;
+	params->slope_spm = c->slope_q24;
 #else
 	/* exact: every Q value is an integer times a power of two */
-	params->mass_kg = (float)cal->mass_q16 * (1.0f / 65536.0f);
-	params->omega0_radps = (float)cal->omega0_q12 * (1.0f / 4096.0f);
-	params->damping = (float)cal->damping_q30 * (1.0f / 1073741824.0f);
-	params->mu_inf = (float)cal->mu_inf_q30 * (1.0f / 1073741824.0f);
-	params->delta_mu = (float)cal->delta_mu_q30 * (1.0f / 1073741824.0f);
-	params->slope_spm = (float)cal->slope_q24 * (1.0f / 16777216.0f);
+	params->mass_kg = (float)c->mass_q16 * (1.0f / 65536.0f);
+	params->omega0_radps = (float)c->omega0_q12 * (1.0f / 4096.0f);
+	params->damping = (float)c->damping_q30 * (1.0f / 1073741824.0f);
+	params->mu_inf = (float)c->mu_inf_q30 * (1.0f / 1073741824.0f);
+	params->delta_mu = (float)c->delta_mu_q30 * (1.0f / 1073741824.0f);
+	params->slope_spm = (float)c->slope_q24 * (1.0f / 16777216.0f);
 #endif
+}
+
+void calib_model_params(const calib_t *cal, squeal_params_t *params)
+{
+	calib_corner_t c;
+
+	calib_corner_defaults(cal, 0U, &c);
+	calib_corner_params(&c, params);
 }
 
 uint32_t calib_crc32(uint32_t crc, const uint8_t *data, uint32_t len)

@@ -26,10 +26,94 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "can_signal.h"
 #include "squeal_model.h"
 
 #define CALIB_MAGIC 0x42435153UL /* "SQCB" little-endian */
-#define CALIB_VERSION 2U /* 2: input_bus, output_bus, input_listen_only */
+#define CALIB_VERSION 2U /* 2: buses (issue 10), input map and corners (issue 11) */
+
+/*
+ * The input map (docs/calib-input-map.md). n_corners == 0 is the legacy
+ * form: one corner FL on DiscSpeed/PadForce from the flat keys (P01 or none,
+ * input_period_ms, *_max_raw); that is calib_default(). Otherwise inputs
+ * [0, n_inputs) and corners [0, n_corners) are used and the legacy input
+ * keys are ignored. Unused entries are stored as zeros.
+ */
+#define CALIB_MAX_INPUTS 8U
+#define CALIB_MAX_CORNERS 4U
+#define CALIB_DATA_ID_LIST_LEN 16U
+
+/* input flags */
+#define CALIB_IN_EXTENDED (1U << 0)  /* 29-bit identifier                   */
+#define CALIB_IN_MUX      (1U << 1)  /* multiplexed: mux selector == value  */
+#define CALIB_IN_NA       (1U << 2)  /* na_raw means "not available"        */
+#define CALIB_IN_NA2      (1U << 3)  /* na_raw2 too                         */
+#define CALIB_IN_QUALIFIER (1U << 4) /* qualifier_bit marks invalid         */
+#define CALIB_IN_DLC_EXACT (1U << 5) /* DLC must equal min_dlc              */
+#define CALIB_IN_FLAGS_ALL 0x3FU
+
+/* calib_input_t.protection */
+#define CALIB_PROT_NONE    0U
+#define CALIB_PROT_P01     1U /* AUTOSAR E2E P01 1A: CRC byte 0, counter byte 1 */
+#define CALIB_PROT_P02     2U /* AUTOSAR E2E P02: CRC-8H2F, DataIDList          */
+#define CALIB_PROT_COUNTER 3U /* alive counter signal only                      */
+#define CALIB_PROT_COUNT   4U
+
+/* A decimal as DBC files write it: mant x 10^exp (exp -12..12). */
+typedef struct {
+	int32_t mant;
+	int8_t exp;
+} calib_dec_t;
+
+typedef struct {
+	uint32_t id;               /* 11- or 29-bit identifier                */
+	uint8_t flags;             /* CALIB_IN_*                              */
+	uint8_t min_dlc;           /* shorter frames: bad DLC                 */
+	can_signal_t sig;          /* the value                               */
+	calib_dec_t factor;        /* physical = raw x factor + offset        */
+	calib_dec_t offset;
+	uint8_t unit;              /* input_unit_t                            */
+	can_signal_t mux;          /* selector (CALIB_IN_MUX)                 */
+	uint32_t mux_value;
+	uint32_t na_raw;           /* CALIB_IN_NA                             */
+	uint32_t na_raw2;          /* CALIB_IN_NA2                            */
+	uint8_t qualifier_bit;     /* DBC bit number (CALIB_IN_QUALIFIER)     */
+	uint8_t qualifier_invalid; /* the bit's value that means invalid     */
+	uint8_t protection;        /* CALIB_PROT_*                            */
+	uint16_t data_id;          /* P01                                     */
+	uint8_t data_id_list[CALIB_DATA_ID_LIST_LEN]; /* P02                  */
+	can_signal_t counter;      /* CALIB_PROT_COUNTER                      */
+	uint8_t counter_modulus;   /* 2..16                                   */
+	uint8_t max_delta_counter; /* largest accepted counter step           */
+	uint16_t period_ms;        /* expected period                         */
+	uint8_t stale_cycles;      /* missed periods before stale             */
+	calib_dec_t max;           /* plausible range and step, physical      */
+	calib_dec_t min;
+	calib_dec_t step_max;
+} calib_input_t;
+
+typedef struct {
+	uint8_t pos;               /* 0 FL, 1 FR, 2 RL, 3 RR                  */
+	uint8_t speed_input;       /* index into inputs                       */
+	uint8_t force_input;
+	uint8_t friction_faces;    /* torque: n_f                             */
+	uint32_t piston_area_cmm2; /* pressure: A [0.01 mm^2]                 */
+	uint32_t efficiency_ppm;   /* pressure: eta                           */
+	uint32_t axle_factor_ppm;  /* pressure: k                             */
+	int32_t mass_q16;          /* the corner's brake, as the flat keys    */
+	int32_t omega0_q12;
+	int32_t damping_q30;
+	int32_t mu_inf_q30;
+	int32_t delta_mu_q30;
+	int32_t slope_q24;
+	uint8_t criterion;
+	uint32_t pad_radius_um;
+	uint32_t wheel_radius_um;
+	uint16_t status_id;
+	uint16_t detail_id;
+	uint16_t detail2_id;
+	uint16_t diag_id;
+} calib_corner_t;
 
 typedef struct {
 	/* model (fixed-build Q-formats, see squeal_model.h) */
@@ -74,14 +158,24 @@ typedef struct {
 	uint32_t rho_warn_ppm;       /* bistable: rho below -> level 2 500000 */
 	/* platform */
 	uint16_t watchdog_ms;        /* IWDG / software watchdog       100 */
-	/* buses (hal.h: 0 .. HAL_CAN_BUSES-1; version 2) */
-	uint8_t input_bus;           /* DiscSpeed/PadForce come from      0 */
+	/* buses (hal.h: 0 .. HAL_CAN_BUSES-1) */
+	uint8_t input_bus;           /* the inputs come from              0 */
 	uint8_t output_bus;          /* Squeal* frames go out on          0 */
 	uint8_t input_listen_only;   /* 1: never send on the input bus    0 */
+	/* input map and corners (0 corners: the legacy flat keys above) */
+	uint8_t n_inputs;
+	uint8_t n_corners;
+	calib_input_t inputs[CALIB_MAX_INPUTS];
+	calib_corner_t corners[CALIB_MAX_CORNERS];
 } calib_t;
 
-/* Size of the stored block: header 8 + fields + CRC 4. */
-#define CALIB_BLOCK_LEN 106U
+/* Size of the stored block: header 8 + fields + CRC 4 (v1: 103 bytes, then
+ * 3 bus bytes, 2 counts, 8 inputs of CALIB_INPUT_STORED_LEN, 4 corners of
+ * CALIB_CORNER_STORED_LEN). */
+#define CALIB_INPUT_STORED_LEN 82U
+#define CALIB_CORNER_STORED_LEN 57U
+#define CALIB_BLOCK_LEN (103U + 3U + 2U + (CALIB_MAX_INPUTS * CALIB_INPUT_STORED_LEN) + \
+			 (CALIB_MAX_CORNERS * CALIB_CORNER_STORED_LEN))
 
 /* Why a block was refused (calib_decode's *reason). */
 typedef enum {
@@ -98,6 +192,8 @@ typedef enum {
 
 /* The factory defaults (model.md section 8, the DBC's IDs and periods). */
 void calib_default(calib_t *cal);
+/* The same, as one read-only object. */
+const calib_t *calib_factory(void);
 
 /* Range check of every field. SQ_OK or SQ_EINVAL. NULL pointers given to
  * any calib_* function are programming errors: hal_contract_failed(). */
@@ -121,8 +217,10 @@ int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
  */
 int calib_field_range(uint32_t offset, int64_t *min, int64_t *max);
 
-/* The model's parameters from a valid calibration. */
+/* The model's parameters from a valid calibration (its flat keys), or
+ * from one corner. */
 void calib_model_params(const calib_t *cal, squeal_params_t *params);
+void calib_corner_params(const calib_corner_t *corner, squeal_params_t *params);
 
 /* CRC-32 (IEEE 802.3), continuing from crc (start with 0). */
 uint32_t calib_crc32(uint32_t crc, const uint8_t *data, uint32_t len);

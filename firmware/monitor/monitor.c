@@ -4,27 +4,12 @@
 #include <stddef.h>
 
 #include "hal.h"
+#include "calib_map.h"
 #include "sq_status.h"
 
 #define US_PER_MS 1000U
 #define PPM_ONE 1000000
 #define NO_BORDER_MARGIN_RAW MSG_HOPF_MARGIN_MPS_MAX
-
-static const e2e_p01_config_t *speed_cfg(const monitor_t *me, e2e_p01_config_t *cfg)
-{
-	cfg->data_id = MSG_DISC_SPEED_DATA_ID;
-	cfg->data_len = MSG_DISC_SPEED_DLC;
-	cfg->max_delta_counter = me->cal.e2e_max_delta_counter;
-	return cfg;
-}
-
-static const e2e_p01_config_t *force_cfg(const monitor_t *me, e2e_p01_config_t *cfg)
-{
-	cfg->data_id = MSG_PAD_FORCE_DATA_ID;
-	cfg->data_len = MSG_PAD_FORCE_DLC;
-	cfg->max_delta_counter = me->cal.e2e_max_delta_counter;
-	return cfg;
-}
 
 static void sat_inc(uint32_t *c)
 {
@@ -57,22 +42,48 @@ static void input_init(input_t *in, uint64_t now_us)
 	in->count = (input_counters_t){ 0 };
 }
 
-int monitor_init(monitor_t *me, const calib_t *cal, bool calib_invalid,
-		 uint32_t platform_faults, uint64_t now_us)
+static input_geom_t corner_geom(const calib_corner_t *c)
+{
+	return (input_geom_t){ c->pad_radius_um, c->wheel_radius_um, c->piston_area_cmm2,
+			       c->efficiency_ppm, c->axle_factor_ppm };
+}
+
+/* This corner's brake and inputs; SQ_EINVAL if the calibration has none. */
+static int corner_setup(monitor_t *me, uint32_t k)
+{
+	calib_input_t speed;
+	calib_input_t force;
+	input_geom_t g;
+
+	if ((calib_validate(me->cal) != SQ_OK) ||
+	    (calib_corner_view(me->cal, k, &me->corner, &speed, &force) != SQ_OK)) {
+		return SQ_EINVAL;
+	}
+	g = corner_geom(&me->corner);
+	if ((input_rx_setup(&speed, &g, &me->speed_rx) != SQ_OK) ||
+	    (input_rx_setup(&force, &g, &me->force_rx) != SQ_OK)) {
+		return SQ_EINVAL;
+	}
+	me->corner_index = (uint8_t)k;
+	return SQ_OK;
+}
+
+int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
+			bool calib_invalid, uint32_t platform_faults, uint64_t now_us)
 {
 	int rc = SQ_OK;
 
 	HAL_REQUIRE(me != NULL);
 	*me = (monitor_t){ 0 };
-	if ((cal != NULL) && (calib_validate(cal) == SQ_OK)) {
-		me->cal = *cal;
-		me->calib_invalid = calib_invalid;
-	} else {
-		calib_default(&me->cal);
+	me->cal = cal;
+	me->calib_invalid = calib_invalid;
+	if ((cal == NULL) || (corner_setup(me, k) != SQ_OK)) {
+		me->cal = calib_factory();
+		(void)corner_setup(me, 0U); /* the defaults always set up */
 		me->calib_invalid = true;
 		rc = SQ_EINVAL;
 	}
-	calib_model_params(&me->cal, &me->params);
+	calib_corner_params(&me->corner, &me->params);
 	me->platform_faults = platform_faults;
 	input_init(&me->speed, now_us);
 	input_init(&me->force, now_us);
@@ -84,14 +95,23 @@ int monitor_init(monitor_t *me, const calib_t *cal, bool calib_invalid,
 	e2e_p01_tx_init(&me->tx_diag);
 	me->start_us = now_us;
 	me->now_us = now_us;
-	me->next_status_us = now_us;
-	me->next_detail_us = now_us;
-	me->next_diag_us = now_us;
+	/* corner k sends its periodic messages k ms after corner 0: the
+	 * corners' transmissions (and their E2E work) fall into different
+	 * 1 ms steps */
+	me->next_status_us = now_us + ((uint64_t)me->corner_index * US_PER_MS);
+	me->next_detail_us = me->next_status_us;
+	me->next_diag_us = me->next_status_us;
 	me->selftest = (monitor_selftest_t){ (uint8_t)MSG_HSE_FREQ_NA, (uint8_t)MSG_RESET_CAUSE_MAX,
 					     (uint8_t)MSG_BOR_LEVEL_NA, { 2U, 2U },
 					     (uint16_t)MSG_STACK_HWM_UNKNOWN, false };
 	me->started = true;
 	return rc;
+}
+
+int monitor_init(monitor_t *me, const calib_t *cal, bool calib_invalid,
+		 uint32_t platform_faults, uint64_t now_us)
+{
+	return monitor_init_corner(me, cal, 0U, calib_invalid, platform_faults, now_us);
 }
 
 int monitor_set_selftest(monitor_t *me, const monitor_selftest_t *st)
@@ -121,7 +141,7 @@ static void input_accept(monitor_t *me, input_t *in, int32_t value,
 	} else {
 		/* first-order low pass, alpha in Q15 (32768 = no filtering) */
 		in->filtered_q8 += (((x_q8 - in->filtered_q8) *
-				    (int64_t)me->cal.lowpass_alpha_q15) / 32768);
+				    (int64_t)me->cal->lowpass_alpha_q15) / 32768);
 	}
 	in->value = (int32_t)(in->filtered_q8 / 256);
 	in->faults &= ~(INPUT_FAULT_IMPLAUSIBLE | INPUT_FAULT_STALE |
@@ -131,33 +151,13 @@ static void input_accept(monitor_t *me, input_t *in, int32_t value,
 	sat_inc(&in->count.used);
 }
 
-/*
- * Plausibility of one E2E-good raw value: "not available", beyond the
- * calibrated maximum, or a jump from the previous value larger than the
- * calibrated step (rate limit) makes the input implausible until a
- * plausible value arrives. The rate check compares with the previous
- * received value, so a real step costs one frame and a spike two.
- */
-static bool input_plausible(input_t *in, uint16_t raw, uint16_t na_raw,
-			    uint16_t max_raw, uint16_t step_max_raw)
+/* A value that is "not available", flagged invalid, out of range or too
+ * far from the previous one makes the input implausible until a plausible
+ * value arrives. */
+static void mark_implausible(input_t *in)
 {
-	bool ok = (raw != na_raw) && (raw <= max_raw);
-
-	if (ok && in->has_prev_raw) {
-		const uint16_t d = (raw > in->prev_raw) ? (uint16_t)(raw - in->prev_raw) :
-			(uint16_t)(in->prev_raw - raw);
-
-		ok = d <= step_max_raw;
-	}
-	if (raw != na_raw) {
-		in->prev_raw = raw;
-		in->has_prev_raw = true;
-	}
-	if (!ok) {
-		in->faults |= INPUT_FAULT_IMPLAUSIBLE;
-		sat_inc(&in->count.implausible);
-	}
-	return ok;
+	in->faults |= INPUT_FAULT_IMPLAUSIBLE;
+	sat_inc(&in->count.implausible);
 }
 
 static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
@@ -168,120 +168,77 @@ static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
 		f->timestamp_us : me->now_us;
 }
 
-/*
- * The E2E part shared by both inputs. Returns true when the frame may be
- * used; a frame that failed marks the input (fault) and is counted.
- * With E2E checking switched off by calibration only the length is checked.
- */
-static bool input_e2e(monitor_t *me, input_t *in, const e2e_p01_config_t *cfg,
-		      const hal_can_frame_t *f)
+/* Count the protection's verdict; true when the frame may be used. */
+static bool input_protection(monitor_t *me, input_t *in, const input_rx_result_t *r,
+			     const hal_can_frame_t *f)
 {
-	e2e_p01_status_t st;
-
-	if (f->dlc != cfg->data_len) {
+	switch ((input_rx_reason_t)r->reason) {
+	case INPUT_RX_DLC:
 		sat_inc(&in->count.bad_dlc);
 		in->faults |= INPUT_FAULT_E2E;
-		if (me->cal.e2e_check_inputs != 0U) {
-			/* still one receive cycle for the E2E state machine */
-			(void)e2e_p01_check(cfg, &in->e2e, f->data, f->dlc);
-		}
 		return false;
-	}
-	if (me->cal.e2e_check_inputs == 0U) {
-		return true;
-	}
-	st = e2e_p01_check(cfg, &in->e2e, f->data, f->dlc);
-	switch (st) {
-	case E2E_P01_STATUS_OK:
-	case E2E_P01_STATUS_INITIAL:
-		in->last_seen_us = frame_time(me, f);
-		return true;
-	case E2E_P01_STATUS_OKSOMELOST:
-		sat_add(&in->count.e2e_lost, in->e2e.lost_data);
-		in->last_seen_us = frame_time(me, f);
-		return true;
-	case E2E_P01_STATUS_REPEATED:
+	case INPUT_RX_CRC:
+		sat_inc(&in->count.e2e_wrong_crc);
+		in->faults |= INPUT_FAULT_E2E;
+		return false;
+	case INPUT_RX_COUNTER:
+		sat_inc(&in->count.e2e_wrong_sequence);
+		in->faults |= INPUT_FAULT_E2E;
+		return false;
+	case INPUT_RX_REPEATED:
 		/* no new data, not an error: a frozen sender goes stale */
 		sat_inc(&in->count.e2e_repeated);
 		in->last_seen_us = frame_time(me, f);
 		return false;
-	case E2E_P01_STATUS_WRONGSEQUENCE:
-		sat_inc(&in->count.e2e_wrong_sequence);
-		in->faults |= INPUT_FAULT_E2E;
-		return false;
-	default: /* WRONGCRC */
-		sat_inc(&in->count.e2e_wrong_crc);
-		in->faults |= INPUT_FAULT_E2E;
-		return false;
+	default:
+		break;
 	}
+	if (r->e2e_status != (uint8_t)E2E_P01_STATUS_NONEWDATA) {
+		sat_add(&in->count.e2e_lost, r->lost);
+		in->last_seen_us = frame_time(me, f);
+	}
+	return true;
 }
 
-/* A copy of the payload with the E2E counter nibble cleared, for unpacking
- * plain frames when E2E checking is off (their byte 1 may hold anything). */
-static void plain_copy(const hal_can_frame_t *f, uint8_t data[8])
+/* One frame of one input: check, extract, convert, accept. */
+static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
+			const hal_can_frame_t *f)
 {
-	uint32_t i;
-
-	for (i = 0U; i < 8U; i++) {
-		data[i] = f->data[i];
-	}
-	data[1] &= 0xF0U;
-}
-
-
-static void speed_frame(monitor_t *me, const hal_can_frame_t *f)
-{
-	input_t *in = &me->speed;
-	e2e_p01_config_t cfg;
-	msg_disc_speed_t m;
-	uint8_t data[8];
+	input_rx_result_t r;
+	int32_t value;
 
 	sat_inc(&in->count.frames);
-	if (!input_e2e(me, in, speed_cfg(me, &cfg), f)) {
+	r = input_rx_frame(cfg, &in->e2e, f);
+	if (!input_protection(me, in, &r, f)) {
 		return;
 	}
-	plain_copy(f, data);
-	if (msg_disc_speed_unpack(data, f->dlc, &m) != SQ_OK) {
-		sat_inc(&in->count.bad_dlc);
-		in->faults |= INPUT_FAULT_E2E;
+	if ((r.reason == (uint8_t)INPUT_RX_NA) || (r.reason == (uint8_t)INPUT_RX_QUALIFIER)) {
+		mark_implausible(in);
 		return;
 	}
-	if (input_plausible(in, m.disc_speed_radps, MSG_DISC_SPEED_RADPS_NA,
-			    me->cal.speed_max_raw, me->cal.speed_step_max_raw)) {
-		/* v0 = Omega r_p: 0.01 rad/s x um -> um/s (< 6.6e8, fits) */
-		const uint64_t v0 = ((uint64_t)m.disc_speed_radps *
-				     me->cal.pad_radius_um + 50U) / 100U;
-
-		input_accept(me, in, (int32_t)v0, frame_time(me, f));
-	}
-}
-
-static void force_frame(monitor_t *me, const hal_can_frame_t *f)
-{
-	input_t *in = &me->force;
-	e2e_p01_config_t cfg;
-	msg_pad_force_t m;
-	uint8_t data[8];
-
-	sat_inc(&in->count.frames);
-	if (!input_e2e(me, in, force_cfg(me, &cfg), f)) {
+	if (!input_rx_plausible(cfg, &in->has_prev_raw, &in->prev_raw, r.value)) {
+		mark_implausible(in);
 		return;
 	}
-	plain_copy(f, data);
-	if (msg_pad_force_unpack(data, f->dlc, &m) != SQ_OK) {
-		sat_inc(&in->count.bad_dlc);
-		in->faults |= INPUT_FAULT_E2E;
-		return;
+	value = input_conv_apply(&cfg->conv, r.value);
+	if (cfg->conv.qty == (uint8_t)INPUT_QTY_TORQUE) {
+		/* N = T / (n_f mu(v0) r_p) at the corner's current v0 */
+		value = input_conv_torque_to_force(value, me->speed.value,
+						   me->corner.friction_faces,
+						   me->corner.pad_radius_um,
+						   me->corner.mu_inf_q30,
+						   me->corner.delta_mu_q30,
+						   me->corner.slope_q24);
 	}
-	if (input_plausible(in, m.pad_force_n, MSG_PAD_FORCE_N_NA,
-			    me->cal.force_max_raw, me->cal.force_step_max_raw)) {
-		/* 0.5 N per bit -> mN */
-		input_accept(me, in, (int32_t)m.pad_force_n * 500, frame_time(me, f));
-	}
+	input_accept(me, in, value, frame_time(me, f));
 }
 
 void monitor_on_frame(monitor_t *me, const hal_can_frame_t *frame)
 {
+	bool speed_fmt = false;
+	bool force_fmt = false;
+	bool used = false;
+
 	HAL_REQUIRE((me != NULL) && (frame != NULL));
 	if (!me->started) {
 		return;
@@ -290,19 +247,22 @@ void monitor_on_frame(monitor_t *me, const hal_can_frame_t *frame)
 		sat_inc(&me->count.error_frames);
 		return;
 	}
-	if ((frame->id == me->cal.disc_speed_id) || (frame->id == me->cal.pad_force_id)) {
-		if ((frame->flags & (HAL_CAN_FLAG_RTR | HAL_CAN_FLAG_EXT)) != 0U) {
-			sat_inc(&me->count.rtr_or_ext);
-			return;
-		}
-		if (frame->id == me->cal.disc_speed_id) {
-			speed_frame(me, frame);
-		} else {
-			force_frame(me, frame);
-		}
-		return;
+	/* one frame may carry both inputs (a vehicle's ESC frame) */
+	if (input_rx_matches(&me->speed_rx, frame, &speed_fmt)) {
+		input_frame(me, &me->speed, &me->speed_rx, frame);
+		used = true;
 	}
-	sat_inc(&me->count.unknown_id);
+	if (input_rx_matches(&me->force_rx, frame, &force_fmt)) {
+		input_frame(me, &me->force, &me->force_rx, frame);
+		used = true;
+	}
+	if (!used) {
+		if (speed_fmt || force_fmt) {
+			sat_inc(&me->count.rtr_or_ext);
+		} else {
+			sat_inc(&me->count.unknown_id);
+		}
+	}
 }
 
 void monitor_on_can_status(monitor_t *me, const hal_can_status_t *status)
@@ -324,10 +284,10 @@ void monitor_report_task_time(monitor_t *me, uint32_t task_us)
 }
 
 /* Staleness and the E2E "no new data" cycle of one input. */
-static void input_tick(monitor_t *me, input_t *in)
+static void input_tick(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg)
 {
-	const uint64_t period_us = (uint64_t)me->cal.input_period_ms * US_PER_MS;
-	const uint64_t timeout_us = period_us * me->cal.stale_cycles;
+	const uint64_t period_us = (uint64_t)cfg->desc.period_ms * US_PER_MS;
+	const uint64_t timeout_us = period_us * cfg->desc.stale_cycles;
 	const uint64_t age = (me->now_us > in->last_used_us) ?
 		(me->now_us - in->last_used_us) : 0U;
 
@@ -364,11 +324,11 @@ static bool beyond_band(const monitor_t *me, uint8_t from, uint8_t to)
 
 	if (hopf) {
 		return ((me->eval.has & MODEL_EVAL_HAS_LNQ) != 0U) &&
-		       (abs32(me->eval.ln_2q_micro) > me->cal.hyst_lnq_micro);
+		       (abs32(me->eval.ln_2q_micro) > me->cal->hyst_lnq_micro);
 	}
 	/* stable <-> bistable: rho crosses 1 */
 	return ((me->eval.has & MODEL_EVAL_HAS_BASIN) == 0U) ||
-	       (abs32(me->eval.basin_ratio_ppm - PPM_ONE) > me->cal.hyst_rho_ppm);
+	       (abs32(me->eval.basin_ratio_ppm - PPM_ONE) > me->cal->hyst_rho_ppm);
 }
 
 static void set_state(monitor_t *me, uint8_t state)
@@ -405,7 +365,7 @@ static void debounce(monitor_t *me, uint8_t cls)
 		me->candidate = cls;
 		me->candidate_count = 1U;
 	}
-	if (me->candidate_count >= me->cal.debounce_count) {
+	if (me->candidate_count >= me->cal->debounce_count) {
 		set_state(me, cls);
 	}
 }
@@ -416,12 +376,12 @@ static uint8_t classify_pair(monitor_t *me)
 	const int32_t force = me->force.value;
 
 	sat_inc(&me->count.classifications);
-	if (((uint32_t)v0 < me->cal.v0_min_umps) || ((uint32_t)force < me->cal.force_min_mn)) {
+	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
 		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
 		me->have_eval = true;
 		return SQUEAL_STATE_NOT_SLIDING;
 	}
-	if (model_adapter_eval(&me->params, (squeal_criterion_t)me->cal.criterion,
+	if (model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
 			       v0, force, &me->eval) != SQ_OK) {
 		sat_inc(&me->count.model_invalid);
 		me->have_eval = false;
@@ -440,7 +400,7 @@ static uint8_t warning_level(const monitor_t *me)
 		/* small basin (rho below the threshold): a small disturbance
 		 * starts stick-slip */
 		if (((me->eval.has & MODEL_EVAL_HAS_BASIN) == 0U) ||
-		    ((uint32_t)me->eval.basin_ratio_ppm < me->cal.rho_warn_ppm)) {
+		    ((uint32_t)me->eval.basin_ratio_ppm < me->cal->rho_warn_ppm)) {
 			return MSG_WARNING_LEVEL_WARNING;
 		}
 		return MSG_WARNING_LEVEL_ADVISORY;
@@ -542,7 +502,7 @@ static void send_status(monitor_t *me)
 		}
 	}
 	rc = msg_squeal_status_pack(&m, data, &dlc);
-	tx_protected(me, me->cal.status_id, MSG_SQUEAL_STATUS_DATA_ID,
+	tx_protected(me, me->corner.status_id, MSG_SQUEAL_STATUS_DATA_ID,
 		     &me->tx_status, data, dlc, rc);
 }
 
@@ -564,8 +524,8 @@ static void send_detail(monitor_t *me)
 	if (cls && ((me->eval.has & MODEL_EVAL_HAS_HOPF_V0) != 0U)) {
 		/* v_car = v0 r_w / r_p; 0.1 km/h = v[um/s] * 36 / 1e6 */
 		const uint64_t kph10 = ((uint64_t)(uint32_t)me->eval.hopf_v0_umps *
-					me->cal.wheel_radius_um * 36U /
-					me->cal.pad_radius_um + 500000U) / 1000000U;
+					me->corner.wheel_radius_um * 36U /
+					me->corner.pad_radius_um + 500000U) / 1000000U;
 
 		d.hopf_speed_mps = umps_to_cmps(me->eval.hopf_v0_umps, MSG_HOPF_SPEED_MPS_MAX);
 		d.vehicle_speed_border_kph = (kph10 > MSG_VEHICLE_SPEED_BORDER_KPH_MAX) ?
@@ -576,7 +536,7 @@ static void send_detail(monitor_t *me)
 						      MSG_TRIGGER_VELOCITY_MPS_MAX);
 	}
 	rc = msg_squeal_detail_pack(&d, data, &dlc);
-	tx_protected(me, me->cal.detail_id, MSG_SQUEAL_DETAIL_DATA_ID,
+	tx_protected(me, me->corner.detail_id, MSG_SQUEAL_DETAIL_DATA_ID,
 		     &me->tx_detail, data, dlc, rc);
 
 	d2.force_n = MSG_FORCE_N_NA;
@@ -600,7 +560,7 @@ static void send_detail(monitor_t *me)
 			(uint16_t)MSG_LC_AMPLITUDE_UM_MAX : (uint16_t)a;
 	}
 	rc = msg_squeal_detail2_pack(&d2, data, &dlc);
-	tx_protected(me, me->cal.detail2_id, MSG_SQUEAL_DETAIL2_DATA_ID,
+	tx_protected(me, me->corner.detail2_id, MSG_SQUEAL_DETAIL2_DATA_ID,
 		     &me->tx_detail2, data, dlc, rc);
 }
 
@@ -698,7 +658,7 @@ static void send_diag(monitor_t *me)
 	}
 	me->diag_page = (uint8_t)((me->diag_page + 1U) % MSG_DIAG_PAGE_COUNT);
 	rc = msg_squeal_diag_pack(&m, data, &dlc);
-	tx_protected(me, me->cal.diag_id, MSG_SQUEAL_DIAG_DATA_ID,
+	tx_protected(me, me->corner.diag_id, MSG_SQUEAL_DIAG_DATA_ID,
 		     &me->tx_diag, data, dlc, rc);
 }
 
@@ -717,7 +677,18 @@ static bool due(uint64_t *next_us, uint64_t now_us, uint16_t period_ms)
 	return true;
 }
 
+bool monitor_wants_classify(const monitor_t *me)
+{
+	return (me != NULL) && me->speed.fresh && me->force.fresh &&
+	       (me->speed.faults == 0U) && (me->force.faults == 0U);
+}
+
 void monitor_step(monitor_t *me, uint64_t now_us)
+{
+	monitor_step_slot(me, now_us, true);
+}
+
+void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 {
 	uint8_t warning;
 
@@ -728,13 +699,13 @@ void monitor_step(monitor_t *me, uint64_t now_us)
 	if (now_us > me->now_us) {
 		me->now_us = now_us; /* monotonic even if the caller's clock is not */
 	}
-	input_tick(me, &me->speed);
-	input_tick(me, &me->force);
+	input_tick(me, &me->speed, &me->speed_rx);
+	input_tick(me, &me->force, &me->force_rx);
 
 	if ((me->speed.faults != 0U) || (me->force.faults != 0U)) {
 		set_state(me, MONITOR_STATE_FAULT);
 		me->have_eval = false;
-	} else if (me->speed.fresh && me->force.fresh) {
+	} else if (may_classify && me->speed.fresh && me->force.fresh) {
 		me->speed.fresh = false;
 		me->force.fresh = false;
 		debounce(me, classify_pair(me));
@@ -747,14 +718,14 @@ void monitor_step(monitor_t *me, uint64_t now_us)
 		me->status_now = true;
 	}
 
-	if (due(&me->next_status_us, me->now_us, me->cal.status_period_ms) || me->status_now) {
+	if (due(&me->next_status_us, me->now_us, me->cal->status_period_ms) || me->status_now) {
 		me->status_now = false;
 		send_status(me);
 	}
-	if (due(&me->next_detail_us, me->now_us, me->cal.detail_period_ms)) {
+	if (due(&me->next_detail_us, me->now_us, me->cal->detail_period_ms)) {
 		send_detail(me);
 	}
-	if (due(&me->next_diag_us, me->now_us, me->cal.diag_period_ms)) {
+	if (due(&me->next_diag_us, me->now_us, me->cal->diag_period_ms)) {
 		send_diag(me);
 	}
 }

@@ -35,6 +35,7 @@
 #include "calib.h"
 #include "e2e_p01.h"
 #include "hal.h"
+#include "input_rx.h"
 #include "model_adapter.h"
 #include "squeal_msgs.h"
 
@@ -56,7 +57,7 @@ typedef struct {
 	uint32_t e2e_wrong_sequence;
 	uint32_t e2e_repeated;
 	uint32_t e2e_lost;        /* frames reported lost by OKSOMELOST (sum)     */
-	uint32_t implausible;     /* not available / out of range / rate limit    */
+	uint32_t implausible;     /* not available / qualifier / range / rate     */
 	uint32_t stale_events;    /* transitions into stale                       */
 } input_counters_t;
 
@@ -65,7 +66,7 @@ typedef struct {
 	e2e_p01_rx_t e2e;
 	uint32_t faults;           /* INPUT_FAULT_*                               */
 	bool has_prev_raw;
-	uint16_t prev_raw;         /* last E2E-good raw value (rate limit)        */
+	int64_t prev_raw;          /* last E2E-good raw value (rate limit)        */
 	int32_t value;             /* conditioned: v0 [um/s] or force [mN]        */
 	int64_t filtered_q8;       /* low-pass state, value x 256 (needs 64 bit) */
 	uint64_t last_used_us;     /* time of the last used frame                 */
@@ -77,7 +78,7 @@ typedef struct {
 typedef struct {
 	uint32_t unknown_id;       /* frames with an identifier we do not use     */
 	uint32_t error_frames;     /* bus error frames delivered by the HAL       */
-	uint32_t rtr_or_ext;       /* remote or extended frames on our IDs        */
+	uint32_t rtr_or_ext;       /* remote frames, or the other frame format, on our IDs */
 	uint32_t classifications;
 	uint32_t state_changes;
 	uint32_t tx_frames;
@@ -106,8 +107,21 @@ typedef struct {
 	bool failed;
 } monitor_selftest_t;
 
+/*
+ * One corner (FL, FR, RL, RR) is one monitor_t: its brake, its speed and
+ * force inputs, its classification and its own output messages. The app
+ * owns 1..4 of them (calib_corner_count()) and staggers their
+ * classifications over the 1 ms steps (monitor_step_slot()).
+ */
 typedef struct {
-	calib_t cal;
+	/* the calibration in use, read-only: the caller's (it must outlive the
+	 * monitor; the app keeps one for all corners), or the factory
+	 * defaults when it was refused */
+	const calib_t *cal;
+	uint8_t corner_index;        /* k in cal.corners (0 for the legacy form) */
+	calib_corner_t corner;       /* this corner's brake and output IDs       */
+	input_rx_cfg_t speed_rx;     /* the inputs as configured for this corner */
+	input_rx_cfg_t force_rx;
 	squeal_params_t params;
 	bool calib_invalid;          /* defaults in use because the stored block was bad */
 	uint32_t platform_faults;    /* HAL_FAULT_* from the HAL                 */
@@ -150,18 +164,34 @@ typedef struct {
 
 /*
  * Start with a calibration (must validate; otherwise the defaults are used
- * and calib_invalid is set). calib_invalid also forces the CalibInvalid fault
+ * and calib_invalid is set). The monitor keeps a pointer to cal: it must
+ * stay valid and unchanged while the monitor runs. calib_invalid also forces the CalibInvalid fault
  * bit, for a caller that fell back to defaults itself.
  * Returns SQ_OK, or SQ_EINVAL when cal was rejected (defaults in use).
  */
 int monitor_init(monitor_t *me, const calib_t *cal, bool calib_invalid,
 		 uint32_t platform_faults, uint64_t now_us);
 
+/* The same for corner k of cal (0 .. calib_corner_count(cal) - 1). A
+ * calibration that does not validate, or a k beyond its corners, gives the
+ * defaults' corner 0 and calib_invalid, as above. */
+int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
+			bool calib_invalid, uint32_t platform_faults, uint64_t now_us);
+
 /* One received frame (any identifier; error frames too). */
 void monitor_on_frame(monitor_t *me, const hal_can_frame_t *frame);
 
 /* The 1 ms task: run everything due at now_us. */
 void monitor_step(monitor_t *me, uint64_t now_us);
+
+/* The same, but a new input pair is classified only when may_classify is
+ * true (the app gives one corner per step that slot); otherwise it waits,
+ * still fresh, for the corner's next slot. */
+void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify);
+
+/* True when a new input pair waits for classification (the app's choice
+ * of the corner that gets the step's classification slot). */
+bool monitor_wants_classify(const monitor_t *me);
 
 /* Controller status from the HAL (bus-off, overruns), read every step. */
 void monitor_on_can_status(monitor_t *me, const hal_can_status_t *status);

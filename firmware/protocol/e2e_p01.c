@@ -91,26 +91,26 @@ void e2e_p01_rx_init(e2e_p01_rx_t *rx)
 	}
 }
 
-/* The sequence part of the check, for a frame whose CRC is good. */
-static e2e_p01_status_t check_sequence(const e2e_p01_config_t *cfg,
-				       e2e_p01_rx_t *rx, uint8_t counter)
+/*
+ * The sequence part of the check, for a frame whose CRC is good, with the
+ * counter running 0 .. modulus - 1 (P01: 15, P02: 16, a maker's counter
+ * 2..16). Shared by every protection that has a counter.
+ */
+e2e_p01_status_t e2e_rx_sequence(e2e_p01_rx_t *rx, uint8_t counter,
+				 uint8_t modulus, uint8_t max_delta_counter)
 {
 	uint8_t delta;
 
-	if (counter > E2E_P01_COUNTER_MAX) {
-		/* a P01 sender never sends 15: a corrupted or foreign sender */
-		return E2E_P01_STATUS_WRONGSEQUENCE;
-	}
 	if (rx->wait_for_first_data) {
 		rx->wait_for_first_data = false;
 		rx->resync = false;
-		rx->max_delta_counter = cfg->max_delta_counter;
+		rx->max_delta_counter = max_delta_counter;
 		rx->last_valid_counter = counter;
 		rx->lost_data = 0U;
 		return E2E_P01_STATUS_INITIAL;
 	}
-	delta = (uint8_t)((counter + COUNTER_MODULO - rx->last_valid_counter) %
-			  COUNTER_MODULO);
+	delta = (uint8_t)(((uint32_t)counter + modulus - rx->last_valid_counter) %
+			  modulus);
 	if (delta == 0U) {
 		return E2E_P01_STATUS_REPEATED;
 	}
@@ -118,11 +118,11 @@ static e2e_p01_status_t check_sequence(const e2e_p01_config_t *cfg,
 		/* Adopt the new sequence, but use nothing until the next frame
 		 * confirms it. */
 		rx->resync = true;
-		rx->max_delta_counter = cfg->max_delta_counter;
+		rx->max_delta_counter = max_delta_counter;
 		rx->last_valid_counter = counter;
 		return E2E_P01_STATUS_WRONGSEQUENCE;
 	}
-	rx->max_delta_counter = cfg->max_delta_counter;
+	rx->max_delta_counter = max_delta_counter;
 	rx->last_valid_counter = counter;
 	rx->lost_data = (uint8_t)(delta - 1U);
 	if (rx->resync) {
@@ -130,6 +130,34 @@ static e2e_p01_status_t check_sequence(const e2e_p01_config_t *cfg,
 		return E2E_P01_STATUS_INITIAL;
 	}
 	return delta == 1U ? E2E_P01_STATUS_OK : E2E_P01_STATUS_OKSOMELOST;
+}
+
+void e2e_rx_cycle(e2e_p01_rx_t *rx, uint8_t modulus)
+{
+	if ((uint32_t)rx->max_delta_counter + 1U < modulus) {
+		rx->max_delta_counter++;
+	}
+}
+
+e2e_p01_status_t e2e_rx_record(e2e_p01_rx_t *rx, e2e_p01_status_t st)
+{
+	rx->status = st;
+	if (rx->status_count[st] < UINT32_MAX) {
+		rx->status_count[st]++;
+	}
+	return st;
+}
+
+/* P01's sequence check: counter 15 is never sent by a P01 sender. */
+static e2e_p01_status_t check_sequence(const e2e_p01_config_t *cfg,
+				       e2e_p01_rx_t *rx, uint8_t counter)
+{
+	if (counter > E2E_P01_COUNTER_MAX) {
+		/* a P01 sender never sends 15: a corrupted or foreign sender */
+		return E2E_P01_STATUS_WRONGSEQUENCE;
+	}
+	return e2e_rx_sequence(rx, counter, (uint8_t)COUNTER_MODULO,
+			       cfg->max_delta_counter);
 }
 
 e2e_p01_status_t e2e_p01_check(const e2e_p01_config_t *cfg,
@@ -143,9 +171,7 @@ e2e_p01_status_t e2e_p01_check(const e2e_p01_config_t *cfg,
 	HAL_REQUIRE((rx != NULL) && (e2e_p01_config_check(cfg) == SQ_OK));
 	/* Each call is one receive cycle: the tolerated jump grows, so frames
 	 * lost while nothing (or nothing valid) arrived are tolerated. */
-	if (rx->max_delta_counter < E2E_P01_COUNTER_MAX) {
-		rx->max_delta_counter++;
-	}
+	e2e_rx_cycle(rx, (uint8_t)COUNTER_MODULO);
 	if (data == NULL) {
 		st = E2E_P01_STATUS_NONEWDATA;
 	} else if (len != cfg->data_len ||
@@ -154,11 +180,7 @@ e2e_p01_status_t e2e_p01_check(const e2e_p01_config_t *cfg,
 	} else {
 		st = check_sequence(cfg, rx, (uint8_t)(data[1] & COUNTER_MASK));
 	}
-	rx->status = st;
-	if (rx->status_count[st] < UINT32_MAX) {
-		rx->status_count[st]++;
-	}
-	return st;
+	return e2e_rx_record(rx, st);
 }
 
 bool e2e_p01_status_usable(e2e_p01_status_t status)

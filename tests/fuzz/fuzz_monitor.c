@@ -26,6 +26,8 @@
 #include <stdbool.h>
 
 #include "calib.h"
+#include "calib_map.h"
+#include "input_conv.h"
 #include "e2e_p01.h"
 #include "monitor.h"
 #include "sq_status.h"
@@ -43,6 +45,60 @@ typedef struct {
 } ctx_t;
 
 static ctx_t ctx;
+
+/* A vehicle layout on the legacy identifiers (so that pick_id() finds them):
+ * a Motorola 15-bit km/h speed with a fault bit and a 4-bit counter, and a
+ * multiplexed 12-bit bar pressure with E2E P02. */
+static void vehicle_map(calib_t *cal)
+{
+	calib_input_t *sp = &cal->inputs[0];
+	calib_input_t *pr = &cal->inputs[1];
+	uint8_t i;
+
+	cal->n_inputs = 2U;
+	cal->n_corners = 1U;
+	sp->id = cal->disc_speed_id;
+	sp->min_dlc = 8U;
+	sp->flags = (uint8_t)(CALIB_IN_NA | CALIB_IN_QUALIFIER);
+	sp->sig = (can_signal_t){ 23U, 15U, (uint8_t)CAN_SIGNAL_MOTOROLA, 0U };
+	sp->factor = (calib_dec_t){ 1, -2 };
+	sp->offset = (calib_dec_t){ -6767, -2 };
+	sp->unit = (uint8_t)INPUT_UNIT_KMH;
+	sp->na_raw = 0x7FFFU;
+	sp->qualifier_bit = 24U;
+	sp->qualifier_invalid = 1U;
+	sp->protection = (uint8_t)CALIB_PROT_COUNTER;
+	sp->counter = (can_signal_t){ 60U, 4U, (uint8_t)CAN_SIGNAL_INTEL, 0U };
+	sp->counter_modulus = 15U;
+	sp->max_delta_counter = 2U;
+	sp->period_ms = 10U;
+	sp->stale_cycles = 3U;
+	sp->max = (calib_dec_t){ 300, 0 };
+	sp->min = (calib_dec_t){ -1, 0 };
+	sp->step_max = (calib_dec_t){ 20, 0 };
+	pr->id = cal->pad_force_id;
+	pr->min_dlc = 8U;
+	pr->flags = (uint8_t)(CALIB_IN_NA | CALIB_IN_MUX);
+	pr->sig = (can_signal_t){ 16U, 12U, (uint8_t)CAN_SIGNAL_INTEL, 0U };
+	pr->factor = (calib_dec_t){ 1, -1 };
+	pr->unit = (uint8_t)INPUT_UNIT_BAR;
+	pr->mux = (can_signal_t){ 12U, 2U, (uint8_t)CAN_SIGNAL_INTEL, 0U };
+	pr->mux_value = 1U;
+	pr->na_raw = 0xFFFU;
+	pr->protection = (uint8_t)CALIB_PROT_P02;
+	for (i = 0U; i < CALIB_DATA_ID_LIST_LEN; i++) {
+		pr->data_id_list[i] = (uint8_t)(0x11U * i + 1U);
+	}
+	pr->max_delta_counter = 2U;
+	pr->period_ms = 20U;
+	pr->stale_cycles = 3U;
+	pr->max = (calib_dec_t){ 250, 0 };
+	pr->step_max = (calib_dec_t){ 100, 0 };
+	calib_corner_defaults(cal, 0U, &cal->corners[0]);
+	cal->corners[0].speed_input = 0U;
+	cal->corners[0].force_input = 1U;
+	cal->corners[0].piston_area_cmm2 = 229000U;
+}
 
 static void pick_calibration(uint8_t which, calib_t *cal)
 {
@@ -72,6 +128,10 @@ static void pick_calibration(uint8_t which, calib_t *cal)
 		break;
 	default:
 		break;
+	}
+	/* after the flat keys: the map takes their identifiers */
+	if ((which & 4U) != 0U) {
+		vehicle_map(cal);
 	}
 }
 
@@ -145,7 +205,7 @@ static void check_monitor(const ctx_t *c, const monitor_t *before, bool stepped)
 	uint32_t i;
 
 	/* write protection: the calibration never changes after init */
-	FUZZ_REQUIRE(memcmp(&me->cal, &c->cal0, sizeof(me->cal)) == 0);
+	FUZZ_REQUIRE(memcmp(me->cal, &c->cal0, sizeof(*me->cal)) == 0);
 	FUZZ_REQUIRE(memcmp(&me->params, &c->params0, sizeof(me->params)) == 0);
 	FUZZ_REQUIRE(me->calib_invalid == c->calib_invalid0);
 
@@ -286,7 +346,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	c->now_us = 1000000U;
 	FUZZ_REQUIRE(monitor_init(&c->me, &cal, false, 0U, c->now_us) == SQ_OK);
 	/* byte copies (a struct assignment need not copy padding) */
-	memcpy(&c->cal0, &c->me.cal, sizeof(c->cal0));
+	memcpy(&c->cal0, c->me.cal, sizeof(c->cal0));
 	memcpy(&c->params0, &c->me.params, sizeof(c->params0));
 	c->calib_invalid0 = c->me.calib_invalid;
 	{

@@ -17,6 +17,10 @@ done
 cp tests/fuzz/corpus/fuzz_monitor/seed-* tests/fuzz/corpus/fuzz_monitor_fixed/
 # the documented example calibration file as it is
 [ -f docs/calib-example.txt ] && cp docs/calib-example.txt tests/fuzz/corpus/fuzz_calib_text/seed-example
+# and the fixture vehicle layouts (input map sections)
+for f in tests/inputmap/*.cal; do
+	[ -f "$f" ] && cp "$f" "tests/fuzz/corpus/fuzz_calib_text/seed-$(basename "$f" .cal)"
+done
 for d in tests/fuzz/corpus/*/; do
 	echo "$(basename "$d"): $(ls "$d" | wc -l) files"
 done

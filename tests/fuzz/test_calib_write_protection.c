@@ -106,7 +106,7 @@ static void assert_calibration_unchanged(void)
 	assert_int_equal(calib_write_calls, 0U);
 	/* field by field through the encoder (calib_t has padding bytes,
 	 * which a struct copy need not preserve) */
-	assert_int_equal(calib_encode(&me->cal, enc, sizeof(enc)), SQ_OK);
+	assert_int_equal(calib_encode(me->cal, enc, sizeof(enc)), SQ_OK);
 	assert_memory_equal(enc, block_stored, CALIB_BLOCK_LEN);
 	calib_model_params(&cal_stored, &p);
 	assert_memory_equal(&me->params, &p, sizeof(p));

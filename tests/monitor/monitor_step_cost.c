@@ -7,6 +7,10 @@
  * transmissions, so the steps that receive two frames, classify, and send
  * SquealStatus + Detail + Detail2 + Diag are all in the run.
  *
+ * With an argument N (2..4) the calibration has N corners, all on the same
+ * DiscSpeed/PadForce frames (each corner its own outputs): every frame feeds
+ * every corner, and the app staggers their classifications, one per step.
+ *
  * Under callgrind (tests/monitor/monitor-cost.sh) every poll is followed
  * by CALLGRIND_DUMP_STATS, so each dump holds exactly one poll's cost (with
  * --toggle-collect limiting collection to the function measured). Without
@@ -14,10 +18,12 @@
  */
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <valgrind/callgrind.h>
 
 #include "calib.h"
+#include "calib_map.h"
 #include "sq_status.h"
 #include "squeal_app.h"
 #include "test_hal.h"
@@ -33,8 +39,34 @@ static int queue(uint16_t speed_raw, uint32_t k)
 	return test_send_pair(&snd, speed_raw, FORCE_RAW, T0_US + 10000ULL * k);
 }
 
-int main(void)
+/* n corners on the legacy inputs, stored as the app's calibration */
+static int store_corners(uint32_t n)
 {
+	static calib_t cal;
+	static uint8_t block[CALIB_BLOCK_LEN];
+	calib_corner_t c0;
+
+	calib_default(&cal);
+	if (calib_corner_view(&cal, 0U, &c0, &cal.inputs[0], &cal.inputs[1]) != SQ_OK) {
+		return SQ_EINVAL;
+	}
+	cal.n_inputs = 2U;
+	cal.n_corners = (uint8_t)n;
+	for (uint32_t k = 0U; k < n; k++) {
+		calib_corner_defaults(&cal, (uint8_t)k, &cal.corners[k]);
+		cal.corners[k].speed_input = 0U;
+		cal.corners[k].force_input = 1U;
+	}
+	if (calib_encode(&cal, block, sizeof(block)) != SQ_OK) {
+		return SQ_EINVAL;
+	}
+	test_hal_calib_store(block, sizeof(block));
+	return SQ_OK;
+}
+
+int main(int argc, char **argv)
+{
+	const uint32_t corners = (argc > 1) ? (uint32_t)strtoul(argv[1], NULL, 10) : 1U;
 	static const uint16_t dwell[3] = { 2500U, 1250U, 900U }; /* 3, 1.5, 1.08 m/s */
 	uint32_t k = 0U;
 	uint32_t polls = 0U;
@@ -43,7 +75,12 @@ int main(void)
 	test_hal_reset();
 	test_hal_set_time_us(T0_US);
 	test_sender_init(&snd);
-	if (squeal_app_init() != SQ_OK) {
+	if ((corners < 1U) || (corners > CALIB_MAX_CORNERS) ||
+	    ((corners > 1U) && (store_corners(corners) != SQ_OK))) {
+		fprintf(stderr, "corners 1..4\n");
+		return 1;
+	}
+	if ((squeal_app_init() != SQ_OK) || (squeal_app_corner_count() != corners)) {
 		fprintf(stderr, "init failed\n");
 		return 1;
 	}
@@ -72,10 +109,14 @@ int main(void)
 		polls++;
 		test_hal_advance_us(1000U);
 	}
-	printf("polls %u, input pairs %u, classifications %u, state changes %u, "
-	       "frames sent %u, final state %u\n", polls, n_frames,
+	printf("corners %u, polls %u, input pairs %u, classifications %u, state changes %u, "
+	       "frames sent %u, final state %u\n", corners, polls, n_frames,
 	       squeal_app_monitor()->count.classifications,
 	       squeal_app_monitor()->count.state_changes, test_hal_tx_count(),
 	       squeal_app_monitor()->state);
+	for (uint32_t c = 1U; c < corners; c++) {
+		printf("  corner %u: classifications %u, final state %u\n", c,
+		       squeal_app_corner(c)->count.classifications, squeal_app_corner(c)->state);
+	}
 	return 0;
 }

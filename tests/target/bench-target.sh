@@ -33,7 +33,9 @@ for m in "M4F-float netduinoplus2 build/tv-m4f/model-vectors.elf build/bench-m4f
 	set -- $m
 	name=$1 machine=$2 tv=$3 bs=$4
 	t=$(qemu "$machine" "$tv" | grep '^TIMING')
-	b=$(qemu "$machine" "$bs" | grep '^BENCH')
+	out=$(qemu "$machine" "$bs")
+	b=$(echo "$out" | grep '^BENCH ')
+	b4=$(echo "$out" | grep '^BENCH4 ')
 	if [ -z "$t" ] || [ -z "$b" ]; then
 		echo "$name: run failed"; continue
 	fi
@@ -51,5 +53,12 @@ for m in "M4F-float netduinoplus2 build/tv-m4f/model-vectors.elf build/bench-m4f
 		printf "%s   with input frames + classification: mean %6.0f (%d steps, %d classifications)\n",
 			name, (sft / sf - ov) * kb, sf, cls
 		printf "%s   without frames: mean %6.0f\n", name, ((stot - sft) / (steps - sf) - ov) * kb
+	}'
+	[ -n "$b4" ] && awk -v name="$name" -v cali="$(kv "$b4" cal_insns)" -v bcal="$(kv "$b4" cal_ticks)" \
+	    -v steps="$(kv "$b4" steps)" -v stot="$(kv "$b4" ticks_total)" -v smax="$(kv "$b4" ticks_max)" \
+	    -v ov="$(kv "$b4" overhead_ticks)" -v cls="$(kv "$b4" classifications)" 'BEGIN {
+		kb = cali / bcal
+		printf "%s 1 ms step, 4 corners: mean %6.0f  max %6.0f instructions (%d steps, %d classifications)\n",
+			name, (stot / steps - ov) * kb, (smax - ov) * kb, steps, cls
 	}'
 done

@@ -68,7 +68,7 @@ static void store(const calib_t *cal)
 /* The app's calibration, as the block it would store. */
 static void app_block(uint8_t *buf)
 {
-	assert_int_equal(calib_encode(&squeal_app_monitor()->cal, buf, CALIB_BLOCK_LEN), SQ_OK);
+	assert_int_equal(calib_encode(squeal_app_monitor()->cal, buf, CALIB_BLOCK_LEN), SQ_OK);
 }
 
 static void default_block(uint8_t *buf)

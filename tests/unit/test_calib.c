@@ -208,12 +208,22 @@ static void test_block_layout(void **state)
 	uint8_t buf[CALIB_BLOCK_LEN];
 
 	(void)state;
-	assert_int_equal(CALIB_BLOCK_LEN, 106);
+	/* version 2: the 99 bytes of v1 (header + fields), then input_bus,
+	 * output_bus, input_listen_only, n_inputs, n_corners, 8 inputs x 82
+	 * and 4 corners x 57 bytes, then the CRC: 99 + 3 + 2 + 656 + 228 = 988,
+	 * block 992 */
+	assert_int_equal(CALIB_VERSION, 2);
+	assert_int_equal(CALIB_BLOCK_LEN, 992);
 	encode_default(buf);
 	assert_memory_equal(buf, "SQCB", 4);
 	assert_int_equal(get_le(&buf[4], 2U), CALIB_VERSION);
 	assert_int_equal(get_le(&buf[6], 2U), CALIB_BLOCK_LEN);
-	assert_int_equal(get_le(&buf[102], 4U), ref_crc32(buf, 102U));
+	assert_int_equal(buf[99], 0);  /* input bus 0 */
+	assert_int_equal(buf[100], 0); /* output bus 0 */
+	assert_int_equal(buf[101], 0); /* normal mode */
+	assert_int_equal(buf[102], 0); /* no input map: the legacy corner */
+	assert_int_equal(buf[103], 0);
+	assert_int_equal(get_le(&buf[988], 4U), ref_crc32(buf, 988U));
 }
 
 /* ---- round trip ---------------------------------------------------------------- */

@@ -48,7 +48,7 @@ static uint32_t collect(monitor_t *m, uint64_t *now, uint32_t seconds, uint8_t p
 		*now += 1000U;
 		monitor_step(m, *now);
 		while (monitor_peek_tx(m, &f) == SQ_OK) {
-			if (f.id == m->cal.diag_id) {
+			if (f.id == m->corner.diag_id) {
 				uint32_t p = bits(f.data, 12U, 4U);
 
 				assert_true(p < 5U);

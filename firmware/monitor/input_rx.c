@@ -1,0 +1,236 @@
+/* SPDX-License-Identifier: MIT */
+#include "input_rx.h"
+
+#include <stddef.h>
+
+#include "calib_map.h"
+#include "e2e_p02.h"
+#include "sq_status.h"
+
+#define POW10_MAX 9 /* 10^9 x 2^31 < 2^63 */
+
+static const char *const reason_names[INPUT_RX_REASON_COUNT] = {
+	"ok", "dlc", "na", "qualifier", "crc", "counter", "repeated", "implausible"
+};
+
+const char *input_rx_reason_name(input_rx_reason_t r)
+{
+	return ((uint32_t)r < (uint32_t)INPUT_RX_REASON_COUNT) ? reason_names[r] : "?";
+}
+
+/* mant x 10^(exp - e0) for exp >= e0, or false when it would overflow */
+static bool dec_scaled(calib_dec_t d, int32_t e0, int64_t *out)
+{
+	int64_t v = d.mant;
+	int32_t i;
+
+	if ((int32_t)d.exp - e0 > POW10_MAX) {
+		return false;
+	}
+	for (i = e0; i < (int32_t)d.exp; i++) {
+		v *= 10;
+	}
+	*out = v;
+	return true;
+}
+
+static int64_t floor_div(int64_t n, int64_t d)
+{
+	int64_t q = n / d;
+
+	if (((n % d) != 0) && ((n < 0) != (d < 0))) {
+		q--;
+	}
+	return q;
+}
+
+static int64_t ceil_div(int64_t n, int64_t d)
+{
+	return -floor_div(-n, d);
+}
+
+static int32_t min_exp(int32_t a, int32_t b)
+{
+	return (a < b) ? a : b;
+}
+
+/* Plausible raw range: min <= raw x F + O <= max; |d raw| x |F| <= step. */
+static int raw_bounds(const calib_input_t *in, input_rx_cfg_t *cfg)
+{
+	const int32_t e0 = min_exp(min_exp(in->max.exp, in->min.exp),
+				   min_exp(min_exp(in->offset.exp, in->factor.exp), in->step_max.exp));
+	int64_t mx;
+	int64_t mn;
+	int64_t o;
+	int64_t f;
+	int64_t st;
+
+	if (!dec_scaled(in->max, e0, &mx) || !dec_scaled(in->min, e0, &mn) ||
+	    !dec_scaled(in->offset, e0, &o) || !dec_scaled(in->factor, e0, &f) ||
+	    !dec_scaled(in->step_max, e0, &st) || (f == 0)) {
+		return SQ_EINVAL;
+	}
+	if (f > 0) {
+		cfg->raw_min = ceil_div(mn - o, f);
+		cfg->raw_max = floor_div(mx - o, f);
+	} else {
+		cfg->raw_min = ceil_div(mx - o, f);
+		cfg->raw_max = floor_div(mn - o, f);
+	}
+	cfg->raw_step = floor_div(st, (f > 0) ? f : -f);
+	return SQ_OK;
+}
+
+int input_rx_setup(const calib_input_t *desc, const input_geom_t *geom,
+		   input_rx_cfg_t *cfg)
+{
+	const char *why = NULL;
+
+	if ((desc == NULL) || (geom == NULL) || (cfg == NULL) ||
+	    (calib_input_check(desc, &why) != SQ_OK)) {
+		return SQ_EINVAL;
+	}
+	cfg->desc = *desc;
+	if ((input_conv_make(desc->factor.mant, desc->factor.exp, desc->offset.mant,
+			     desc->offset.exp, (input_unit_t)desc->unit, geom,
+			     &cfg->conv) != SQ_OK) ||
+	    (raw_bounds(desc, cfg) != SQ_OK)) {
+		return SQ_EINVAL;
+	}
+	return SQ_OK;
+}
+
+bool input_rx_matches(const input_rx_cfg_t *cfg, const hal_can_frame_t *f, bool *id_only)
+{
+	const calib_input_t *in = &cfg->desc;
+	const bool ext = (f->flags & HAL_CAN_FLAG_EXT) != 0U;
+	const bool want_ext = (in->flags & CALIB_IN_EXTENDED) != 0U;
+
+	*id_only = false;
+	if (f->id != in->id) {
+		return false;
+	}
+	if ((ext != want_ext) || ((f->flags & HAL_CAN_FLAG_RTR) != 0U)) {
+		*id_only = true;
+		return false;
+	}
+	if (((in->flags & CALIB_IN_MUX) != 0U) && (f->dlc >= can_signal_min_dlc(&in->mux))) {
+		return can_signal_get(&in->mux, f->data) == in->mux_value;
+	}
+	return true;
+}
+
+/* The protection's verdict; *st the E2E status. */
+static input_rx_reason_t protection(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e,
+				    const hal_can_frame_t *f, bool dlc_ok,
+				    e2e_p01_status_t *st)
+{
+	const calib_input_t *in = &cfg->desc;
+	/* with a bad DLC the check still runs once with the configured length
+	 * (it fails): one receive cycle of the E2E state machine, as always */
+	const uint8_t len = dlc_ok ? f->dlc : in->min_dlc;
+
+	switch (in->protection) {
+	case CALIB_PROT_P01: {
+		const e2e_p01_config_t c = { in->data_id, len, in->max_delta_counter };
+
+		*st = e2e_p01_check(&c, e2e, f->data, f->dlc);
+		break;
+	}
+	case CALIB_PROT_P02: {
+		e2e_p02_config_t c;
+		uint32_t i;
+
+		for (i = 0U; i < CALIB_DATA_ID_LIST_LEN; i++) {
+			c.data_id_list[i] = in->data_id_list[i];
+		}
+		c.data_len = len;
+		c.max_delta_counter = in->max_delta_counter;
+		*st = e2e_p02_check(&c, e2e, f->data, f->dlc);
+		break;
+	}
+	case CALIB_PROT_COUNTER:
+		e2e_rx_cycle(e2e, in->counter_modulus);
+		if (!dlc_ok) {
+			*st = e2e_rx_record(e2e, E2E_P01_STATUS_NONEWDATA);
+		} else {
+			const uint32_t c = can_signal_get(&in->counter, f->data);
+
+			*st = (c >= in->counter_modulus) ? E2E_P01_STATUS_WRONGSEQUENCE :
+				e2e_rx_sequence(e2e, (uint8_t)c, in->counter_modulus,
+						in->max_delta_counter);
+			(void)e2e_rx_record(e2e, *st);
+		}
+		break;
+	default:
+		*st = E2E_P01_STATUS_NONEWDATA;
+		return INPUT_RX_OK;
+	}
+	switch (*st) {
+	case E2E_P01_STATUS_OK:
+	case E2E_P01_STATUS_INITIAL:
+	case E2E_P01_STATUS_OKSOMELOST:
+		return INPUT_RX_OK;
+	case E2E_P01_STATUS_REPEATED:
+		return INPUT_RX_REPEATED;
+	case E2E_P01_STATUS_WRONGSEQUENCE:
+		return INPUT_RX_COUNTER;
+	default:
+		return INPUT_RX_CRC;
+	}
+}
+
+input_rx_result_t input_rx_frame(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e,
+				 const hal_can_frame_t *f)
+{
+	const calib_input_t *in = &cfg->desc;
+	input_rx_result_t r = { (uint8_t)INPUT_RX_OK, (uint8_t)E2E_P01_STATUS_NONEWDATA, 0U, 0U, 0 };
+	bool dlc_ok;
+	e2e_p01_status_t st = E2E_P01_STATUS_NONEWDATA;
+	input_rx_reason_t why;
+
+	if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
+		dlc_ok = f->dlc == in->min_dlc;
+	} else {
+		dlc_ok = (f->dlc >= in->min_dlc) && (f->dlc <= CAN_SIGNAL_FRAME_BYTES);
+	}
+	why = protection(cfg, e2e, f, dlc_ok, &st);
+
+	r.e2e_status = (uint8_t)st;
+	r.lost = (st == E2E_P01_STATUS_OKSOMELOST) ? e2e->lost_data : 0U;
+	if (!dlc_ok) {
+		r.reason = (uint8_t)INPUT_RX_DLC;
+		return r;
+	}
+	r.raw = can_signal_get(&in->sig, f->data);
+	r.value = can_signal_value(&in->sig, r.raw);
+	if (why == INPUT_RX_OK) {
+		if ((((in->flags & CALIB_IN_NA) != 0U) && (r.raw == in->na_raw)) ||
+		    (((in->flags & CALIB_IN_NA2) != 0U) && (r.raw == in->na_raw2))) {
+			why = INPUT_RX_NA;
+		} else if (((in->flags & CALIB_IN_QUALIFIER) != 0U) &&
+			   ((uint32_t)((f->data[in->qualifier_bit / 8U] >> (in->qualifier_bit % 8U)) & 1U) ==
+			    in->qualifier_invalid)) {
+			why = INPUT_RX_QUALIFIER;
+		} else {
+			/* usable so far */
+		}
+	}
+	r.reason = (uint8_t)why;
+	return r;
+}
+
+bool input_rx_plausible(const input_rx_cfg_t *cfg, bool *has_prev, int64_t *prev,
+			int64_t value)
+{
+	bool ok = (value >= cfg->raw_min) && (value <= cfg->raw_max);
+
+	if (ok && *has_prev) {
+		const int64_t d = (value > *prev) ? (value - *prev) : (*prev - value);
+
+		ok = d <= cfg->raw_step;
+	}
+	*prev = value;
+	*has_prev = true;
+	return ok;
+}

@@ -1,0 +1,67 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * can_signal: one signal of a classic CAN frame, described the way a DBC
+ * file describes it, and the raw value it carries. One code path for every
+ * message: the same descriptor type reads DiscSpeed_radps, a vehicle's
+ * wheel speed or a brake pressure (shared/vehicle-bus.md).
+ *
+ * Bit numbering (DBC): bit j of byte i is number 8 i + j, j = 7 the MSB.
+ *   Intel    (@1): start_bit is the LSB; the signal takes the numbers
+ *                  start .. start + length - 1.
+ *   Motorola (@0): start_bit is the MSB; from there the signal runs down to
+ *                  bit 0 of that byte and goes on at bit 7 of the next byte
+ *                  (the "sawtooth"): 22|15@0 takes 22..16, then 31..24.
+ * Raw values are 1..32 bits; signed raws are two's complement.
+ */
+#ifndef CAN_SIGNAL_H
+#define CAN_SIGNAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#define CAN_SIGNAL_MAX_LEN 32U
+#define CAN_SIGNAL_FRAME_BYTES 8U
+
+/* can_signal_t.byte_order */
+#define CAN_SIGNAL_INTEL    0U /* DBC @1 */
+#define CAN_SIGNAL_MOTOROLA 1U /* DBC @0 */
+
+typedef struct {
+	uint8_t start_bit;   /* DBC start bit, 0..63                          */
+	uint8_t length;      /* 1..32                                         */
+	uint8_t byte_order;  /* CAN_SIGNAL_INTEL or CAN_SIGNAL_MOTOROLA        */
+	uint8_t is_signed;   /* 1: two's complement                           */
+} can_signal_t;
+
+/*
+ * The smallest DLC that holds every bit of the signal (1..8), or 0 when the
+ * descriptor is bad: length 0 or > 32, start bit > 63, byte order unknown,
+ * or a bit beyond the 64 bits of a classic frame.
+ */
+uint8_t can_signal_min_dlc(const can_signal_t *sig);
+
+/* True when sig is a usable descriptor (can_signal_min_dlc() != 0). */
+bool can_signal_valid(const can_signal_t *sig);
+
+/* True when the two signals share a bit (both must be valid). */
+bool can_signal_overlap(const can_signal_t *a, const can_signal_t *b);
+
+/*
+ * The raw bits of sig in data (the frame's 8 bytes; bytes at or beyond the
+ * DLC are the caller's business: check the DLC against min_dlc first).
+ * Unsigned: 0 .. 2^length - 1. A bad descriptor (validated at configuration) reads 0.
+ */
+uint32_t can_signal_get(const can_signal_t *sig, const uint8_t data[8]);
+
+/* raw as a number: sign-extended when sig is signed. */
+int64_t can_signal_value(const can_signal_t *sig, uint32_t raw);
+
+/* The inverse: write the low `length` bits of raw into data at sig's
+ * position; every other bit is kept. */
+void can_signal_put(const can_signal_t *sig, uint8_t data[8], uint32_t raw);
+
+/* Every value of a signal, as raw bits: signed values are truncated to
+ * two's complement in `length` bits. */
+uint32_t can_signal_raw_of(const can_signal_t *sig, int64_t value);
+
+#endif /* CAN_SIGNAL_H */

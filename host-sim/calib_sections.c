@@ -1,0 +1,991 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * calib_sections: see calib_sections.h. The meaning of a finished input or
+ * corner is checked by the firmware's own calib_map.c, so the text front
+ * end and the stored block cannot disagree about what is valid.
+ */
+#include "calib_sections.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "calib_map.h"
+#include "calib_text.h"
+#include "input_conv.h"
+#include "sq_status.h"
+
+static const char *const pos_names[CALIB_MAX_CORNERS] = { "FL", "FR", "RL", "RR" };
+static const char *const prot_names[CALIB_PROT_COUNT] = { "none", "p01", "p02", "counter" };
+
+void calib_sections_init(calib_sections_t *s)
+{
+	memset(s, 0, sizeof(*s));
+}
+
+bool calib_sections_open(const calib_sections_t *s)
+{
+	return s->count > 0U;
+}
+
+/* ---- numbers ---------------------------------------------------------------- */
+
+bool calib_dec_parse(const char *text, calib_dec_t *out)
+{
+	const char *p = text;
+	bool neg = false;
+	int64_t mant = 0;
+	int32_t exp = 0;
+	int digits = 0;
+	bool dot = false;
+
+	if ((*p == '+') || (*p == '-')) {
+		neg = (*p == '-');
+		p++;
+	}
+	if (!isdigit((unsigned char)*p) && !((*p == '.') && isdigit((unsigned char)p[1]))) {
+		return false;
+	}
+	for (; (*p != '\0') && (*p != 'e') && (*p != 'E'); p++) {
+		if (*p == '.') {
+			if (dot) {
+				return false;
+			}
+			dot = true;
+			continue;
+		}
+		if (!isdigit((unsigned char)*p)) {
+			return false;
+		}
+		if ((mant == 0) && (*p == '0')) {
+			if (dot) {
+				exp--;
+			}
+			continue;
+		}
+		if (digits >= 9) {
+			/* beyond 9 significant digits only zeros are exact */
+			if (*p != '0') {
+				return false;
+			}
+			if (!dot) {
+				exp++;
+			}
+			continue;
+		}
+		mant = mant * 10 + (*p - '0');
+		digits++;
+		if (dot) {
+			exp--;
+		}
+	}
+	if ((*p == 'e') || (*p == 'E')) {
+		char *end = NULL;
+		long e;
+
+		errno = 0;
+		e = strtol(p + 1, &end, 10);
+		if ((errno != 0) || (end == p + 1) || (*end != '\0') || (e < -40) || (e > 40)) {
+			return false;
+		}
+		exp += (int32_t)e;
+	}
+	while ((mant != 0) && ((mant % 10) == 0)) {
+		mant /= 10;
+		exp++;
+	}
+	if (mant == 0) {
+		exp = 0;
+	}
+	if ((exp < -12) || (exp > 12) || (mant > INT32_MAX)) {
+		return false;
+	}
+	out->mant = (int32_t)(neg ? -mant : mant);
+	out->exp = (int8_t)exp;
+	return true;
+}
+
+void calib_dec_format(calib_dec_t d, char *buf, size_t len)
+{
+	char digits[16];
+	const bool neg = d.mant < 0;
+	const long long m = neg ? -(long long)d.mant : (long long)d.mant;
+	int n;
+
+	if (d.exp >= 0) {
+		snprintf(buf, len, "%s%lld%.*s", neg ? "-" : "", m, d.exp, "000000000000");
+		return;
+	}
+	n = snprintf(digits, sizeof(digits), "%lld", m);
+	if (n > -d.exp) {
+		snprintf(buf, len, "%s%.*s.%s", neg ? "-" : "", n + d.exp, digits,
+			 digits + n + d.exp);
+	} else {
+		snprintf(buf, len, "%s0.%.*s%s", neg ? "-" : "", -d.exp - n, "000000000000",
+			 digits);
+	}
+}
+
+double calib_dec_value(calib_dec_t d)
+{
+	return (double)d.mant * pow(10.0, d.exp);
+}
+
+static bool parse_bool(const char *t, uint8_t *out)
+{
+	if ((strcmp(t, "1") == 0) || (strcasecmp(t, "yes") == 0) || (strcasecmp(t, "true") == 0)) {
+		*out = 1U;
+		return true;
+	}
+	if ((strcmp(t, "0") == 0) || (strcasecmp(t, "no") == 0) || (strcasecmp(t, "false") == 0)) {
+		*out = 0U;
+		return true;
+	}
+	return false;
+}
+
+static bool parse_order(const char *t, uint8_t *out)
+{
+	if (strcasecmp(t, "intel") == 0) {
+		*out = (uint8_t)CAN_SIGNAL_INTEL;
+		return true;
+	}
+	if (strcasecmp(t, "motorola") == 0) {
+		*out = (uint8_t)CAN_SIGNAL_MOTOROLA;
+		return true;
+	}
+	return false;
+}
+
+/* ---- lines --------------------------------------------------------------------- */
+
+static bool valid_name(const char *n)
+{
+	size_t i;
+	const size_t len = strlen(n);
+
+	if ((len == 0U) || (len >= CALIB_SECTION_NAME_LEN)) {
+		return false;
+	}
+	for (i = 0; i < len; i++) {
+		if (!isalnum((unsigned char)n[i]) && (n[i] != '_')) {
+			return false;
+		}
+	}
+	return true;
+}
+
+static int pos_of(const char *n)
+{
+	int i;
+
+	for (i = 0; i < (int)CALIB_MAX_CORNERS; i++) {
+		if (strcasecmp(n, pos_names[i]) == 0) {
+			return i;
+		}
+	}
+	return -1;
+}
+
+int calib_sections_header(calib_sections_t *s, const char *text, unsigned int line,
+			  char *msg, size_t msglen)
+{
+	char kind[16];
+	char name[64];
+	char extra[8];
+	calib_section_t *sec;
+	unsigned int i;
+	int n;
+
+	n = sscanf(text, "[%15s %63[^] \t] ]%7s", kind, name, extra);
+	if ((n != 2) || (text[strlen(text) - 1U] != ']')) {
+		calib_text_errf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
+		return -1;
+	}
+	if ((strcmp(kind, "input") != 0) && (strcmp(kind, "corner") != 0)) {
+		calib_text_errf(msg, msglen, "unknown section '%s' (input or corner)", kind);
+		return -1;
+	}
+	if (s->count >= CALIB_SECTIONS_MAX) {
+		calib_text_errf(msg, msglen, "too many sections");
+		return -1;
+	}
+	if (strcmp(kind, "input") == 0) {
+		if (!valid_name(name)) {
+			calib_text_errf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
+			return -1;
+		}
+		if (s->inputs >= CALIB_MAX_INPUTS) {
+			calib_text_errf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
+			return -1;
+		}
+	} else {
+		if (pos_of(name) < 0) {
+			calib_text_errf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
+			return -1;
+		}
+	}
+	for (i = 0; i < s->count; i++) {
+		const calib_section_t *o = &s->sec[i];
+
+		if ((o->is_corner == (strcmp(kind, "corner") == 0)) &&
+		    (strcasecmp(o->name, name) == 0)) {
+			calib_text_errf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
+			return -1;
+		}
+	}
+	sec = &s->sec[s->count];
+	memset(sec, 0, sizeof(*sec));
+	sec->is_corner = strcmp(kind, "corner") == 0;
+	{
+		/* valid_name()/pos_of() bounded the length */
+		const size_t len = strnlen(name, sizeof(sec->name) - 1U);
+
+		memcpy(sec->name, name, len);
+		sec->name[len] = '\0';
+	}
+	sec->line = line;
+	s->count++;
+	if (sec->is_corner) {
+		s->corners++;
+	} else {
+		s->inputs++;
+	}
+	return 0;
+}
+
+int calib_sections_key(calib_sections_t *s, const char *key, const char *value,
+		       unsigned int line, char *msg, size_t msglen)
+{
+	calib_section_t *sec = &s->sec[s->count - 1U];
+	unsigned int i;
+
+	for (i = 0; i < sec->nkv; i++) {
+		if (strcmp(sec->kv[i].key, key) == 0) {
+			calib_text_errf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
+			     sec->kv[i].line);
+			return -1;
+		}
+	}
+	if ((sec->nkv >= CALIB_SECTION_KEYS_MAX) || (strlen(key) >= sizeof(sec->kv[0].key)) ||
+	    (strlen(value) >= sizeof(sec->kv[0].value))) {
+		calib_text_errf(msg, msglen, "key or value too long, or too many keys in the section");
+		return -1;
+	}
+	snprintf(sec->kv[sec->nkv].key, sizeof(sec->kv[0].key), "%s", key);
+	snprintf(sec->kv[sec->nkv].value, sizeof(sec->kv[0].value), "%s", value);
+	sec->kv[sec->nkv].line = line;
+	sec->nkv++;
+	return 0;
+}
+
+/* ---- inputs ---------------------------------------------------------------------- */
+
+typedef struct {
+	const calib_section_t *sec;
+	const char *file;
+	char *err;
+	size_t errlen;
+} ctx_t;
+
+static const calib_section_kv_t *kv_of(const calib_section_t *sec, const char *key)
+{
+	unsigned int i;
+
+	for (i = 0; i < sec->nkv; i++) {
+		if (strcmp(sec->kv[i].key, key) == 0) {
+			return &sec->kv[i];
+		}
+	}
+	return NULL;
+}
+
+static int kv_err(const ctx_t *c, const calib_section_kv_t *kv, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+
+static int kv_err(const ctx_t *c, const calib_section_kv_t *kv, const char *fmt, ...)
+{
+	char m[200];
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(m, sizeof(m), fmt, ap);
+	va_end(ap);
+	calib_text_errf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
+	     c->sec->is_corner ? "corner" : "input", c->sec->name, m);
+	return -1;
+}
+
+/* An integer key in [lo, hi]; *present says whether it was given. */
+static int get_int(const ctx_t *c, const char *key, int64_t lo, int64_t hi, bool required,
+		   int64_t *out, bool *present)
+{
+	const calib_section_kv_t *kv = kv_of(c->sec, key);
+
+	if (present != NULL) {
+		*present = kv != NULL;
+	}
+	if (kv == NULL) {
+		return required ? kv_err(c, NULL, "%s is required", key) : 0;
+	}
+	if (!calib_text_parse_int(kv->value, out)) {
+		return kv_err(c, kv, "%s needs an integer (decimal or 0x hex), got '%s'", key,
+			      kv->value);
+	}
+	if ((*out < lo) || (*out > hi)) {
+		return kv_err(c, kv, "%s = %s is out of range (%" PRId64 " .. %" PRId64 ")", key,
+			      kv->value, lo, hi);
+	}
+	return 0;
+}
+
+static int get_u8(const ctx_t *c, const char *key, int64_t lo, int64_t hi, bool required,
+		  uint8_t *out)
+{
+	int64_t v = *out;
+	bool present = false;
+
+	if (get_int(c, key, lo, hi, required, &v, &present) != 0) {
+		return -1;
+	}
+	*out = (uint8_t)v;
+	return 0;
+}
+
+static int get_bool(const ctx_t *c, const char *key, uint8_t *out, bool *present)
+{
+	const calib_section_kv_t *kv = kv_of(c->sec, key);
+
+	*present = kv != NULL;
+	if ((kv != NULL) && !parse_bool(kv->value, out)) {
+		return kv_err(c, kv, "%s must be yes or no, got '%s'", key, kv->value);
+	}
+	return 0;
+}
+
+static int get_order(const ctx_t *c, const char *key, bool required, uint8_t *out)
+{
+	const calib_section_kv_t *kv = kv_of(c->sec, key);
+
+	if (kv == NULL) {
+		return required ? kv_err(c, NULL, "%s is required (intel or motorola)", key) : 0;
+	}
+	if (!parse_order(kv->value, out)) {
+		return kv_err(c, kv, "%s must be intel or motorola, got '%s'", key, kv->value);
+	}
+	return 0;
+}
+
+static int get_dec(const ctx_t *c, const char *key, bool required, calib_dec_t *out)
+{
+	const calib_section_kv_t *kv = kv_of(c->sec, key);
+
+	if (kv == NULL) {
+		return required ? kv_err(c, NULL, "%s is required", key) : 0;
+	}
+	if (!calib_dec_parse(kv->value, out)) {
+		return kv_err(c, kv, "%s needs a decimal number (at most 9 significant digits, exponent -12..12), got '%s'",
+			      key, kv->value);
+	}
+	return 0;
+}
+
+static int get_signal(const ctx_t *c, const char *prefix, bool required, can_signal_t *sig,
+		      bool *present)
+{
+	char k1[32];
+	char k2[32];
+	char k3[32];
+	int64_t v = 0;
+	bool p1 = false;
+	bool p2 = false;
+
+	snprintf(k1, sizeof(k1), "%sstart_bit", prefix);
+	snprintf(k2, sizeof(k2), "%slength", prefix);
+	snprintf(k3, sizeof(k3), "%sbyte_order", prefix);
+	if (get_int(c, k1, 0, 63, required, &v, &p1) != 0) {
+		return -1;
+	}
+	sig->start_bit = (uint8_t)v;
+	if (get_int(c, k2, 0, 255, required, &v, &p2) != 0) {
+		return -1;
+	}
+	sig->length = (uint8_t)v;
+	if ((p2) && ((v == 0) || (v > 32))) {
+		return kv_err(c, kv_of(c->sec, k2), "%s = %" PRId64 ": zero length or over 32 bits",
+			      k2, v);
+	}
+	if (get_order(c, k3, required, &sig->byte_order) != 0) {
+		return -1;
+	}
+	*present = p1 || p2 || (kv_of(c->sec, k3) != NULL);
+	if (*present && !(p1 && p2 && (kv_of(c->sec, k3) != NULL))) {
+		return kv_err(c, NULL, "%sstart_bit, %slength and %sbyte_order go together",
+			      prefix, prefix, prefix);
+	}
+	if (*present && !can_signal_valid(sig)) {
+		return kv_err(c, kv_of(c->sec, k1), "%s signal runs beyond the 64 bits of a frame",
+			      prefix[0] != '\0' ? prefix : "value");
+	}
+	return 0;
+}
+
+static int get_dil(const ctx_t *c, calib_input_t *in)
+{
+	const calib_section_kv_t *kv = kv_of(c->sec, "data_id_list");
+	char buf[CALIB_SECTION_VALUE_LEN];
+	char *save = NULL;
+	char *tok;
+	unsigned int n = 0;
+
+	if (kv == NULL) {
+		return kv_err(c, NULL, "data_id_list is required for p02 (16 bytes)");
+	}
+	snprintf(buf, sizeof(buf), "%s", kv->value);
+	for (tok = strtok_r(buf, " \t,", &save); tok != NULL; tok = strtok_r(NULL, " \t,", &save)) {
+		int64_t v;
+
+		if ((n >= CALIB_DATA_ID_LIST_LEN) || !calib_text_parse_int(tok, &v) || (v < 0) || (v > 255)) {
+			return kv_err(c, kv, "data_id_list: 16 byte values 0..255 separated by blanks or commas");
+		}
+		in->data_id_list[n] = (uint8_t)v;
+		n++;
+	}
+	if (n != CALIB_DATA_ID_LIST_LEN) {
+		return kv_err(c, kv, "data_id_list: 16 byte values 0..255 separated by blanks or commas");
+	}
+	return 0;
+}
+
+static const char *const input_keys[] = {
+	"id", "extended", "min_dlc", "exact_dlc", "start_bit", "length", "byte_order", "signed",
+	"factor", "offset", "unit", "mux_start_bit", "mux_length", "mux_byte_order",
+	"mux_value", "na_raw", "na_raw2", "qualifier_bit", "qualifier_invalid", "protection",
+	"data_id", "data_id_list", "counter_start_bit", "counter_length",
+	"counter_byte_order", "counter_modulus", "max_delta_counter", "period_ms",
+	"stale_cycles", "max", "min", "step_max", NULL
+};
+
+static const char *const corner_keys[] = {
+	"speed", "force", "piston_area_mm2", "efficiency", "axle_factor", "friction_faces",
+	"mass_kg", "omega0_radps", "damping", "mu_inf", "delta_mu", "slope_spm", "criterion",
+	"pad_radius_m", "wheel_radius_m", "status_id", "detail_id", "detail2_id", "diag_id",
+	NULL
+};
+
+static int unknown_keys(const ctx_t *c, const char *const *known)
+{
+	unsigned int i;
+
+	for (i = 0; i < c->sec->nkv; i++) {
+		size_t j;
+		bool ok = false;
+
+		for (j = 0; known[j] != NULL; j++) {
+			ok = ok || (strcmp(known[j], c->sec->kv[i].key) == 0);
+		}
+		if (!ok) {
+			return kv_err(c, &c->sec->kv[i], "unknown key '%s' (docs/calib-input-map.md)",
+				      c->sec->kv[i].key);
+		}
+	}
+	return 0;
+}
+
+/* The line of the key a calib_input_check() message is about. */
+static const calib_section_kv_t *blame(const ctx_t *c, const char *why)
+{
+	static const char *const keys[] = { "min_dlc", "max_delta_counter", "counter_modulus",
+		"mux_value", "qualifier", "na_raw", "step_max", "period_ms", "factor",
+		"length", "id", NULL };
+	size_t i;
+
+	for (i = 0; keys[i] != NULL; i++) {
+		if (strstr(why, keys[i]) != NULL) {
+			const calib_section_kv_t *kv = kv_of(c->sec, keys[i]);
+
+			if ((kv == NULL) && (strcmp(keys[i], "qualifier") == 0)) {
+				kv = kv_of(c->sec, "qualifier_bit");
+			}
+			return kv;
+		}
+	}
+	return NULL;
+}
+
+static int build_input(const ctx_t *c, calib_input_t *in)
+{
+	int64_t v = 0;
+	bool present = false;
+	uint8_t b = 0U;
+	const calib_section_kv_t *kv;
+	input_unit_t unit;
+	const char *why = NULL;
+	uint8_t need;
+
+	memset(in, 0, sizeof(*in));
+	in->max_delta_counter = 2U;
+	in->stale_cycles = 3U;
+	in->qualifier_invalid = 1U;
+	if (unknown_keys(c, input_keys) != 0) {
+		return -1;
+	}
+	if (get_int(c, "id", 0, 0x1FFFFFFF, true, &v, NULL) != 0) {
+		return -1;
+	}
+	in->id = (uint32_t)v;
+	if (get_bool(c, "extended", &b, &present) != 0) {
+		return -1;
+	}
+	if (present && (b != 0U)) {
+		in->flags |= CALIB_IN_EXTENDED;
+	}
+	if ((in->id > 0x7FFU) && ((in->flags & CALIB_IN_EXTENDED) == 0U)) {
+		return kv_err(c, kv_of(c->sec, "id"), "id 0x%" PRIX32 " is above 0x7FF: needs extended = yes",
+			      in->id);
+	}
+	if (get_bool(c, "exact_dlc", &b, &present) != 0) {
+		return -1;
+	}
+	if (present && (b != 0U)) {
+		in->flags |= CALIB_IN_DLC_EXACT;
+	}
+	if (get_signal(c, "", true, &in->sig, &present) != 0) {
+		return -1;
+	}
+	if (get_bool(c, "signed", &in->sig.is_signed, &present) != 0) {
+		return -1;
+	}
+	if (get_dec(c, "factor", true, &in->factor) != 0) {
+		return -1;
+	}
+	if (in->factor.mant == 0) {
+		return kv_err(c, kv_of(c->sec, "factor"), "factor 0");
+	}
+	if (get_dec(c, "offset", false, &in->offset) != 0) {
+		return -1;
+	}
+	kv = kv_of(c->sec, "unit");
+	if (kv == NULL) {
+		return kv_err(c, NULL, "unit is required (km/h kph m/s mph rad/s rpm 1/min N kN bar kPa MPa psi Nm)");
+	}
+	if (input_unit_parse(kv->value, &unit) != SQ_OK) {
+		return kv_err(c, kv, "unknown unit '%s' (km/h kph m/s mph rad/s rpm 1/min N kN bar kPa MPa psi Nm)",
+			      kv->value);
+	}
+	in->unit = (uint8_t)unit;
+	/* multiplexer: all four or none */
+	if (get_signal(c, "mux_", false, &in->mux, &present) != 0) {
+		return -1;
+	}
+	if (present != (kv_of(c->sec, "mux_value") != NULL)) {
+		return kv_err(c, NULL, "mux_start_bit, mux_length, mux_byte_order and mux_value: all four or none");
+	}
+	if (present) {
+		in->flags |= CALIB_IN_MUX;
+		if (get_int(c, "mux_value", 0, UINT32_MAX, true, &v, NULL) != 0) {
+			return -1;
+		}
+		in->mux_value = (uint32_t)v;
+		if (can_signal_overlap(&in->mux, &in->sig)) {
+			return kv_err(c, kv_of(c->sec, "mux_start_bit"),
+				      "the mux selector overlaps the value signal");
+		}
+	}
+	if (get_int(c, "na_raw", 0, UINT32_MAX, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (present) {
+		in->flags |= CALIB_IN_NA;
+		in->na_raw = (uint32_t)v;
+	}
+	if (get_int(c, "na_raw2", 0, UINT32_MAX, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (present) {
+		in->flags |= CALIB_IN_NA2;
+		in->na_raw2 = (uint32_t)v;
+	}
+	if (get_int(c, "qualifier_bit", 0, 63, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (present) {
+		in->flags |= CALIB_IN_QUALIFIER;
+		in->qualifier_bit = (uint8_t)v;
+	}
+	if (get_u8(c, "qualifier_invalid", 0, 1, false, &in->qualifier_invalid) != 0) {
+		return -1;
+	}
+	kv = kv_of(c->sec, "protection");
+	if (kv != NULL) {
+		unsigned int p;
+
+		for (p = 0; p < (unsigned int)CALIB_PROT_COUNT; p++) {
+			if (strcasecmp(kv->value, prot_names[p]) == 0) {
+				break;
+			}
+		}
+		if (p == (unsigned int)CALIB_PROT_COUNT) {
+			return kv_err(c, kv, "protection must be none, p01, p02 or counter, got '%s'",
+				      kv->value);
+		}
+		in->protection = (uint8_t)p;
+	}
+	if (in->protection == (uint8_t)CALIB_PROT_P01) {
+		if (get_int(c, "data_id", 0, 0xFFFF, true, &v, NULL) != 0) {
+			return -1;
+		}
+		in->data_id = (uint16_t)v;
+	}
+	if ((in->protection == (uint8_t)CALIB_PROT_P02) && (get_dil(c, in) != 0)) {
+		return -1;
+	}
+	if (in->protection == (uint8_t)CALIB_PROT_COUNTER) {
+		if (get_signal(c, "counter_", true, &in->counter, &present) != 0) {
+			return -1;
+		}
+		in->counter_modulus = (uint8_t)((in->counter.length <= 4U) ?
+						(1U << in->counter.length) : 16U);
+		if (get_u8(c, "counter_modulus", 2, 16, false, &in->counter_modulus) != 0) {
+			return -1;
+		}
+	}
+	if (get_u8(c, "max_delta_counter", 1, 15, false, &in->max_delta_counter) != 0) {
+		return -1;
+	}
+	if (get_int(c, "period_ms", 1, 1000, true, &v, NULL) != 0) {
+		return -1;
+	}
+	in->period_ms = (uint16_t)v;
+	if (get_u8(c, "stale_cycles", 1, 100, false, &in->stale_cycles) != 0) {
+		return -1;
+	}
+	if ((get_dec(c, "max", true, &in->max) != 0) || (get_dec(c, "min", false, &in->min) != 0) ||
+	    (get_dec(c, "step_max", true, &in->step_max) != 0)) {
+		return -1;
+	}
+	need = calib_input_needed_dlc(in);
+	in->min_dlc = need;
+	if (get_int(c, "min_dlc", 0, 8, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (present) {
+		if (v < need) {
+			return kv_err(c, kv_of(c->sec, "min_dlc"),
+				      "a signal beyond min_dlc %" PRId64 " (its bits need %u bytes)", v, need);
+		}
+		in->min_dlc = (uint8_t)v;
+	}
+	if (calib_input_check(in, &why) != SQ_OK) {
+		return kv_err(c, blame(c, why), "%s", why);
+	}
+	return 0;
+}
+
+/* ---- corners --------------------------------------------------------------------- */
+
+static int input_index(const calib_sections_t *s, const char *name)
+{
+	unsigned int i;
+	int idx = 0;
+
+	for (i = 0; i < s->count; i++) {
+		if (!s->sec[i].is_corner) {
+			if (strcmp(s->sec[i].name, name) == 0) {
+				return idx;
+			}
+			idx++;
+		}
+	}
+	return -1;
+}
+
+static int ppm_key(const ctx_t *c, const char *key, uint32_t max_ppm, uint32_t *out)
+{
+	const calib_section_kv_t *kv = kv_of(c->sec, key);
+	calib_dec_t d;
+	double v;
+
+	if (kv == NULL) {
+		return 0;
+	}
+	if (!calib_dec_parse(kv->value, &d)) {
+		return kv_err(c, kv, "%s needs a number, got '%s'", key, kv->value);
+	}
+	v = calib_dec_value(d) * 1e6;
+	if (!(v > 0.0) || (v > (double)max_ppm) || (fabs(v - nearbyint(v)) > 1e-6)) {
+		return kv_err(c, kv, "%s = %s must be in (0, %g] with at most 6 decimals", key,
+			      kv->value, (double)max_ppm / 1e6);
+	}
+	*out = (uint32_t)nearbyint(v);
+	return 0;
+}
+
+static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t *flat,
+			calib_corner_t *corner)
+{
+	static const char *const flat_keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
+		"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
+		"status_id", "detail_id", "detail2_id", "diag_id", NULL };
+	const calib_section_kv_t *kv;
+	calib_t tmp = *flat;
+	char msg[200];
+	size_t i;
+	int idx;
+	const int pos = pos_of(c->sec->name);
+
+	if (unknown_keys(c, corner_keys) != 0) {
+		return -1;
+	}
+	/* the corner's defaults (outputs: the flat ones + 0x10 pos), then its
+	 * keys, each read with the flat key's own rules */
+	calib_corner_defaults(flat, (uint8_t)pos, corner);
+	calib_flat_from_corner(corner, &tmp);
+	for (i = 0; flat_keys[i] != NULL; i++) {
+		kv = kv_of(c->sec, flat_keys[i]);
+		if ((kv != NULL) && (calib_text_flat_key(kv->key, kv->value, &tmp, msg, sizeof(msg)) != 0)) {
+			return kv_err(c, kv, "%s", msg);
+		}
+	}
+	calib_corner_from_flat(&tmp, corner);
+	for (i = 0; i < 2U; i++) {
+		const char *key = (i == 0U) ? "speed" : "force";
+
+		kv = kv_of(c->sec, key);
+		if (kv == NULL) {
+			return kv_err(c, NULL, "%s is required (the name of an [input])", key);
+		}
+		idx = input_index(s, kv->value);
+		if (idx < 0) {
+			return kv_err(c, kv, "%s names an unknown input '%s'", key, kv->value);
+		}
+		if (i == 0U) {
+			corner->speed_input = (uint8_t)idx;
+		} else {
+			corner->force_input = (uint8_t)idx;
+		}
+	}
+	kv = kv_of(c->sec, "piston_area_mm2");
+	if (kv != NULL) {
+		calib_dec_t d;
+		double v;
+
+		if (!calib_dec_parse(kv->value, &d)) {
+			return kv_err(c, kv, "piston_area_mm2 needs a number, got '%s'", kv->value);
+		}
+		v = calib_dec_value(d) * 100.0;
+		if (!(v >= 1.0) || (v > 1e8) || (fabs(v - nearbyint(v)) > 1e-6)) {
+			return kv_err(c, kv, "piston_area_mm2 = %s: 0.01 .. 1e6 mm^2 in steps of 0.01",
+				      kv->value);
+		}
+		corner->piston_area_cmm2 = (uint32_t)nearbyint(v);
+	}
+	if ((ppm_key(c, "efficiency", 1000000U, &corner->efficiency_ppm) != 0) ||
+	    (ppm_key(c, "axle_factor", 4000000U, &corner->axle_factor_ppm) != 0) ||
+	    (get_u8(c, "friction_faces", 1, 4, false, &corner->friction_faces) != 0)) {
+		return -1;
+	}
+	return 0;
+}
+
+static int corner_blame(const ctx_t *c, const char *why)
+{
+	const char *key = NULL;
+
+	if (strstr(why, "speed") != NULL) {
+		key = "speed";
+	} else if ((strstr(why, "force") != NULL) || (strstr(why, "pressure") != NULL)) {
+		key = (strstr(why, "piston") != NULL) ? NULL : "force";
+	} else {
+		key = NULL;
+	}
+	return kv_err(c, (key != NULL) ? kv_of(c->sec, key) : NULL, "%s", why);
+}
+
+int calib_sections_finish(const calib_sections_t *s, const char *file,
+			  unsigned int legacy_line, const char *legacy_key,
+			  calib_t *cal, calib_names_t *names, char *err, size_t errlen)
+{
+	calib_t out = *cal;
+	calib_map_error_t me;
+	unsigned int i;
+	unsigned int ni = 0;
+	unsigned int nc = 0;
+	ctx_t c = { NULL, file, err, errlen };
+
+	if (s->count == 0U) {
+		return 0;
+	}
+	for (i = 0; i < s->count; i++) {
+		c.sec = &s->sec[i];
+		if (!c.sec->is_corner) {
+			if (build_input(&c, &out.inputs[ni]) != 0) {
+				return -1;
+			}
+			if (names != NULL) {
+				snprintf(names->input[ni], sizeof(names->input[ni]), "%s", c.sec->name);
+			}
+			ni++;
+		}
+	}
+	out.n_inputs = (uint8_t)ni;
+	if (s->corners == 0U) {
+		calib_text_errf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
+		     s->sec[0].line);
+		return -1;
+	}
+	if (legacy_line != 0U) {
+		calib_text_errf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
+		     file, legacy_line, legacy_key);
+		return -1;
+	}
+	for (i = 0; i < s->count; i++) {
+		c.sec = &s->sec[i];
+		if (c.sec->is_corner) {
+			if (build_corner(&c, s, cal, &out.corners[nc]) != 0) {
+				return -1;
+			}
+			nc++;
+		}
+	}
+	out.n_corners = (uint8_t)nc;
+	if (calib_map_check(&out, &me) != SQ_OK) {
+		/* find the section it concerns */
+		unsigned int want = (me.corner >= 0) ? (unsigned int)me.corner : 0U;
+		unsigned int k = 0;
+
+		for (i = 0; i < s->count; i++) {
+			if (s->sec[i].is_corner == (me.corner >= 0)) {
+				if (k == ((me.corner >= 0) ? want : (unsigned int)(me.input >= 0 ? me.input : 0))) {
+					c.sec = &s->sec[i];
+					break;
+				}
+				k++;
+			}
+		}
+		if (c.sec == NULL) {
+			c.sec = &s->sec[0];
+		}
+		return corner_blame(&c, me.why != NULL ? me.why : "invalid input map");
+	}
+	*cal = out;
+	return 0;
+}
+
+/* ---- writing --------------------------------------------------------------------- */
+
+static void put_dec(FILE *f, const char *key, calib_dec_t d)
+{
+	char b[48];
+
+	calib_dec_format(d, b, sizeof(b));
+	fprintf(f, "%s = %s\n", key, b);
+}
+
+static void put_sig(FILE *f, const char *prefix, const can_signal_t *s)
+{
+	fprintf(f, "%sstart_bit = %u\n%slength = %u\n%sbyte_order = %s\n", prefix, s->start_bit,
+		prefix, s->length, prefix, s->byte_order != 0U ? "motorola" : "intel");
+}
+
+int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names)
+{
+	unsigned int i;
+	char nm[CALIB_MAX_INPUTS][CALIB_SECTION_NAME_LEN];
+
+	if (cal->n_corners == 0U) {
+		return SQ_OK;
+	}
+	for (i = 0; i < cal->n_inputs; i++) {
+		const calib_input_t *in = &cal->inputs[i];
+		unsigned int j;
+
+		if (names != NULL) {
+			snprintf(nm[i], sizeof(nm[i]), "%s", names->input[i]);
+		} else {
+			snprintf(nm[i], sizeof(nm[i]), "in%u", i);
+		}
+		fprintf(f, "\n[input %s]\nid = 0x%" PRIX32 "\n", nm[i], in->id);
+		if ((in->flags & CALIB_IN_EXTENDED) != 0U) {
+			fprintf(f, "extended = yes\n");
+		}
+		fprintf(f, "min_dlc = %u\n", in->min_dlc);
+		if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
+			fprintf(f, "exact_dlc = yes\n");
+		}
+		put_sig(f, "", &in->sig);
+		fprintf(f, "signed = %s\n", in->sig.is_signed != 0U ? "yes" : "no");
+		put_dec(f, "factor", in->factor);
+		put_dec(f, "offset", in->offset);
+		fprintf(f, "unit = %s\n", input_unit_name((input_unit_t)in->unit));
+		if ((in->flags & CALIB_IN_MUX) != 0U) {
+			put_sig(f, "mux_", &in->mux);
+			fprintf(f, "mux_value = %" PRIu32 "\n", in->mux_value);
+		}
+		if ((in->flags & CALIB_IN_NA) != 0U) {
+			fprintf(f, "na_raw = 0x%" PRIX32 "\n", in->na_raw);
+		}
+		if ((in->flags & CALIB_IN_NA2) != 0U) {
+			fprintf(f, "na_raw2 = 0x%" PRIX32 "\n", in->na_raw2);
+		}
+		if ((in->flags & CALIB_IN_QUALIFIER) != 0U) {
+			fprintf(f, "qualifier_bit = %u\nqualifier_invalid = %u\n", in->qualifier_bit,
+				in->qualifier_invalid);
+		}
+		fprintf(f, "protection = %s\n", prot_names[in->protection]);
+		if (in->protection == (uint8_t)CALIB_PROT_P01) {
+			fprintf(f, "data_id = 0x%04X\n", in->data_id);
+		}
+		if (in->protection == (uint8_t)CALIB_PROT_P02) {
+			fprintf(f, "data_id_list =");
+			for (j = 0; j < CALIB_DATA_ID_LIST_LEN; j++) {
+				fprintf(f, " 0x%02X", in->data_id_list[j]);
+			}
+			fprintf(f, "\n");
+		}
+		if (in->protection == (uint8_t)CALIB_PROT_COUNTER) {
+			put_sig(f, "counter_", &in->counter);
+			fprintf(f, "counter_modulus = %u\n", in->counter_modulus);
+		}
+		if (in->protection != (uint8_t)CALIB_PROT_NONE) {
+			fprintf(f, "max_delta_counter = %u\n", in->max_delta_counter);
+		}
+		fprintf(f, "period_ms = %u\nstale_cycles = %u\n", in->period_ms, in->stale_cycles);
+		put_dec(f, "max", in->max);
+		put_dec(f, "min", in->min);
+		put_dec(f, "step_max", in->step_max);
+	}
+	for (i = 0; i < cal->n_corners; i++) {
+		const calib_corner_t *c = &cal->corners[i];
+		calib_t tmp = *cal;
+		static const char *const keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
+			"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
+			"status_id", "detail_id", "detail2_id", "diag_id", NULL };
+		size_t k;
+
+		calib_flat_from_corner(c, &tmp);
+		fprintf(f, "\n[corner %s]\nspeed = %s\nforce = %s\n", pos_names[c->pos],
+			nm[c->speed_input], nm[c->force_input]);
+		if (c->piston_area_cmm2 != 0U) {
+			fprintf(f, "piston_area_mm2 = %u.%02u\n", c->piston_area_cmm2 / 100U,
+				c->piston_area_cmm2 % 100U);
+		}
+		fprintf(f, "efficiency = %u.%06u\naxle_factor = %u.%06u\nfriction_faces = %u\n",
+			c->efficiency_ppm / 1000000U, c->efficiency_ppm % 1000000U,
+			c->axle_factor_ppm / 1000000U, c->axle_factor_ppm % 1000000U,
+			c->friction_faces);
+		for (k = 0; keys[k] != NULL; k++) {
+			char b[48];
+
+			calib_text_flat_format(keys[k], &tmp, b, sizeof(b));
+			fprintf(f, "%s = %s\n", keys[k], b);
+		}
+	}
+	return ferror(f) ? SQ_EIO : SQ_OK;
+}

@@ -1,0 +1,84 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * calib_sections: the `[input NAME]` and `[corner POS]` sections of a
+ * calibration text file (the input map, /work/specs contract in
+ * docs/calib-input-map.md), read by calib_text.c:
+ *
+ *   calib_sections_header()  a `[...]` line starts a section
+ *   calib_sections_key()     a `key = value` line inside a section
+ *   calib_sections_finish()  after the last line: defaults, names resolved,
+ *                            every input and corner checked (calib_map.c),
+ *                            cal->inputs / corners written
+ * Every error is one line `FILE:LINE: message`; the whole file is refused.
+ */
+#ifndef CALIB_SECTIONS_H
+#define CALIB_SECTIONS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
+
+#include "calib.h"
+
+#define CALIB_SECTION_NAME_LEN 16U
+#define CALIB_SECTIONS_MAX (CALIB_MAX_INPUTS + CALIB_MAX_CORNERS)
+#define CALIB_SECTION_KEYS_MAX 40U
+#define CALIB_SECTION_VALUE_LEN 160U
+
+typedef struct {
+	char key[32];
+	char value[CALIB_SECTION_VALUE_LEN];
+	unsigned int line;
+} calib_section_kv_t;
+
+typedef struct {
+	bool is_corner;
+	char name[CALIB_SECTION_NAME_LEN]; /* input NAME, or FL/FR/RL/RR */
+	unsigned int line;
+	unsigned int nkv;
+	calib_section_kv_t kv[CALIB_SECTION_KEYS_MAX];
+} calib_section_t;
+
+typedef struct {
+	unsigned int count;
+	unsigned int inputs;
+	unsigned int corners;
+	calib_section_t sec[CALIB_SECTIONS_MAX];
+} calib_sections_t;
+
+/* The names of a parsed map's inputs, by index in calib_t.inputs. */
+typedef struct {
+	char input[CALIB_MAX_INPUTS][CALIB_SECTION_NAME_LEN];
+} calib_names_t;
+
+void calib_sections_init(calib_sections_t *s);
+
+/* Is the state inside a section (keys belong to it)? */
+bool calib_sections_open(const calib_sections_t *s);
+
+/* 0, or -1 with msg (no FILE:LINE) */
+int calib_sections_header(calib_sections_t *s, const char *text, unsigned int line,
+			  char *msg, size_t msglen);
+int calib_sections_key(calib_sections_t *s, const char *key, const char *value,
+		       unsigned int line, char *msg, size_t msglen);
+
+/*
+ * After the file: when there are sections, build the map into *cal (whose
+ * flat keys are final) and fill names (may be NULL). legacy_line is the line
+ * of a legacy input key in the file (0 if none): refused with corners.
+ * 0, or -1 with err = "FILE:LINE: message".
+ */
+int calib_sections_finish(const calib_sections_t *s, const char *file,
+			  unsigned int legacy_line, const char *legacy_key,
+			  calib_t *cal, calib_names_t *names, char *err, size_t errlen);
+
+/* Write the input and corner sections of cal (nothing for the legacy
+ * form); inputs are named in0..in7 unless names is given. */
+int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names);
+
+/* decimal text <-> calib_dec_t, exactly (up to 9 significant digits) */
+bool calib_dec_parse(const char *text, calib_dec_t *out);
+void calib_dec_format(calib_dec_t d, char *buf, size_t len);
+double calib_dec_value(calib_dec_t d);
+
+#endif /* CALIB_SECTIONS_H */

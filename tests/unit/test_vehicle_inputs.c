@@ -1,0 +1,489 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The input map on the fixture vehicle layouts in tests/inputmap/ (.cal)
+ * (written for these tests, no vehicle's file), both numeric builds:
+ *
+ *   A moto15_p02       Motorola 15-bit wheel speeds, 0.01 km/h, offset
+ *                      -67.67 km/h, a fault bit each; master-cylinder
+ *                      pressure 0.1 bar with E2E P02; four corners
+ *   B intel14_counter  Intel 14-bit at 1/32 km/h with a 4-bit alive counter
+ *                      (and unused checksum bits) between; per-wheel kPa
+ *   D mux_psi          one multiplexed frame: two speeds (1/64 m/s) and a
+ *                      pressure in psi on three pages
+ *   E ext29_kn         29-bit identifiers; signed Motorola clamp force (kN)
+ *                      with E2E P01; vehicle speed 1/256 km/h
+ *   F torque_rpm       wheel rpm and brake torque (Nm), 2-bit counters
+ *
+ * Frames are written byte by byte from the DBC conventions
+ * (shared/vehicle-bus.md) and the expected raw values and conversions are
+ * derived by hand in the comments. Also: bad calibrations are refused whole
+ * with FILE:LINE; a short frame is a bad DLC; "not available" and a fault
+ * bit raise the input fault.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "calib_map.h"
+#include "calib_text.h"
+#include "e2e_p01.h"
+#include "input_rx.h"
+#include "monitor.h"
+#include "sq_status.h"
+
+#ifndef FIXTURE_DIR
+#define FIXTURE_DIR "tests/inputmap"
+#endif
+
+static calib_t cal;
+static calib_names_t names;
+
+static void load(const char *file)
+{
+	char path[256];
+	char err[300] = "";
+
+	snprintf(path, sizeof(path), "%s/%s", FIXTURE_DIR, file);
+	if (calib_text_load_map(path, &cal, &names, err, sizeof(err)) != SQ_OK) {
+		fail_msg("%s", err);
+	}
+}
+
+static uint32_t input_named(const char *name)
+{
+	for (uint32_t i = 0U; i < cal.n_inputs; i++) {
+		if (strcmp(names.input[i], name) == 0) {
+			return i;
+		}
+	}
+	fail_msg("no input %s", name);
+	return 0U;
+}
+
+/* input `name` prepared with the geometry of corner k */
+static input_rx_cfg_t prepared(const char *name, uint32_t k)
+{
+	const calib_corner_t *c = &cal.corners[k];
+	const input_geom_t g = { c->pad_radius_um, c->wheel_radius_um, c->piston_area_cmm2,
+				 c->efficiency_ppm, c->axle_factor_ppm };
+	input_rx_cfg_t cfg;
+
+	assert_int_equal(input_rx_setup(&cal.inputs[input_named(name)], &g, &cfg), SQ_OK);
+	return cfg;
+}
+
+static hal_can_frame_t frame(uint32_t id, bool ext, uint8_t dlc, const uint8_t *data)
+{
+	hal_can_frame_t f;
+
+	memset(&f, 0, sizeof(f));
+	f.id = id;
+	f.flags = ext ? HAL_CAN_FLAG_EXT : 0U;
+	f.dlc = dlc;
+	memcpy(f.data, data, dlc);
+	return f;
+}
+
+/* check one input on one frame: reason, raw (sign-extended), converted */
+static void expect(const char *name, uint32_t corner, const hal_can_frame_t *f,
+		   input_rx_reason_t reason, int64_t value, int32_t converted)
+{
+	input_rx_cfg_t cfg = prepared(name, corner);
+	e2e_p01_rx_t rx;
+	bool id_only = false;
+	input_rx_result_t r;
+
+	e2e_p01_rx_init(&rx);
+	assert_true(input_rx_matches(&cfg, f, &id_only));
+	r = input_rx_frame(&cfg, &rx, f);
+	assert_int_equal(r.reason, reason);
+	if (reason != INPUT_RX_DLC) {
+		assert_true(r.value == value);
+	}
+	if (reason == INPUT_RX_OK) {
+		assert_int_equal(input_conv_apply(&cfg.conv, r.value), converted);
+	}
+}
+
+/* ---- layouts ---------------------------------------------------------------------- */
+
+static void test_a_motorola15_offset_fault_bits(void **state)
+{
+	/* WS_FL 7|15@0+: byte 0 = raw >> 7, byte 1 bits 7..1 = raw & 0x7F;
+	 * raw 16767 = 0x417F: 82 FE. 16767 x 0.01 - 67.67 = 100 km/h;
+	 * v0 = 100/3.6 x 0.12/0.3 = 11.111111 m/s. Fault bit 8 = byte 1 bit 0. */
+	const uint8_t ok[8] = { 0x82, 0xFE, 0x00, 0x00 };
+	const uint8_t fault[8] = { 0x82, 0xFF };
+	const uint8_t na[8] = { 0xFF, 0xFE };          /* 0x7FFF: not available */
+	/* WS_FR 23|15@0+ in bytes 2-3: raw 6767 = 0x1A6F -> 34 DE = 0 km/h */
+	const uint8_t fr[8] = { 0, 0, 0x34, 0xDE };
+	/* raw 0: -67.67 km/h, within min -1? no: implausible (range) */
+	hal_can_frame_t f;
+
+	(void)state;
+	load("moto15_p02.cal");
+	assert_int_equal(cal.n_corners, 4);
+	f = frame(0x1A0, false, 8, ok);
+	expect("WS_FL", 0, &f, INPUT_RX_OK, 16767, 11111111);
+	f = frame(0x1A0, false, 8, fault);
+	expect("WS_FL", 0, &f, INPUT_RX_QUALIFIER, 16767, 0);
+	f = frame(0x1A0, false, 8, na);
+	expect("WS_FL", 0, &f, INPUT_RX_NA, 0x7FFF, 0);
+	f = frame(0x1A0, false, 8, fr);
+	expect("WS_FR", 1, &f, INPUT_RX_OK, 6767, 0);
+	/* a frame of one byte cannot hold WS_FL (bytes 0-1): bad DLC */
+	f = frame(0x1A0, false, 1, ok);
+	expect("WS_FL", 0, &f, INPUT_RX_DLC, 0, 0);
+}
+
+static void test_a_master_cylinder_p02_axle(void **state)
+{
+	/* MC_PRESS 16|12@1+ 0.1 bar: raw 400 = 0x190 -> byte 2 0x90, byte 3 0x01;
+	 * counter 5 in byte 1; CRC-8H2F over 05 90 01 00 00 00 00 and
+	 * DataIDList[5] = 0x66 is 0x31 (bitwise reference in Python).
+	 * FL: 40 bar x 2290 mm^2 = 9160 N; RL: 40e5 x 1257e-6 x 0.6 = 3016.8 N */
+	const uint8_t d[8] = { 0x31, 0x05, 0x90, 0x01 };
+	uint8_t bad[8];
+	hal_can_frame_t f;
+
+	(void)state;
+	load("moto15_p02.cal");
+	f = frame(0x1B0, false, 8, d);
+	expect("MC_PRESS", 0, &f, INPUT_RX_OK, 400, 9160000);
+	expect("MC_PRESS", 2, &f, INPUT_RX_OK, 400, 3016800);
+	memcpy(bad, d, 8);
+	bad[0] = 0x30;
+	f = frame(0x1B0, false, 8, bad);
+	expect("MC_PRESS", 0, &f, INPUT_RX_CRC, 400, 0);
+}
+
+static void test_b_intel14_with_counter_between(void **state)
+{
+	/* WS_FL 0|14@1+: raw 3200 = 0x0C80 -> byte 0 0x80, byte 1 low 6 bits 0x0C;
+	 * WS_FR 14|14@1+: raw 1600: byte 1 bits 6-7 = 1600 & 3 = 0, byte 2 =
+	 * (1600 >> 2) & 0xFF = 0x90, byte 3 low nibble = 1600 >> 10 = 1;
+	 * counter 28|4@1+ = byte 3 high nibble = 3 -> byte 3 0x31.
+	 * 3200/32 = 100 km/h -> 11111111 um/s; 50 km/h -> 5555555.6 -> 5555556 */
+	const uint8_t s[8] = { 0x80, 0x0C, 0x90, 0x31, 0, 0, 0, 0 };
+	/* P_FL 0|16@1+ kPa: 4000 kPa = 40 bar, eta 0.95: 9160 x 0.95 = 8702 N */
+	const uint8_t p[8] = { 0xA0, 0x0F, 0xA0, 0x0F };
+	hal_can_frame_t f;
+
+	(void)state;
+	load("intel14_counter.cal");
+	f = frame(0x0B4, false, 8, s);
+	expect("WS_FL", 0, &f, INPUT_RX_OK, 3200, 11111111);
+	expect("WS_FR", 1, &f, INPUT_RX_OK, 1600, 5555556);
+	f = frame(0x0B8, false, 8, p);
+	expect("P_FL", 0, &f, INPUT_RX_OK, 4000, 8702000);
+	expect("P_FR", 1, &f, INPUT_RX_OK, 4000, 8702000);
+}
+
+static void test_b_counter_repeats_and_jumps(void **state)
+{
+	input_rx_cfg_t cfg;
+	e2e_p01_rx_t rx;
+	uint8_t s[8] = { 0x80, 0x0C, 0x90, 0x01 };
+	hal_can_frame_t f;
+	static const uint8_t counters[] = { 3, 4, 4, 9, 10, 11 };
+	static const input_rx_reason_t want[] = { INPUT_RX_OK, INPUT_RX_OK, INPUT_RX_REPEATED,
+		INPUT_RX_COUNTER, INPUT_RX_OK, INPUT_RX_OK };
+
+	(void)state;
+	load("intel14_counter.cal");
+	cfg = prepared("WS_FL", 0);
+	e2e_p01_rx_init(&rx);
+	for (size_t i = 0; i < sizeof(counters); i++) {
+		s[3] = (uint8_t)((counters[i] << 4) | 0x01U);
+		f = frame(0x0B4, false, 8, s);
+		assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, want[i]);
+	}
+}
+
+static void test_d_multiplexed(void **state)
+{
+	/* selector 0|2: page 0 V_FL, 1 V_FR, 2 MC_PSI; value 8|16@1+.
+	 * V_FL raw 640 x 1/64 = 10 m/s -> v0 = 4 m/s; MC_PSI raw 1000 = 100 psi
+	 * = 689475.7 Pa x 2290e-6 m^2 = 1578.899 N */
+	const uint8_t p0[8] = { 0x00, 0x80, 0x02 };
+	const uint8_t p2[8] = { 0x02, 0xE8, 0x03 };
+	input_rx_cfg_t fl;
+	bool id_only = false;
+	hal_can_frame_t f;
+
+	(void)state;
+	load("mux_psi.cal");
+	f = frame(0x3C0, false, 8, p0);
+	expect("V_FL", 0, &f, INPUT_RX_OK, 640, 4000000);
+	fl = prepared("V_FR", 1);
+	assert_false(input_rx_matches(&fl, &f, &id_only)); /* page 0 is not V_FR's */
+	f = frame(0x3C0, false, 8, p2);
+	expect("MC_PSI", 0, &f, INPUT_RX_OK, 1000, 1578899);
+	fl = prepared("V_FL", 0);
+	assert_false(input_rx_matches(&fl, &f, &id_only));
+}
+
+static void test_e_29_bit_signed_motorola_p01(void **state)
+{
+	/* VSPEED 8|16@1+ 1/256 km/h: raw 25600 = 0x6400 -> bytes 1-2 00 64:
+	 * 100 km/h -> 11111111 um/s. CLAMP 23|16@0- in bytes 2 (MSB), 3:
+	 * 0x23C8 = 9160 x 0.001 kN = 9.16 kN; 0xFFFF = -1 -> -0.001 kN = -1 N */
+	const uint8_t v[8] = { 0x00, 0x00, 0x64, 0x00 };
+	uint8_t c[8] = { 0, 0, 0x23, 0xC8, 0, 0, 0, 0 };
+	const e2e_p01_config_t p01 = { 0x0B0A, 8, 2 };
+	e2e_p01_tx_t tx = { 0U };
+	hal_can_frame_t f;
+	input_rx_cfg_t cfg;
+	bool id_only = false;
+
+	(void)state;
+	load("ext29_kn.cal");
+	f = frame(0x18FEF100U, true, 8, v);
+	expect("VSPEED", 0, &f, INPUT_RX_OK, 25600, 11111111);
+	/* the same identifier as an 11-bit frame is not the input */
+	f = frame(0x100U, false, 8, v);
+	cfg = prepared("VSPEED", 0);
+	assert_false(input_rx_matches(&cfg, &f, &id_only));
+	assert_int_equal(e2e_p01_protect(&p01, &tx, c, 8), SQ_OK);
+	f = frame(0x0CF00A0BU, true, 8, c);
+	expect("CLAMP", 0, &f, INPUT_RX_OK, 9160, 9160000);
+	c[2] = 0xFF;
+	c[3] = 0xFF;
+	assert_int_equal(e2e_p01_protect(&p01, &tx, c, 8), SQ_OK);
+	f = frame(0x0CF00A0BU, true, 8, c);
+	expect("CLAMP", 0, &f, INPUT_RX_OK, -1, -1000);
+}
+
+static void test_f_torque_and_rpm(void **state)
+{
+	/* W_RPM 7|16@0+ 0.25 rpm: 0x0EEC = 3820 -> 955 rpm -> x 2 pi/60 x 0.12 m
+	 * = 12.000884 m/s; counter 63|2@0+: byte 7 bits 7-6, counter 2 -> 0x80.
+	 * T_BRAKE 7|16@0-: 0x03E8 = 1000 Nm -> 1000000 mNm; at v0 = 0 with the
+	 * default friction law mu = 0.4: N = 1000/(2 x 0.4 x 0.12) = 10416.667 N */
+	const uint8_t w[8] = { 0x0E, 0xEC, 0, 0, 0, 0, 0, 0x80 };
+	const uint8_t t[8] = { 0x03, 0xE8, 0, 0, 0, 0, 0, 0x80 };
+	const uint8_t neg[8] = { 0xFF, 0x38, 0, 0, 0, 0, 0, 0x80 }; /* -200 Nm */
+	const calib_corner_t *c;
+	hal_can_frame_t f;
+
+	(void)state;
+	load("torque_rpm.cal");
+	c = &cal.corners[0];
+	f = frame(0x240, false, 8, w);
+	expect("W_RPM", 0, &f, INPUT_RX_OK, 3820, 12000884);
+	f = frame(0x241, false, 8, t);
+	expect("T_BRAKE", 0, &f, INPUT_RX_OK, 1000, 1000000);
+	assert_in_range(input_conv_torque_to_force(1000000, 0, c->friction_faces, c->pad_radius_um,
+						   c->mu_inf_q30, c->delta_mu_q30, c->slope_q24),
+			10416667 - 2, 10416667 + 2);
+	/* -200 Nm is below min -100: implausible for the monitor */
+	f = frame(0x241, false, 8, neg);
+	expect("T_BRAKE", 0, &f, INPUT_RX_OK, -200, -200000);
+}
+
+/* ---- the monitor: bad DLC, not available, fault bit ----------------------------- */
+
+static void test_monitor_faults_on_layout_a(void **state)
+{
+	static monitor_t m;
+	const uint8_t ok[8] = { 0x82, 0xFE };
+	const uint8_t fault[8] = { 0x82, 0xFF };
+	const uint8_t na[8] = { 0xFF, 0xFE };
+	hal_can_frame_t f;
+
+	(void)state;
+	load("moto15_p02.cal");
+	assert_int_equal(monitor_init_corner(&m, &cal, 0U, false, 0U, 1000U), SQ_OK);
+	assert_false(m.calib_invalid);
+	m.now_us = 2000U;
+	f = frame(0x1A0, false, 8, ok);
+	monitor_on_frame(&m, &f);
+	assert_int_equal(m.speed.count.used, 1);
+	assert_int_equal(m.speed.value, 11111111);
+	assert_int_equal(m.speed.faults, 0);
+	f = frame(0x1A0, false, 1, ok);
+	monitor_on_frame(&m, &f);
+	assert_int_equal(m.speed.count.bad_dlc, 1);
+	assert_true((monitor_fault_bits(&m) & MSG_FAULT_E2E_SPEED) != 0U);
+	f = frame(0x1A0, false, 8, ok);
+	monitor_on_frame(&m, &f);
+	assert_int_equal(m.speed.faults, 0);
+	f = frame(0x1A0, false, 8, na);
+	monitor_on_frame(&m, &f);
+	assert_int_equal(m.speed.count.implausible, 1);
+	assert_true((monitor_fault_bits(&m) & MSG_FAULT_SPEED_IMPLAUSIBLE) != 0U);
+	f = frame(0x1A0, false, 8, ok);
+	monitor_on_frame(&m, &f);
+	assert_int_equal(m.speed.faults, 0);
+	f = frame(0x1A0, false, 8, fault);
+	monitor_on_frame(&m, &f);
+	assert_int_equal(m.speed.count.implausible, 2);
+	assert_true((monitor_fault_bits(&m) & MSG_FAULT_SPEED_IMPLAUSIBLE) != 0U);
+	/* the corner's outputs: FL keeps 0x300.. */
+	assert_int_equal(m.corner.status_id, 0x300);
+	assert_int_equal(monitor_init_corner(&m, &cal, 3U, false, 0U, 1000U), SQ_OK);
+	assert_int_equal(m.corner.status_id, 0x330);
+	assert_int_equal(m.corner.diag_id, 0x332);
+}
+
+/* ---- bad calibrations: refused whole, FILE:LINE ---------------------------------- */
+
+static const char good_input[] =
+	"[input S]\n"              /* 1 */
+	"id = 0x100\n"             /* 2 */
+	"start_bit = 8\n"          /* 3 */
+	"length = 16\n"            /* 4 */
+	"byte_order = intel\n"     /* 5 */
+	"factor = 0.01\n"          /* 6 */
+	"unit = rad/s\n"           /* 7 */
+	"period_ms = 10\n"         /* 8 */
+	"max = 400\n"              /* 9 */
+	"step_max = 10\n"          /* 10 */
+	"[input F]\n"              /* 11 */
+	"id = 0x101\n"             /* 12 */
+	"start_bit = 16\n"         /* 13 */
+	"length = 16\n"            /* 14 */
+	"byte_order = intel\n"     /* 15 */
+	"factor = 0.5\n"           /* 16 */
+	"unit = N\n"               /* 17 */
+	"period_ms = 10\n"         /* 18 */
+	"max = 30000\n"            /* 19 */
+	"step_max = 10000\n";      /* 20 */
+
+static void refused(const char *text, const char *want)
+{
+	FILE *f = fmemopen((void *)(uintptr_t)text, strlen(text), "r");
+	char err[300] = "";
+	calib_t out;
+	calib_t before;
+	int rc;
+
+	assert_non_null(f);
+	memset(&out, 0x5A, sizeof(out));
+	before = out;
+	rc = calib_text_parse_map(f, "car.cal", &out, NULL, err, sizeof(err));
+	fclose(f);
+	if ((rc != SQ_EBADMSG) || (strncmp(err, want, strlen(want)) != 0)) {
+		fail_msg("want '%s...', got rc %d '%s'", want, rc, err);
+	}
+	assert_memory_equal(&out, &before, sizeof(out)); /* refused whole */
+}
+
+static void test_bad_calibrations(void **state)
+{
+	char buf[2048];
+
+	(void)state;
+	/* the good one parses */
+	snprintf(buf, sizeof(buf), "%s[corner FL]\nspeed = S\nforce = F\n", good_input);
+	{
+		FILE *f = fmemopen(buf, strlen(buf), "r");
+		char err[300] = "";
+
+		assert_int_equal(calib_text_parse_map(f, "car.cal", &cal, &names, err, sizeof(err)),
+				 SQ_OK);
+		fclose(f);
+	}
+	/* a signal beyond the DLC: bytes 1-2 need DLC 3 */
+	snprintf(buf, sizeof(buf), "%smin_dlc = 2\n[corner FL]\nspeed = S\nforce = F\n", good_input);
+	refused(buf, "car.cal:21: [input F]");
+	/* beyond the 64 bits of a frame (Intel 60|8) */
+	snprintf(buf, sizeof(buf), "[input S]\nid = 1\nstart_bit = 60\nlength = 8\n"
+		 "byte_order = intel\nfactor = 1\nunit = N\nperiod_ms = 10\nmax = 1\nstep_max = 1\n");
+	refused(buf, "car.cal:3: [input S]");
+	/* zero length */
+	snprintf(buf, sizeof(buf), "[input S]\nid = 1\nstart_bit = 8\nlength = 0\n");
+	refused(buf, "car.cal:4: [input S] length = 0: zero length");
+	/* factor 0 */
+	snprintf(buf, sizeof(buf), "[input S]\nid = 1\nstart_bit = 8\nlength = 8\n"
+		 "byte_order = intel\nfactor = 0.000\nunit = N\n");
+	refused(buf, "car.cal:6: [input S] factor 0");
+	/* an overlapping mux selector */
+	snprintf(buf, sizeof(buf), "%smux_start_bit = 20\nmux_length = 4\nmux_byte_order = intel\n"
+		 "mux_value = 1\n[corner FL]\nspeed = S\nforce = F\n", good_input);
+	refused(buf, "car.cal:21: [input F] the mux selector overlaps");
+	/* a duplicate corner */
+	snprintf(buf, sizeof(buf), "%s[corner FL]\nspeed = S\nforce = F\n[corner fl]\n", good_input);
+	refused(buf, "car.cal:24: duplicate corner 'fl'");
+	/* unknown unit; a pressure without piston area */
+	snprintf(buf, sizeof(buf), "[input S]\nid = 1\nstart_bit = 8\nlength = 8\n"
+		 "byte_order = intel\nfactor = 1\nunit = furlong/fortnight\n");
+	refused(buf, "car.cal:7: [input S] unknown unit");
+	snprintf(buf, sizeof(buf), "%s[input P]\nid = 0x102\nstart_bit = 0\nlength = 12\n"
+		 "byte_order = intel\nfactor = 0.1\nunit = bar\nperiod_ms = 10\nmax = 250\n"
+		 "step_max = 50\n[corner FL]\nspeed = S\nforce = P\n", good_input);
+	refused(buf, "car.cal:31: [corner FL] pressure without piston_area_mm2");
+	/* a corner naming an unknown input, or a speed as its force */
+	snprintf(buf, sizeof(buf), "%s[corner FL]\nspeed = S\nforce = G\n", good_input);
+	refused(buf, "car.cal:23: [corner FL] force names an unknown input 'G'");
+	snprintf(buf, sizeof(buf), "%s[corner FL]\nspeed = S\nforce = S\n", good_input);
+	refused(buf, "car.cal:23: [corner FL] force input is not a force");
+	/* a legacy input key in a file with corners */
+	snprintf(buf, sizeof(buf), "disc_speed_id = 0x120\n%s[corner FL]\nspeed = S\nforce = F\n",
+		 good_input);
+	refused(buf, "car.cal:1: legacy input key 'disc_speed_id'");
+	/* a 29-bit identifier without extended = yes; a key twice */
+	snprintf(buf, sizeof(buf), "[input S]\nid = 0x18FEF100\nstart_bit = 8\nlength = 8\n"
+		 "byte_order = intel\nfactor = 1\nunit = N\nperiod_ms = 10\nmax = 1\nstep_max = 1\n");
+	refused(buf, "car.cal:2: [input S] id 0x18FEF100 is above 0x7FF");
+	snprintf(buf, sizeof(buf), "[input S]\nid = 1\nid = 2\n");
+	refused(buf, "car.cal:3: duplicate key 'id'");
+	/* inputs without a corner; an unknown section */
+	refused(good_input, "car.cal:1: [input] sections but no [corner]");
+	refused("[brake FL]\n", "car.cal:1: unknown section 'brake'");
+}
+
+static void test_written_map_parses_back(void **state)
+{
+	char *text = NULL;
+	size_t len = 0;
+	FILE *w;
+	FILE *r;
+	calib_t back;
+	char err[300] = "";
+	uint8_t a[CALIB_BLOCK_LEN];
+	uint8_t b[CALIB_BLOCK_LEN];
+
+	(void)state;
+	load("moto15_p02.cal");
+	w = open_memstream(&text, &len);
+	assert_int_equal(calib_text_write(w, &cal), SQ_OK);
+	fclose(w);
+	r = fmemopen(text, len, "r");
+	assert_int_equal(calib_text_parse_map(r, "written", &back, NULL, err, sizeof(err)), SQ_OK);
+	fclose(r);
+	free(text);
+	/* the stored blocks are byte-identical */
+	assert_int_equal(calib_encode(&cal, a, sizeof(a)), SQ_OK);
+	assert_int_equal(calib_encode(&back, b, sizeof(b)), SQ_OK);
+	assert_memory_equal(a, b, sizeof(a));
+	/* and the block decodes to the same map */
+	assert_int_equal(calib_decode(a, sizeof(a), &back, NULL), SQ_OK);
+	assert_int_equal(back.n_corners, 4);
+	assert_int_equal(back.inputs[0].offset.mant, -6767);
+	assert_int_equal(back.inputs[0].offset.exp, -2);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_a_motorola15_offset_fault_bits),
+		cmocka_unit_test(test_a_master_cylinder_p02_axle),
+		cmocka_unit_test(test_b_intel14_with_counter_between),
+		cmocka_unit_test(test_b_counter_repeats_and_jumps),
+		cmocka_unit_test(test_d_multiplexed),
+		cmocka_unit_test(test_e_29_bit_signed_motorola_p01),
+		cmocka_unit_test(test_f_torque_and_rpm),
+		cmocka_unit_test(test_monitor_faults_on_layout_a),
+		cmocka_unit_test(test_bad_calibrations),
+		cmocka_unit_test(test_written_map_parses_back),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
