@@ -206,13 +206,16 @@ def main(argv):
         n = int(argv[argv.index("--frames") + 1])
     r = vehref.Results()
     total = 0
+    sims = [None] if self_test else vehref.SIMS
     with tempfile.TemporaryDirectory() as tmp:
-        for name, layout in vehref.LAYOUTS.items():
-            c = run_layout(r, name, layout, tmp, n, self_test)
-            total += c or 0
-            print("%s: %d frame-input pairs compared" % (name, c or 0))
-    print("cross-check: %d frame-input pairs over %d layouts (%s)"
-          % (total, len(vehref.LAYOUTS), "pure-Python reference" if self_test else vehref.SIM))
+        for sim in sims:
+            vehref.SIM = sim
+            for name, layout in vehref.LAYOUTS.items():
+                c = run_layout(r, name, layout, tmp, n, self_test)
+                total += c or 0
+                print("%s: %d frame-input pairs compared (%s)" % (name, c or 0, sim or "pure-Python reference"))
+    print("cross-check: %d frame-input pairs over %d layouts and %d build(s)"
+          % (total, len(vehref.LAYOUTS), len(sims)))
     return r.finish()
 
 

@@ -26,9 +26,13 @@ import vehref  # noqa: E402
 def main(argv):
     replay = e2e_harness.fake_replay if "--self-test" in argv else e2e_harness.sim_replay
     r = vehref.Results()
+    sims = [None] if "--self-test" in argv else vehref.SIMS
     with tempfile.TemporaryDirectory() as tmp:
-        for name, layout in vehref.LAYOUTS.items():
-            e2e_harness.run_layout(r, name, layout, tmp, replay)
+        for sim in sims:
+            vehref.SIM = sim
+            for name, layout in vehref.LAYOUTS.items():
+                label = name if sim is None else "%s (%s)" % (name, os.path.basename(os.path.dirname(sim)))
+                e2e_harness.run_layout(r, label, layout, tmp, replay)
     return r.finish()
 
 

@@ -20,8 +20,12 @@ import vehref  # noqa: E402
 def main(argv):
     replay = e2e_harness.fake_replay if "--self-test" in argv else e2e_harness.sim_replay
     r = vehref.Results()
+    sims = [None] if "--self-test" in argv else vehref.SIMS
     with tempfile.TemporaryDirectory() as tmp:
-        e2e_harness.run_layout(r, "unseen", vehref.UNSEEN, tmp, replay, seed=11)
+        for sim in sims:
+            vehref.SIM = sim
+            label = "unseen" if sim is None else "unseen (%s)" % os.path.basename(os.path.dirname(sim))
+            e2e_harness.run_layout(r, label, vehref.UNSEEN, tmp, replay, seed=11)
     return r.finish()
 
 

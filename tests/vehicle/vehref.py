@@ -24,7 +24,11 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 TOOL = os.path.join(ROOT, "tools", "vehicle_calib.py")
 SQUEAL_DBC = os.path.join(ROOT, "firmware", "protocol", "squeal.dbc")
 PY = "/usr/bin/python3"
-SIM = os.environ.get("SQUEAL_SIM", os.path.join(ROOT, "build", "test", "squeal-sim"))
+# squeal-sim under test: both numeric builds with the sanitizers (SQUEAL_SIM
+# names one program instead); tests set SIM to each in turn.
+SIMS = [os.environ["SQUEAL_SIM"]] if os.environ.get("SQUEAL_SIM") else \
+    [os.path.join(ROOT, "build", v, "squeal-sim") for v in ("test", "test-fixed")]
+SIM = SIMS[0]
 
 WHEEL_RADIUS_M = 0.3   # calibration defaults (docs/calib-example.txt)
 PAD_RADIUS_M = 0.12
