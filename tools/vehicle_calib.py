@@ -322,9 +322,19 @@ def input_period(frame, sig, log_frames, period_ms, what):
 
 # ---------------------------------------------------------------- the map
 
-def sanitize(name):
-    n = re.sub(r"[^A-Za-z0-9_]", "_", name)[:NAME_MAX]
-    return n or "in"
+def sanitize(name, room=NAME_MAX):
+    """An input name from a signal name: the name itself when it fits,
+    otherwise each word (CamelCase or _ separated) cut short until it fits
+    (WheelSpeed_FrontLeft -> WheeSpeeFronLeft -> WheSpeFroLef)."""
+    n = re.sub(r"[^A-Za-z0-9_]", "_", name)
+    if len(n) <= room:
+        return n or "in"
+    words = re.findall(r"[A-Z]+(?![a-z])|[A-Z]?[a-z0-9]+|[A-Z]", n)
+    for k in (4, 3, 2, 1):
+        short = "".join(w[:k] for w in words)
+        if 0 < len(short) <= room:
+            return short
+    return n[:room]
 
 
 def physical_range(sig):
@@ -523,7 +533,7 @@ def build(argv):
                 k = 2
                 while name in names:
                     suffix = "_%d" % k
-                    name = sanitize(ref.split(".", 1)[1])[:NAME_MAX - len(suffix)] + suffix
+                    name = sanitize(ref.split(".", 1)[1], NAME_MAX - len(suffix)) + suffix
                     k += 1
                 d["name"] = name
                 by_ref[ref] = d

@@ -31,7 +31,9 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests", "reference"))
 import vehref  # noqa: E402
 import gen_drive  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "tests", "replay"))
 import squeal_reference as ref  # noqa: E402
+from test_replay import parse_out  # noqa: E402  (t_us, iface, id, data) of candump -L text
 
 V0_MIN_MPS = 0.01      # calibration defaults: below these, not sliding
 FORCE_MIN_N = 100.0
@@ -82,17 +84,6 @@ def expected_points(layout, db, frames):
     return out
 
 
-def parse_out(text):
-    frames = []
-    for line in text.splitlines():
-        m = LINE.match(line)
-        if m is None:
-            raise ValueError("not a candump -L line: %r" % line)
-        frames.append((int(m.group(1)) * 1000000 + int(m.group(2)), int(m.group(4), 16),
-                       bytes.fromhex(m.group(5))))
-    return frames
-
-
 def at(pts, t_us, j):
     """Index of the last point at or before t_us (monotonic search from j)."""
     while j + 1 < len(pts) and pts[j + 1][0] <= t_us:
@@ -120,7 +111,7 @@ def check_corner(r, label, pos, pts, outf, sq, torque):
     mismatched, seen = [], set()
     v0_bad, f_bad, n_detail, n_detail2 = [], [], 0, 0
     j = 0
-    for t_us, cid, data in outf:
+    for t_us, _, cid, data in outf:
         if t_us < t0 + 300000 or t_us > t_end:
             continue   # start-up; the tail after the last input
         j = at(pts, t_us, j)
@@ -165,8 +156,12 @@ def check_corner(r, label, pos, pts, outf, sq, torque):
     return seen
 
 
+def stem(label):
+    return re.sub(r"\W+", "_", label).strip("_")
+
+
 def build_calib(r, label, layout, tmp, drive_log):
-    cal = os.path.join(tmp, label + ".cal")
+    cal = os.path.join(tmp, stem(label) + ".cal")
     log = drive_log if layout["period_from"] == "log" else None
     rc, _, err = vehref.run_tool(vehref.calib_command(layout, log=log, out=cal))
     if not r.check(rc == 0, "%s: vehicle_calib.py builds the calibration from the DBC: %s" % (label, err.strip())):
@@ -178,7 +173,7 @@ def run_layout(r, label, layout, tmp, replay, seed=7):
     db = vehref.load_dbc(vehref.layout_dbc(layout))
     sq = vehref.load_dbc(vehref.SQUEAL_DBC)
     frames = gen_drive.Drive(layout, seed=seed).frames()
-    log = os.path.join(tmp, label + ".log")
+    log = os.path.join(tmp, stem(label) + ".log")
     gen_drive.write_log(log, frames)
     cal = build_calib(r, label, layout, tmp, log)
     if cal is None:
@@ -199,7 +194,7 @@ def run_layout(r, label, layout, tmp, replay, seed=7):
 
     # the same drive with the logger's 2.8 s jump back
     jframes = gen_drive.Drive(layout, seed=seed, jump=True).frames()
-    jlog = os.path.join(tmp, label + "-jump.log")
+    jlog = os.path.join(tmp, stem(label) + "-jump.log")
     gen_drive.write_log(jlog, jframes)
     rc, out, err = replay(jlog, cal)
     if rc != 0:
@@ -214,7 +209,7 @@ def run_layout(r, label, layout, tmp, replay, seed=7):
     for pos, _, _, _ in layout["corners"]:
         sid = 0x300 + 0x10 * corner_index(pos)
         st = [int(sq.frame_by_name("SquealStatus").decode(bytearray(d))["SquealState"].raw_value)
-              for _, c, d in outj if c == sid]
+              for _, _, c, d in outj if c == sid]
         r.check(len(st) >= 0.9 * drive_us // STATUS_PERIOD_US,
                 "%s %s, jump: status frames cover the whole drive, nothing squeezed (%d of about %d)"
                 % (label, pos, len(st), drive_us // STATUS_PERIOD_US))
@@ -283,3 +278,19 @@ def fake_replay(log, cal):
     text = "".join("(%010d.%06d) can0 %03X#%s\n" % (t // 1000000, t % 1000000, c, d.hex().upper())
                    for t, c, d in out)
     return 0, text.encode(), "replay summary\n  segments %d\n" % (segments + 1)
+
+
+def main(argv, layouts):
+    """Run layouts [(label, layout, seed)] on every squeal-sim build (or on
+    fake_replay with --self-test); print RESULT and exit."""
+    import tempfile
+    self_test = "--self-test" in argv
+    replay = fake_replay if self_test else sim_replay
+    r = vehref.Results()
+    with tempfile.TemporaryDirectory() as tmp:
+        for sim in [None] if self_test else vehref.SIMS:
+            vehref.SIM = sim
+            for name, layout, seed in layouts:
+                label = name if sim is None else "%s (%s)" % (name, os.path.basename(os.path.dirname(sim)))
+                run_layout(r, label, layout, tmp, replay, seed)
+    r.finish()

@@ -29,30 +29,25 @@ import vehref  # noqa: E402
 BRAKING_RUN_S = 9.5
 
 
+# (t [s], v0 at the pad [m/s], pad force [N]) of the reference corner,
+# linear in between: rolling force-free, a stop from 12 m/s at 9 kN that slows
+# down through the bistable and unstable speeds (each several hundred ms long,
+# so the states can be compared away from their borders), standstill, then
+# pulling away at 3 kN through the same states backwards. The ramps stay
+# inside the plausible steps that vehicle_calib.py writes.
+PROFILE = [(0.0, 12.0, 0.0), (0.5, 12.0, 0.0), (0.6, 12.0, 9000.0), (3.6, 2.0, 9000.0),
+           (6.6, 0.6, 9000.0), (7.0, 0.0, 9000.0), (7.4, 0.0, 9000.0), (7.6, 0.0, 3000.0),
+           (9.5, 3.0, 3000.0)]
+
+
 def braking_run(t):
-    """(v0 at the pad [m/s], pad force [N]) of the reference corner at drive
-    time t [s]: rolling force-free, a stop from 12 m/s at 9 kN that slows down
-    through the bistable and unstable speeds (each several hundred ms long, so
-    the states can be compared away from their borders), standstill, then
-    pulling away at 3 kN through the same states backwards. Ramps stay inside
-    the plausible steps of vehicle_calib.py."""
-    def lerp(t, t0, t1, a, b):
-        return a + (b - a) * (t - t0) / (t1 - t0)
-    if t < 0.5:
-        return 12.0, 0.0
-    if t < 0.6:
-        return 12.0, lerp(t, 0.5, 0.6, 0.0, 9000.0)
-    if t < 3.6:
-        return lerp(t, 0.6, 3.6, 12.0, 2.0), 9000.0
-    if t < 6.6:
-        return lerp(t, 3.6, 6.6, 2.0, 0.6), 9000.0
-    if t < 7.0:
-        return max(0.0, lerp(t, 6.6, 7.0, 0.6, 0.0)), 9000.0
-    if t < 7.4:
-        return 0.0, 9000.0
-    if t < 7.6:
-        return 0.0, lerp(t, 7.4, 7.6, 9000.0, 3000.0)
-    return lerp(t, 7.6, 9.5, 0.0, 3.0), 3000.0
+    """(v0 [m/s], force [N]) of PROFILE at drive time t [s]."""
+    for (t0, v0, n0), (t1, v1, n1) in zip(PROFILE, PROFILE[1:]):
+        if t < t1:
+            w = max(0.0, (t - t0) / (t1 - t0))
+            return v0 + (v1 - v0) * w, n0 + (n1 - n0) * w
+    return PROFILE[-1][1], PROFILE[-1][2]
+
 
 T0 = 1700000000.0
 JUMP_AT_S = 4.0

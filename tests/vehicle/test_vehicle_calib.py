@@ -67,12 +67,13 @@ def signal_of(fr, inp):
 
 
 class Quiet(vehref.Results):
+    """Counts without printing (the harness's failures on a mutant are wanted)."""
     def check(self, cond, what):
-        return vehref.Results.check(self, cond, what) if cond else self._fail()
-
-    def _fail(self):
-        self.failed += 1
-        return False
+        if cond:
+            self.passed += 1
+        else:
+            self.failed += 1
+        return cond
 
 
 def check_layout(r, name, layout, tmp):
@@ -356,7 +357,7 @@ def main():
         check_dbc_out(r, tmp)
         check_base(r, tmp)
         check_references(r, tmp)
-    return r.finish()
+    r.finish()
 
 
 if __name__ == "__main__":

@@ -216,7 +216,7 @@ def main(argv):
                 print("%s: %d frame-input pairs compared (%s)" % (name, c or 0, sim or "pure-Python reference"))
     print("cross-check: %d frame-input pairs over %d layouts and %d build(s)"
           % (total, len(vehref.LAYOUTS), len(sims)))
-    return r.finish()
+    r.finish()
 
 
 if __name__ == "__main__":

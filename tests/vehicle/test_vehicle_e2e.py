@@ -16,25 +16,10 @@ Prints "RESULT: N passed, M failed".
 """
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import e2e_harness  # noqa: E402
 import vehref  # noqa: E402
 
-
-def main(argv):
-    replay = e2e_harness.fake_replay if "--self-test" in argv else e2e_harness.sim_replay
-    r = vehref.Results()
-    sims = [None] if "--self-test" in argv else vehref.SIMS
-    with tempfile.TemporaryDirectory() as tmp:
-        for sim in sims:
-            vehref.SIM = sim
-            for name, layout in vehref.LAYOUTS.items():
-                label = name if sim is None else "%s (%s)" % (name, os.path.basename(os.path.dirname(sim)))
-                e2e_harness.run_layout(r, label, layout, tmp, replay)
-    return r.finish()
-
-
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    e2e_harness.main(sys.argv[1:], [(n, l, 7) for n, l in vehref.LAYOUTS.items()])

@@ -21,6 +21,8 @@ import warnings
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "tests", "protocol"))
+import dbc_common  # noqa: E402
 TOOL = os.path.join(ROOT, "tools", "vehicle_calib.py")
 SQUEAL_DBC = os.path.join(ROOT, "firmware", "protocol", "squeal.dbc")
 PY = "/usr/bin/python3"
@@ -284,24 +286,9 @@ def p01_crc(frame, data_id):
     return crc8([data_id & 0xFF, data_id >> 8] + list(frame[1:]), 0x1D, 0x00, 0x00)
 
 
-# ------------------------------------------------------------ results
+# ------------------------------------------------------------ results and squeal-sim
 
-class Results:
-    def __init__(self):
-        self.passed = self.failed = self.skipped = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-        else:
-            self.failed += 1
-            print("FAIL: " + what)
-        sys.stdout.flush()
-        return cond
-
-    def finish(self):
-        print("RESULT: %d passed, %d failed" % (self.passed, self.failed))
-        return 0 if self.failed == 0 else 1
+Results = dbc_common.Results   # check(cond, what); finish() prints RESULT and exits
 
 
 def run_sim(args, stdin=None):
