@@ -34,10 +34,12 @@ text). What is taken from where:
     the signal named by --counter (repeatable, one per message) or else the
     one sibling whose name says counter/alive/cnt/rolling.
 A recorded drive drops frames (gaps of 2-3 periods), so the inputs accept
-counter steps up to 3 (max_delta_counter) and go stale after 5 missed
-periods (stale_cycles); plausibility: 0 .. the DBC maximum, steps up to
-100 m/s^2 (speed) or a quarter of the range (force) per period.
-Every refusal is one line on stderr and exit status 1 (2: bad usage).
+counter steps up to 3 (times the number of pages for a multiplexed input,
+below the counter's modulus: max_delta_counter) and go stale after 5 missed
+periods (stale_cycles); plausibility: from 0 (less half a step) to the
+largest value the signal can carry (declared DBC ranges are often wrong),
+steps up to 100 m/s^2 (speed) or a quarter of the range (force) per period.
+Every refusal, bad usage included, is one line on stderr and exit status 1.
 """
 import contextlib
 import io
@@ -297,14 +299,20 @@ def extract(data, start, length, intel, signed):
     return v
 
 
+def mux_pages(frame, sig):
+    """How many pages take turns in the frame of a multiplexed signal (the
+    values the DBC defines for the selector or uses in its signals); 1 for a
+    plain signal."""
+    if sig.mux_val is None:
+        return 1
+    sel = mux_selector(frame)
+    return max(1, len({s.mux_val for s in frame.signals if s.mux_val is not None}
+                      | set(int(k) for k in (sel.values if sel else {}))))
+
+
 def input_period(frame, sig, log_frames, period_ms, what):
     if frame.cycle_time and frame.cycle_time > 0:
-        pages = 1
-        if sig.mux_val is not None:
-            sel = mux_selector(frame)
-            pages = max(1, len({s.mux_val for s in frame.signals if s.mux_val is not None}
-                               | set(int(k) for k in (sel.values if sel else {}))))
-        return int(frame.cycle_time) * pages, "GenMsgCycleTime"
+        return int(frame.cycle_time) * mux_pages(frame, sig), "GenMsgCycleTime"
     if log_frames is not None:
         ext = bool(frame.arbitration_id.extended)
         fid = frame.arbitration_id.id
@@ -403,15 +411,18 @@ def build_input(db, ref, role, unit_override, args, log_frames):
                  counter_byte_order="intel" if c.is_little_endian else "motorola",
                  counter_modulus=int(c.calculate_raw_range()[1]) + 1)
     if prot != "none":
+        # the sender counts frames; a multiplexed input sees every pages-th of them
         modulus = d.get("counter_modulus", 15 if prot == "p01" else 16)
-        d["max_delta_counter"] = min(MAX_DELTA_COUNTER, modulus - 1)
+        d["max_delta_counter"] = min(MAX_DELTA_COUNTER * mux_pages(frame, sig), modulus - 1)
     d["stale_cycles"] = STALE_CYCLES
-    lo, hi = physical_range(sig)
-    dbc_max = float(sig.max) if sig.max is not None else hi
-    top = dbc_max if 0 < dbc_max <= hi else hi
+    # community DBC files often declare a wrong [min|max]: the plausible
+    # maximum is the largest value the signal can carry
+    lo, top = physical_range(sig)
     if top <= 0:
-        raise Refusal("%s %s: the signal cannot be positive (range %g..%g %s)" % (what, ref, lo, hi, unit))
-    d["min"], d["max"] = 0, top
+        raise Refusal("%s %s: the signal cannot be positive (range %g..%g %s)" % (what, ref, lo, top, unit))
+    # zero within half a step: raw x factor + offset of a standstill with a
+    # negative offset (6767 x 0.01 - 67.67) may come out a hair below zero
+    d["min"], d["max"] = -float("%.6g" % (abs(float(sig.factor)) / 2)), top
     if q == "speed":
         si, kind = SPEED_SI[unit.lower()]
         per_unit = si if kind == "linear" else si * args.wheel_radius_m

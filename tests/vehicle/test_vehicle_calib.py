@@ -148,7 +148,14 @@ def check_layout(r, name, layout, tmp):
                     and inp.get("counter_byte_order") == ("intel" if c.is_little_endian else "motorola")
                     and vehref.ival(inp, "counter_modulus") == 1 << c.size,
                     "%s %s: counter signal %s from the DBC" % (name, ref, c.name))
-        elif layout["protection"] == "p02":
+        if layout["protection"] != "none":
+            modulus = 1 << fr.signal_by_name(layout["counters"][msg]).size \
+                if layout["protection"] == "counter" else 16
+            pages = 2 if sig.mux_val is not None else 1   # the fixtures' multiplexed frame has 2 pages
+            r.check(vehref.ival(inp, "max_delta_counter") == min(3 * pages, modulus - 1),
+                    "%s %s: counter steps of a frame after two lost ones accepted (%s)"
+                    % (name, ref, inp.get("max_delta_counter")))
+        if layout["protection"] == "p02":
             lst = [int(x, 0) for x in fr.attributes["E2E_DataIDList"].split()]
             r.check([int(x, 0) for x in inp.get("data_id_list", "").split()] == lst,
                     "%s %s: P02 DataIDList from the DBC" % (name, ref))

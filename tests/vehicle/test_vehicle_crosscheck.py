@@ -148,7 +148,7 @@ def compare(r, label, csv_text, exp, inputs):
         else:
             try:
                 ok = int(row[4]) == e[0] and abs(float(row[5]) - e[1]) <= 1e-7 * max(1.0, abs(e[1])) \
-                    and row[6] == inputs[row[3]]["unit"] and row[8] != "dlc"
+                    and row[6].lower() == inputs[row[3]]["unit"].lower() and row[8] != "dlc"
             except ValueError:
                 ok = False
         if not ok:
