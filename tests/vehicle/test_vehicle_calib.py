@@ -41,7 +41,7 @@ spec.loader.exec_module(vc)
 EXPECT = {
     "esc_motorola": {
         "ESC_WheelSpeeds.WhlSpd_FL": ([32767], (7, 1), 20),
-        "ESC_WheelSpeeds.WhlSpd_RR": ([32767], (55, 1), 20),
+        "ESC_WheelSpeeds.WhlSpd_RL": ([32767], (39, 1), 20),
         "ESC_Brake.BrkPrs_MC": ([4095, 4094], None, 20),
     },
     "esc_intel": dict([("ABS_WheelSpeed.WHEEL_SPEED_" + p, ([], None, 24)) for p in vehref.POSITIONS]
@@ -323,7 +323,7 @@ def check_base(r, tmp):
     r.check(kept and flat.get("debounce_count") == "4", "--base: its flat keys kept")
     r.check(not any(k in flat for k in vc.LEGACY_KEYS), "--base: legacy input keys dropped")
     r.check(flat.get("pad_radius_m") == "0.13", "--pad-radius-m overrides the base")
-    r.check("Old" not in inputs and set(corners) == {"FL", "RR"}, "--base: its old sections dropped")
+    r.check("Old" not in inputs and set(corners) == {"FL", "RL"}, "--base: its old sections dropped")
 
 
 def check_references(r, tmp):

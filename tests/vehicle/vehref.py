@@ -46,7 +46,7 @@ LAYOUTS = {
     "esc_motorola": {
         "dbc": "esc_motorola.dbc",
         "corners": [("FL", "ESC_WheelSpeeds.WhlSpd_FL", "ESC_Brake.BrkPrs_MC", ["--piston-area-mm2", "2290"]),
-                    ("RR", "ESC_WheelSpeeds.WhlSpd_RR", "ESC_Brake.BrkPrs_MC",
+                    ("RL", "ESC_WheelSpeeds.WhlSpd_RL", "ESC_Brake.BrkPrs_MC",   # unit written "Km/h"
                      ["--piston-area-mm2", "1500", "--axle-factor", "0.8", "--efficiency", "0.95"])],
         "options": ["--protection", "none"],
         "period_s": {"ESC_WheelSpeeds": 0.020, "ESC_Brake": 0.020},
@@ -54,7 +54,7 @@ LAYOUTS = {
         "other": ["BCM_Status", 0x7E8, 0x5A0],
         "qualifier_ok": {"WhlSpd_FL_Flt": 0, "WhlSpd_FR_Flt": 0, "WhlSpd_RL_Flt": 0, "WhlSpd_RR_Flt": 0,
                          "BrkPrs_MC_Stat": 0},
-        "speed_scale": {"FL": 1.0, "RR": 0.98},
+        "speed_scale": {"FL": 1.0, "RL": 0.98},
         "period_from": "GenMsgCycleTime",
     },
     "esc_intel": {
