@@ -144,14 +144,16 @@ class Drive:
         out = []
         for idx, (name, period) in enumerate(sorted(self.layout["period_s"].items())):
             frame = self.db.frame_by_name(name)
-            seq, t, skip = 0, 0.003 * idx, 0
+            seq, t, skip, lost = 0, 0.003 * idx, 0, False
             while t < self.duration_s:
                 data = self.encode(frame, seq, t)
                 if skip:
                     skip -= 1
-                elif self.rng.random() < self.drop_p:
-                    skip = 1 if self.rng.random() < 0.3 else 0
+                elif not lost and self.rng.random() < self.drop_p:
+                    skip = 1 if self.rng.random() < 0.3 else 0   # one or two frames in a row
+                    lost = True
                 else:
+                    lost = False
                     tj = t + self.rng.uniform(-0.0003, 0.0003)
                     out.append((max(0.0, tj), frame.arbitration_id.id, bool(frame.arbitration_id.extended), data))
                 seq += 1

@@ -15,6 +15,9 @@ self-tests of the vehicle harnesses (pure Python, no C needed):
   - --dbc-out: canmatrix reads it; per corner the four Squeal* messages of
     squeal.dbc with the same signals, names suffixed, FL keeping today's;
   - --base: flat keys kept, legacy input keys and old sections dropped;
+  - squeal.dbc's own inputs come out as P01 with their data IDs;
+  - the drive generator: one 2.8 s jump back, periods, a few frames lost,
+    P02 CRC-8H2F and counters as their definitions say (canmatrix decoding);
   - the references: CRC check values, vehicle-bus.md's worked example, the
     cross-check harness on vehref's pure-Python extraction (and that it
     catches a wrong value), the end-to-end harness on its Python stand-in.
@@ -354,6 +357,64 @@ def check_references(r, tmp):
         e2e_harness.run_layout(r, "self-test " + name, layout, tmp, e2e_harness.fake_replay)
 
 
+def check_own_dbc(r):
+    """Today's inputs from squeal.dbc: P01 with the DBC's data IDs."""
+    rc, out, err = vehref.run_tool([vehref.PY, vehref.TOOL, "--dbc", vehref.SQUEAL_DBC, "--corner", "FL",
+                                    "--speed", "DiscSpeed.DiscSpeed_radps", "--force", "PadForce.PadForce_N",
+                                    "--protection", "p01"])
+    _, inputs, corners = vehref.parse_calib(out)
+    sq = vehref.load_dbc(vehref.SQUEAL_DBC)
+    ok = rc == 0 and len(inputs) == 2
+    for name, msg in (("DiscSpeed_radps", "DiscSpeed"), ("PadForce_N", "PadForce")):
+        f = sq.frame_by_name(msg)
+        inp = inputs.get(name, {})
+        ok = ok and vehref.ival(inp, "id") == f.arbitration_id.id and inp.get("protection") == "p01" \
+            and vehref.ival(inp, "data_id") == int(f.attributes["E2E_DataID"]) \
+            and vehref.ival(inp, "period_ms") == f.cycle_time and inp.get("na_raw") == "65535" \
+            and vehref.ival(inp, "start_bit") == 16 and vehref.ival(inp, "min_dlc") == f.size
+    r.check(ok, "squeal.dbc's own inputs: P01 with E2E_DataID, 10 ms, 65535 not available (%s)" % err.strip())
+
+
+def check_drive(r):
+    """The drive generator against canmatrix and the protections' definitions."""
+    for name, layout in vehref.LAYOUTS.items():
+        db = vehref.load_dbc(vehref.layout_dbc(layout))
+        frames = gen_drive.Drive(layout, seed=9, jump=True).frames()
+        back = [b[0] - a[0] for a, b in zip(frames, frames[1:]) if b[0] < a[0]]
+        r.check(len(back) == 1 and abs(back[0] + 2.8) < 0.03,   # less the gap between two frames
+                "%s drive: one 2.8 s jump back (%s)" % (name, back))
+        for msg, period in layout["period_s"].items():
+            f = db.frame_by_name(msg)
+            mine = [(t, d) for t, i, e, d in frames if i == f.arbitration_id.id
+                    and e == bool(f.arbitration_id.extended)]
+            expect = gen_drive.BRAKING_RUN_S / period
+            r.check(0.9 * expect < len(mine) < 0.995 * expect,
+                    "%s drive: %s every %g ms with a few frames dropped (%d of %d)"
+                    % (name, msg, period * 1e3, len(mine), int(expect)))
+            r.check(vc.measure_period([t for t, _ in mine]) == round(period * 1e3),
+                    "%s drive: %s's period measured back" % (name, msg))
+            ctr_name = layout.get("counters", {}).get(msg)
+            prev, ok, steps = None, True, set()
+            for t, d in mine:
+                dec = f.decode(bytearray(d))
+                if layout["protection"] == "p02":
+                    lst = [int(x, 0) for x in f.attributes["E2E_DataIDList"].split()]
+                    ctr = d[1] & 0x0F
+                    ok = ok and d[0] == vehref.crc8h2f(list(d[1:]) + [lst[ctr]])
+                    mod = 16
+                elif ctr_name:
+                    ctr = int(dec[ctr_name].raw_value)
+                    mod = 1 << f.signal_by_name(ctr_name).size
+                else:
+                    continue
+                if prev is not None:
+                    steps.add((ctr - prev) % mod)
+                prev = ctr
+            if layout["protection"] != "none":
+                r.check(ok and steps == {1, 2, 3}, "%s drive: %s's CRC right, counter steps %s (1, and 2-3 "
+                        "after lost frames)" % (name, msg, sorted(steps)))
+
+
 def main():
     r = vehref.Results()
     with tempfile.TemporaryDirectory() as tmp:
@@ -361,6 +422,8 @@ def main():
             check_layout(r, name, layout, tmp)
         check_refusals(r, tmp)
         check_periods(r)
+        check_own_dbc(r)
+        check_drive(r)
         check_dbc_out(r, tmp)
         check_base(r, tmp)
         check_references(r, tmp)
