@@ -394,13 +394,18 @@ def build_input(db, ref, role, unit_override, args, log_frames):
     prot = args.protection
     d["protection"] = prot
     if prot == "p01":
-        did = frame.attributes.get("E2E_DataID")
-        if did is None:
-            raise Refusal("--protection p01: message %s has no E2E_DataID attribute" % frame.name)
-        d["data_id"] = int(float(did))
+        try:
+            d["data_id"] = int(str(frame.attributes["E2E_DataID"]).strip('"'), 0)
+        except (KeyError, ValueError):
+            raise Refusal("--protection p01: message %s has no E2E_DataID attribute (0..65535)" % frame.name)
+        if not 0 <= d["data_id"] <= 0xFFFF:
+            raise Refusal("--protection p01: message %s: E2E_DataID %d outside 0..65535" % (frame.name, d["data_id"]))
     elif prot == "p02":
         lst = frame.attributes.get("E2E_DataIDList")
-        vals = [int(x, 0) for x in re.split(r"[\s,]+", str(lst).strip().strip('"')) if x] if lst else []
+        try:
+            vals = [int(x, 0) for x in re.split(r"[\s,]+", str(lst).strip().strip('"')) if x] if lst else []
+        except ValueError:
+            vals = []
         if len(vals) != 16 or any(not 0 <= v <= 255 for v in vals):
             raise Refusal("--protection p02: message %s has no E2E_DataIDList attribute of 16 bytes"
                           % frame.name)
@@ -409,7 +414,7 @@ def build_input(db, ref, role, unit_override, args, log_frames):
         c = find_counter(db, frame, sig, args.counter)
         d.update(counter_start_bit=dbc_start_bit(c), counter_length=int(c.size),
                  counter_byte_order="intel" if c.is_little_endian else "motorola",
-                 counter_modulus=int(c.calculate_raw_range()[1]) + 1)
+                 counter_modulus=1 << int(c.size))
     if prot != "none":
         # the sender counts frames; a multiplexed input sees every pages-th of them
         modulus = d.get("counter_modulus", 15 if prot == "p01" else 16)
@@ -725,6 +730,10 @@ def main(argv):
         return 1
     except KeyboardInterrupt:
         sys.stderr.write("vehicle_calib.py: interrupted\n")
+        return 1
+    except Exception as e:  # a DBC canmatrix reads but in a shape not foreseen here
+        sys.stderr.write("vehicle_calib.py: cannot handle this input (%s: %s)\n"
+                         % (type(e).__name__, str(e).splitlines()[0] if str(e) else ""))
         return 1
     return 0
 
