@@ -10,6 +10,7 @@ self-tests of the vehicle harnesses (pure Python, no C needed):
     GenMsgCycleTime / the log / --period-ms, the protection keys from the
     DBC; one input per distinct MSG.SIG; the corners name the right inputs;
   - every refusal: one line on stderr, exit status != 0, no traceback;
+    150 damaged DBCs: a calibration or a one-line refusal each;
   - the period estimate on logs at 10, 20 and 24 ms with jitter, dropped
     frames, heavy loss and a backward jump;
   - --dbc-out: canmatrix reads it; per corner the four Squeal* messages of
@@ -357,6 +358,47 @@ def check_references(r, tmp):
         e2e_harness.run_layout(r, "self-test " + name, layout, tmp, e2e_harness.fake_replay)
 
 
+def check_mutants(r, tmp, n=150):
+    """Damaged DBCs (lines dropped, doubled, cut, bytes flipped): the tool
+    either builds a calibration or refuses in one line, never a traceback."""
+    import contextlib
+    import io
+    rng = random.Random(4)
+    layout = vehref.LAYOUTS["esc_motorola"]
+    with open(vehref.layout_dbc(layout)) as f:
+        lines = f.read().splitlines()
+    bad = []
+    path = os.path.join(tmp, "mutant.dbc")
+    for k in range(n):
+        m = list(lines)
+        for _ in range(rng.randint(1, 3)):
+            i = rng.randrange(len(m))
+            op = rng.randrange(4)
+            if op == 0:
+                del m[i]
+            elif op == 1:
+                m.insert(i, m[i])
+            elif op == 2:
+                m[i] = m[i][:rng.randrange(len(m[i]) + 1)]
+            elif m[i]:
+                j = rng.randrange(len(m[i]))
+                m[i] = m[i][:j] + chr(rng.choice(b"|@+-(),:;\"x0 ")) + m[i][j + 1:]
+        with open(path, "w") as f:
+            f.write("\n".join(m) + "\n")
+        err, out = io.StringIO(), io.StringIO()
+        argv = ["--dbc", path, "--corner", "FL", "--speed", "ESC_WheelSpeeds.WhlSpd_FL", "--force",
+                "ESC_Brake.BrkPrs_MC", "--piston-area-mm2", "2290", "--period-ms", "20", "-o", "-"]
+        try:
+            with contextlib.redirect_stderr(err), contextlib.redirect_stdout(out):
+                rc = vc.main(argv)
+        except BaseException as e:  # noqa: B902  (anything escaping main is the failure)
+            rc, err = -1, io.StringIO("%s %s" % (type(e).__name__, e))
+        if not ((rc == 0 and err.getvalue() == "") or (rc == 1 and err.getvalue().count("\n") == 1)):
+            bad.append((k, rc, err.getvalue()[:200]))
+    r.check(not bad, "%d damaged DBCs: a calibration or a one-line refusal each (%d not: %s)"
+            % (n, len(bad), bad[:3]))
+
+
 def check_own_dbc(r):
     """Today's inputs from squeal.dbc: P01 with the DBC's data IDs."""
     rc, out, err = vehref.run_tool([vehref.PY, vehref.TOOL, "--dbc", vehref.SQUEAL_DBC, "--corner", "FL",
@@ -423,6 +465,7 @@ def main():
         check_refusals(r, tmp)
         check_periods(r)
         check_own_dbc(r)
+        check_mutants(r, tmp)
         check_drive(r)
         check_dbc_out(r, tmp)
         check_base(r, tmp)
