@@ -1,0 +1,15 @@
+# SPDX-License-Identifier: MIT
+# The monitor on a vehicle's bus (issue 11), Python side:
+#   tools/vehicle_calib.py                  calibration text (+ outputs DBC) from a vehicle DBC
+#   tests/vehicle/*.dbc, unseen/            fixture layouts written by the project
+#   tests/vehicle/test_vehicle_calib.py     the tool vs canmatrix, refusals, --dbc-out, --base,
+#                                           and the self-tests of the harnesses (no C needed)
+#   tests/vehicle/test_vehicle_crosscheck.py  decode --calib --inputs-csv == canmatrix, random frames
+#   tests/vehicle/test_vehicle_e2e.py       drive -> replay --calib -> outputs vs the reference
+#   tests/vehicle/test_vehicle_unseen.py    issue 11's Done-when layout (tests/vehicle/unseen/)
+# The last three run the sanitizer builds of squeal-sim (float and fixed).
+VEHICLE_SIM_TESTS := tests/vehicle/test_vehicle_crosscheck.py tests/vehicle/test_vehicle_e2e.py \
+	tests/vehicle/test_vehicle_unseen.py
+$(VEHICLE_SIM_TESTS): build/test/squeal-sim build/test-fixed/squeal-sim
+
+TEST_PROGS += tests/vehicle/test_vehicle_calib.py $(VEHICLE_SIM_TESTS)
