@@ -598,19 +598,37 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 				      "the mux selector overlaps the value signal");
 		}
 	}
-	if (get_int(c, "na_raw", 0, UINT32_MAX, false, &v, &present) != 0) {
+	/* a signed signal's code may be written as a number (-32768, as a
+	 * VAL_ table writes it) or as its raw bits (0x8000) */
+	if (get_int(c, "na_raw", INT32_MIN, UINT32_MAX, false, &v, &present) != 0) {
 		return -1;
 	}
 	if (present) {
+		if ((v < 0) && ((in->sig.is_signed == 0U) ||
+				(v < -((int64_t)1 << (in->sig.length - 1U))))) {
+			return kv_err(c, kv_of(c->sec, "na_raw"),
+				      "na_raw = %" PRId64 " is not a value of this %s %u-bit signal", v,
+				      (in->sig.is_signed != 0U) ? "signed" : "unsigned",
+				      (unsigned)in->sig.length);
+		}
 		in->flags |= CALIB_IN_NA;
-		in->na_raw = (uint32_t)v;
+		in->na_raw = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
 	}
-	if (get_int(c, "na_raw2", 0, UINT32_MAX, false, &v, &present) != 0) {
+	/* a signed signal's code may be written as a number (-32768, as a
+	 * VAL_ table writes it) or as its raw bits (0x8000) */
+	if (get_int(c, "na_raw2", INT32_MIN, UINT32_MAX, false, &v, &present) != 0) {
 		return -1;
 	}
 	if (present) {
+		if ((v < 0) && ((in->sig.is_signed == 0U) ||
+				(v < -((int64_t)1 << (in->sig.length - 1U))))) {
+			return kv_err(c, kv_of(c->sec, "na_raw2"),
+				      "na_raw2 = %" PRId64 " is not a value of this %s %u-bit signal", v,
+				      (in->sig.is_signed != 0U) ? "signed" : "unsigned",
+				      (unsigned)in->sig.length);
+		}
 		in->flags |= CALIB_IN_NA2;
-		in->na_raw2 = (uint32_t)v;
+		in->na_raw2 = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
 	}
 	if (get_int(c, "qualifier_bit", 0, 63, false, &v, &present) != 0) {
 		return -1;

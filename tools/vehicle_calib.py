@@ -95,7 +95,9 @@ def num(text):
     v = float(text)
     if v == int(v) and abs(v) < 1e15:
         return str(int(v))
-    return repr(v)
+    # the calibration keeps decimals of at most 9 significant digits: a
+    # computed range (32767 x 0.1 = 3276.7000000000003) is written 3276.7
+    return "%.9g" % v
 
 
 # ---------------------------------------------------------------- DBC access

@@ -27,6 +27,16 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import vehref  # noqa: E402
 import gen_drive  # noqa: E402
 
+# decode prints each unit in its canonical spelling (docs/calib-input-map.md):
+# the calibration's "kph" or "Km/h" is "km/h" there, "1/min" is "rpm"
+UNIT_SYNONYMS = {"kph": "km/h", "1/min": "rpm"}
+
+
+def canon_unit(u):
+    u = u.strip().lower()
+    return UNIT_SYNONYMS.get(u, u)
+
+
 HEADER = ["t_s", "iface", "id", "input", "raw", "physical", "unit", "valid", "reason"]
 FRAMES_PER_LAYOUT = 3000
 
@@ -148,7 +158,8 @@ def compare(r, label, csv_text, exp, inputs):
         else:
             try:
                 ok = int(row[4]) == e[0] and abs(float(row[5]) - e[1]) <= 1e-7 * max(1.0, abs(e[1])) \
-                    and row[6].lower() == inputs[row[3]]["unit"].lower() and row[8] != "dlc"
+                    and canon_unit(row[6]) == canon_unit(inputs[row[3]]["unit"]) \
+                    and row[8] != "dlc"
             except ValueError:
                 ok = False
         if not ok:
