@@ -227,13 +227,11 @@ uint32_t hal_platform_faults(void);
 /* ---- bring-up self-test ---------------------------------------------------- */
 
 /* Result of one controller's silent-loopback test (a frame sent to itself
- * while nothing reaches the bus). */
-typedef enum {
-	HAL_LOOPBACK_PASS = 0,        /* the frame came back unchanged          */
-	HAL_LOOPBACK_FAIL = 1,        /* the controller ran, the frame did not  */
-	HAL_LOOPBACK_UNAVAILABLE = 2, /* controller not running (no clock, QEMU) */
-	HAL_LOOPBACK_NO_BUS = 3       /* the chip has no such controller        */
-} hal_loopback_t;
+ * while nothing reaches the bus): hal_selftest_t.loopback[bus]. */
+#define HAL_LOOPBACK_PASS        0U /* the frame came back unchanged           */
+#define HAL_LOOPBACK_FAIL        1U /* the controller ran, the frame did not   */
+#define HAL_LOOPBACK_UNAVAILABLE 2U /* controller not running (no clock, QEMU) */
+#define HAL_LOOPBACK_NO_BUS      3U /* the chip has no such controller         */
 
 #define HAL_SELFTEST_NOT_MEASURED 0xFFFFFFFFUL
 #define HAL_SELFTEST_NO_BOR 0xFFU
@@ -247,7 +245,7 @@ typedef struct {
 					   * NOT_MEASURED after power-on */
 	uint8_t bor_level;         /* brown-out reset level 0..3 (3: VDD >= 2.7 V);
 				    * HAL_SELFTEST_NO_BOR: the chip has none */
-	uint8_t loopback[HAL_CAN_BUSES]; /* hal_loopback_t per bus             */
+	uint8_t loopback[HAL_CAN_BUSES]; /* HAL_LOOPBACK_* per bus             */
 	bool failed;               /* a check failed (its HAL_FAULT_* bit is set) */
 } hal_selftest_t;
 

@@ -160,10 +160,13 @@ static void report_selftest(void)
 		m.loopback[bus] = (bus < HAL_CAN_BUSES) ? st.loopback[bus] :
 			(uint8_t)HAL_LOOPBACK_NO_BUS;
 	}
-	m.stack_high_water_b = (st.stack_high_water_prev_b == HAL_SELFTEST_NOT_MEASURED) ?
-		(uint16_t)MSG_STACK_HWM_UNKNOWN :
-		((st.stack_high_water_prev_b >= MSG_STACK_HWM_UNKNOWN) ?
-		 (uint16_t)(MSG_STACK_HWM_UNKNOWN - 1U) : (uint16_t)st.stack_high_water_prev_b);
+	if (st.stack_high_water_prev_b == HAL_SELFTEST_NOT_MEASURED) {
+		m.stack_high_water_b = (uint16_t)MSG_STACK_HWM_UNKNOWN;
+	} else if (st.stack_high_water_prev_b >= MSG_STACK_HWM_UNKNOWN) {
+		m.stack_high_water_b = (uint16_t)(MSG_STACK_HWM_UNKNOWN - 1U); /* saturated */
+	} else {
+		m.stack_high_water_b = (uint16_t)st.stack_high_water_prev_b;
+	}
 	m.failed = st.failed;
 	for (k = 0U; k < app_corners; k++) {
 		(void)monitor_set_selftest(&app_monitor[k], &m);
@@ -290,7 +293,6 @@ uint64_t squeal_app_poll(void)
 	hal_can_status_t st;
 	uint64_t now = hal_time_us();
 	uint32_t i;
-	uint32_t k;
 
 	for (i = 0U; i < RX_BUDGET; i++) {
 		if (hal_can_receive(in, &f) != SQ_OK) {
@@ -314,6 +316,7 @@ uint64_t squeal_app_poll(void)
 		const uint32_t slot = classify_slot();
 		bool tx_room = true;
 		uint32_t task_us;
+		uint32_t k;
 
 		if (bus_status(&st) == SQ_OK) {
 			for (k = 0U; k < app_corners; k++) {

@@ -42,5 +42,8 @@ uint32_t hal_platform_faults(void)
 int hal_selftest(hal_selftest_t *result)
 {
 	HAL_REQUIRE(result != NULL);
+	*result = (hal_selftest_t){ .hse_hz = HAL_SELFTEST_NOT_MEASURED,
+				    .stack_high_water_prev_b = HAL_SELFTEST_NOT_MEASURED,
+				    .bor_level = HAL_SELFTEST_NO_BOR };
 	return SQ_ENOTSUP;
 }

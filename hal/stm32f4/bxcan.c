@@ -655,7 +655,11 @@ static void rx_push_error(bus_state_t *st, uint32_t esr, uint32_t lec)
 		st->rx_overruns++;
 		return;
 	}
-	f->id = (lec == LEC_ACK_ERROR) ? ERR_CLASS_ACK : ERR_CLASS_PROT;
+	if (lec == LEC_ACK_ERROR) {
+		f->id = ERR_CLASS_ACK;
+	} else {
+		f->id = ERR_CLASS_PROT;
+	}
 	f->flags = HAL_CAN_FLAG_ERR;
 	f->dlc = HAL_CAN_MAX_DLEN;
 	for (i = 0U; i < HAL_CAN_MAX_DLEN; i++) {
