@@ -6,6 +6,7 @@
 #include "hal.h"
 #include "calib_map.h"
 #include "sq_status.h"
+#include "squeal_msgs.h"
 
 #define HEADER_LEN 8U
 #define CRC_LEN 4U
@@ -171,12 +172,14 @@ static const calib_t factory = {
 	.pad_radius_um = 120000U,
 	.wheel_radius_um = 300000U,
 	.bitrate_kbps = 500U,
-	.disc_speed_id = 0x110U,
-	.pad_force_id = 0x111U,
-	.status_id = 0x300U,
-	.detail_id = 0x301U,
-	.diag_id = 0x302U,
-	.detail2_id = 0x303U,
+	/* the identifiers of squeal.dbc (squeal_msgs.h, checked against the
+	 * DBC by tests/protocol): written once, there */
+	.disc_speed_id = (uint16_t)MSG_DISC_SPEED_ID,
+	.pad_force_id = (uint16_t)MSG_PAD_FORCE_ID,
+	.status_id = (uint16_t)MSG_SQUEAL_STATUS_ID,
+	.detail_id = (uint16_t)MSG_SQUEAL_DETAIL_ID,
+	.diag_id = (uint16_t)MSG_SQUEAL_DIAG_ID,
+	.detail2_id = (uint16_t)MSG_SQUEAL_DETAIL2_ID,
 	.e2e_check_inputs = 1U,
 	.e2e_max_delta_counter = 2U,
 	.input_period_ms = 10U,
