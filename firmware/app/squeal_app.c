@@ -30,7 +30,19 @@ _Static_assert(CALIB_BLOCK_LEN <= HAL_CALIB_MAX_LEN, "the calibration block fits
 /* One monitor per corner; the 1 ms step classifies at most one of them
  * (round robin over the corners that have a new input pair). */
 static calib_t app_cal; /* the one calibration all corners read */
-static monitor_t app_monitor[CALIB_MAX_CORNERS];
+/*
+ * The monitors' memory doubles as the buffer the stored calibration block
+ * is read into: the block is decoded into app_cal before any monitor starts,
+ * and monitor_init() then clears each monitor it sets up. This keeps the
+ * block (CALIB_BLOCK_LEN bytes) off the start-up path's stack, the deepest
+ * one (make stack-usage), so the ECU's stack reserve can be that much
+ * smaller.
+ */
+static union {
+	monitor_t monitor[CALIB_MAX_CORNERS];
+	uint8_t block[CALIB_BLOCK_LEN];
+} app_mem;
+_Static_assert(sizeof(app_mem.monitor) >= CALIB_BLOCK_LEN, "the block fits the monitors' memory");
 static uint32_t app_corners = 1U;
 static uint32_t app_next_corner;
 static uint64_t app_next_tick_us;
@@ -39,7 +51,7 @@ static int app_init_rc;
 /* The calibration in use (the stored one, or the factory defaults). */
 static const calib_t *cal_in_use(void)
 {
-	return app_monitor[0].cal;
+	return app_mem.monitor[0].cal;
 }
 
 /*
@@ -58,8 +70,8 @@ static uint32_t rx_filters(hal_can_filter_t f[HAL_CAN_MAX_FILTERS])
 		const calib_input_t *in[2];
 		uint32_t j;
 
-		in[0] = &app_monitor[k].speed_rx.desc;
-		in[1] = &app_monitor[k].force_rx.desc;
+		in[0] = &app_mem.monitor[k].speed_rx.desc;
+		in[1] = &app_mem.monitor[k].force_rx.desc;
 		for (j = 0U; j < 2U; j++) {
 			const bool ext = (in[j]->flags & CALIB_IN_EXTENDED) != 0U;
 			const hal_can_filter_t want = {
@@ -169,7 +181,7 @@ static void report_selftest(void)
 	}
 	m.failed = st.failed;
 	for (k = 0U; k < app_corners; k++) {
-		(void)monitor_set_selftest(&app_monitor[k], &m);
+		(void)monitor_set_selftest(&app_mem.monitor[k], &m);
 	}
 }
 
@@ -177,18 +189,21 @@ static void report_selftest(void)
  * fault); unreadable or corrupt -> defaults and the CalibInvalid fault. */
 static bool load_calibration(calib_t *cal)
 {
-	uint8_t buf[CALIB_BLOCK_LEN];
 	calib_error_t why = CALIB_OK;
+	bool invalid = false;
+	uint32_t i;
 	int rc;
 
-	rc = hal_calib_read(buf, CALIB_BLOCK_LEN);
-	if (rc == SQ_OK) {
-		if (calib_decode(buf, CALIB_BLOCK_LEN, cal, &why) == SQ_OK) {
-			return false;
-		}
+	rc = hal_calib_read(app_mem.block, CALIB_BLOCK_LEN);
+	if ((rc != SQ_OK) ||
+	    (calib_decode(app_mem.block, CALIB_BLOCK_LEN, cal, &why) != SQ_OK)) {
+		calib_default(cal);
+		invalid = rc != SQ_ENOENT;
 	}
-	calib_default(cal);
-	return rc != SQ_ENOENT;
+	for (i = 0U; i < CALIB_BLOCK_LEN; i++) {
+		app_mem.block[i] = 0U; /* no stale bytes in the monitors' memory */
+	}
+	return invalid;
 }
 
 int squeal_app_init(void)
@@ -198,13 +213,13 @@ int squeal_app_init(void)
 	uint32_t k;
 
 	calib_invalid = load_calibration(&app_cal);
-	note_init(&first_error, monitor_init(&app_monitor[0], &app_cal, calib_invalid,
+	note_init(&first_error, monitor_init(&app_mem.monitor[0], &app_cal, calib_invalid,
 					     hal_platform_faults(), hal_time_us()), false);
 	/* corners 1.. only with a valid calibration (monitor 0 fell back to
 	 * the defaults' single corner otherwise) */
 	app_corners = calib_corner_count(cal_in_use());
 	for (k = 1U; k < app_corners; k++) {
-		(void)monitor_init_corner(&app_monitor[k], cal_in_use(), k, calib_invalid,
+		(void)monitor_init_corner(&app_mem.monitor[k], cal_in_use(), k, calib_invalid,
 					  hal_platform_faults(), hal_time_us());
 	}
 	app_next_corner = 0U;
@@ -249,7 +264,7 @@ static uint32_t classify_slot(void)
 	for (i = 0U; i < app_corners; i++) {
 		const uint32_t k = (app_next_corner + i) % app_corners;
 
-		if (monitor_wants_classify(&app_monitor[k])) {
+		if (monitor_wants_classify(&app_mem.monitor[k])) {
 			app_next_corner = (k + 1U) % app_corners;
 			return k;
 		}
@@ -281,7 +296,7 @@ static void to_every_corner(const hal_can_frame_t *f)
 	uint32_t k;
 
 	for (k = 0U; k < app_corners; k++) {
-		monitor_on_frame(&app_monitor[k], f);
+		monitor_on_frame(&app_mem.monitor[k], f);
 	}
 }
 
@@ -320,13 +335,13 @@ uint64_t squeal_app_poll(void)
 
 		if (bus_status(&st) == SQ_OK) {
 			for (k = 0U; k < app_corners; k++) {
-				monitor_on_can_status(&app_monitor[k], &st);
+				monitor_on_can_status(&app_mem.monitor[k], &st);
 			}
 		}
 		for (k = 0U; k < app_corners; k++) {
-			monitor_step_slot(&app_monitor[k], now, (app_corners == 1U) || (k == slot));
+			monitor_step_slot(&app_mem.monitor[k], now, (app_corners == 1U) || (k == slot));
 			if (tx_room) {
-				tx_room = transmit(&app_monitor[k]);
+				tx_room = transmit(&app_mem.monitor[k]);
 			}
 		}
 		hal_watchdog_kick();
@@ -335,7 +350,7 @@ uint64_t squeal_app_poll(void)
 		}
 		task_us = (hal_cycles() - t0) / cpu;
 		for (k = 0U; k < app_corners; k++) {
-			monitor_report_task_time(&app_monitor[k], task_us);
+			monitor_report_task_time(&app_mem.monitor[k], task_us);
 		}
 		app_next_tick_us += TICK_US;
 		if (app_next_tick_us <= now) {
@@ -357,7 +372,7 @@ int squeal_main(volatile const bool *stop)
 
 const monitor_t *squeal_app_monitor(void)
 {
-	return &app_monitor[0];
+	return &app_mem.monitor[0];
 }
 
 uint32_t squeal_app_corner_count(void)
@@ -367,7 +382,7 @@ uint32_t squeal_app_corner_count(void)
 
 const monitor_t *squeal_app_corner(uint32_t k)
 {
-	return (k < app_corners) ? &app_monitor[k] : NULL;
+	return (k < app_corners) ? &app_mem.monitor[k] : NULL;
 }
 
 int squeal_app_init_status(void)

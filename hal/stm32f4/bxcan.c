@@ -36,7 +36,7 @@
 #include "stm32_time.h"
 
 #define RX_RING_LEN 32U  /* power of two; 32 frames = 3 ms of a full bus */
-#define TX_QUEUE_LEN 16U
+#define TX_QUEUE_LEN 8U   /* + 3 mailboxes; each corner queues at most 4 frames a ms */
 #define INAK_TIMEOUT_US 10000U  /* enter init: end of the current frame  */
 #define JOIN_TIMEOUT_US 20000U  /* leave init: 11 recessive bits         */
 #define LOOPBACK_TIMEOUT_US 5000U /* one frame at 500 kbit/s: 0.3 ms    */

@@ -355,7 +355,7 @@ static void test_tx_queue_full_and_drain_in_order(void **state)
 		}
 		n++;
 	}
-	assert_int_equal(n, 3U + 16U); /* three mailboxes + the 16-frame queue */
+	assert_int_equal(n, 3U + 8U); /* three mailboxes + the 8-frame queue */
 	sim_block_tx(0U, false);
 	sim_advance_us(1000U);
 	for (i = 0; i < n; i++) {
