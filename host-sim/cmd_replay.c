@@ -58,6 +58,7 @@
 
 #define TICK_US 1000U
 #define SEGMENT_BACK_US 1000000U /* a jump back beyond this starts a segment */
+#define SEGMENT_POINTS_MAX 64U /* rebase points kept for the JSON (memory stays constant) */
 #define N_STATES 5U /* stable, bistable, unstable, not sliding, fault */
 #define N_LEVELS 4U
 
@@ -79,6 +80,14 @@ typedef struct {
 	const char *summary_json; /* --summary-json FILE|- (replay_summary.h) */
 	bool no_output;           /* --no-output: no frame lines, only counts */
 } replay_args_t;
+
+/* Where a new segment began: the log line, how far the log's time went
+ * back and the virtual time the rest of the log was re-based onto. */
+typedef struct {
+	uint64_t line_no;
+	uint64_t back_us;
+	uint64_t at_us;
+} segment_point_t;
 
 typedef struct {
 	/* lines */
@@ -106,6 +115,7 @@ typedef struct {
 	uint64_t backwards;
 	uint64_t segments;         /* new segments after a jump back > 1 s  */
 	int64_t rebase_us;         /* added to the log's time (segments)    */
+	segment_point_t segment_at[SEGMENT_POINTS_MAX]; /* the first ones */
 	uint64_t gaps;
 	uint64_t state_us[N_STATES];
 	uint8_t state;
@@ -463,6 +473,9 @@ static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t 
 	if ((t_us < r->now_us) && (r->now_us - t_us > SEGMENT_BACK_US)) {
 		const uint64_t back = r->now_us - t_us;
 
+		if (r->segments < SEGMENT_POINTS_MAX) {
+			r->segment_at[r->segments] = (segment_point_t){ line_no, back, r->now_us };
+		}
 		r->segments++;
 		r->rebase_us += (int64_t)back;
 		fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s: new segment %llu, log time re-based\n",
@@ -649,6 +662,34 @@ static void json_pair(json_writer_t *w, const char *key, uint64_t speed, uint64_
 	json_end_object(w);
 }
 
+/* "segments": the text summary's count and new ones, and where each new
+ * segment began (the line and jump of its stderr message, and the virtual
+ * time the log was re-based onto); points beyond SEGMENT_POINTS_MAX are
+ * counted in "points_not_listed". */
+static void json_segments(json_writer_t *w, const replay_t *r)
+{
+	const uint64_t listed = (r->segments < SEGMENT_POINTS_MAX) ? r->segments : SEGMENT_POINTS_MAX;
+	uint64_t i;
+
+	json_key(w, "segments");
+	json_begin_object(w);
+	json_kv_u64(w, "total", r->started ? r->segments + 1U : 0U);
+	json_kv_u64(w, "new", r->segments);
+	json_key(w, "rebase_points");
+	json_begin_array(w);
+	for (i = 0U; i < listed; i++) {
+		json_begin_object(w);
+		json_kv_u64(w, "segment", i + 2U);
+		json_kv_u64(w, "line", r->segment_at[i].line_no);
+		json_kv_seconds(w, "back_s", r->segment_at[i].back_us);
+		json_kv_seconds(w, "at_s", r->segment_at[i].at_us);
+		json_end_object(w);
+	}
+	json_end_array(w);
+	json_kv_u64(w, "points_not_listed", r->segments - listed);
+	json_end_object(w);
+}
+
 /* Everything after the episodes: the caller began the object with "log"
  * and the episodes (replay_summary_init); this closes it. */
 static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_t *a)
@@ -706,6 +747,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_pair(w, "stale_events", sp->stale_events, fo->stale_events);
 	json_kv_u64(w, "candump_dropped", r->dropped);
 	json_kv_u64(w, "time_backwards", r->backwards);
+	json_segments(w, r);
 	json_kv_u64(w, "gaps_skipped", r->gaps);
 	json_key(w, "state_time_s");
 	json_begin_object(w);

@@ -4,7 +4,7 @@
 #   build/<v>/test_inputmap
 INPUTMAP_TEST_VARIANTS := test test-fixed
 define inputmap_test_rules
-build/$(1)/test_inputmap: build/$(1)/app/tests/unit/test_inputmap.o build/$(1)/libfirmware.a
+build/$(1)/test_inputmap: build/$(1)/app/tests/unit/test_inputmap.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(INPUTMAP_TEST_VARIANTS),$(eval $(call inputmap_test_rules,$(v))))
@@ -14,7 +14,7 @@ TEST_PROGS += $(foreach v,$(INPUTMAP_TEST_VARIANTS),build/$(v)/test_inputmap)
 # text parser and the monitor's input path, both numeric builds.
 #   build/<v>/test_vehicle_inputs
 define vehicle_inputs_rules
-build/$(1)/test_vehicle_inputs: build/$(1)/app/tests/unit/test_vehicle_inputs.o build/$(1)/app/host-sim/calib_text.o build/$(1)/app/host-sim/calib_sections.o build/$(1)/libfirmware.a
+build/$(1)/test_vehicle_inputs: build/$(1)/app/tests/unit/test_vehicle_inputs.o build/$(1)/app/tests/support/test_contract.o build/$(1)/app/host-sim/calib_text.o build/$(1)/app/host-sim/calib_sections.o build/$(1)/libfirmware.a
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(INPUTMAP_TEST_VARIANTS),$(eval $(call vehicle_inputs_rules,$(v))))

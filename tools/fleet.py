@@ -26,7 +26,10 @@ build/fleet-report):
   index.html       all of the above on one page
   fleet.json       counts and the speed (logs/s)
 The borders are the closed forms of shared/model.md computed with scipy
-(tools/plots/plotlib.py) for the brake of --calib (default: the paper's).
+(tools/plots/plotlib.py), each corner's panel for that corner's brake in
+--calib (its [corner POS] keys over the flat ones; default: the paper's).
+Each corner's frames are found by the identifiers of the calibration
+(replay_summary.h), also when they are not the defaults + 0x10 k.
 Exit status: 0 report written (also with failed logs), 1 no report, 2 usage.
 """
 import argparse
@@ -220,16 +223,21 @@ def heat_rgba(cells, grid):
     return img, total
 
 
-def draw_heatmap(out, cells, grid, p, criterion, title):
+def heat_figure(cells, grid, setups, title):
+    """The heat map: a panel per corner over the map of its own brake
+    (setups: {corner name: DC.Corner}); returns (figure, {corner: axes})."""
     from matplotlib.patches import Patch
     plt = P.plt
-    corners = [c for c in DC.CORNERS if c in cells] or ["FL"]
+    corners = [c for c in DC.CORNERS if c in cells] or [min(setups, key=DC.CORNERS.index)]
     ncols = min(len(corners), 2)
     nrows = (len(corners) + 1) // 2
     fig, axes = plt.subplots(nrows, ncols, figsize=(6.4 * ncols + 1.8, 5.2 * nrows), squeeze=False)
     for ax in axes.flat[len(corners):]:
         ax.set_visible(False)
+    panels = {}
     for n, (ax, corner) in enumerate(zip(axes.flat, corners)):
+        panels[corner] = ax
+        p, criterion = setups[corner].brake, setups[corner].criterion
         if grid is None:
             DC.draw_map(ax, p, 16.0, 32000.0, criterion)
             ax.set_title("%s: no readable logs" % corner, fontsize=10)
@@ -252,8 +260,35 @@ def draw_heatmap(out, cells, grid, p, criterion, title):
             ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
                       framealpha=0.9)
     fig.suptitle(title, fontsize=11)
-    paths = P.save(fig, out, "heatmap")
-    return paths
+    return fig, panels
+
+
+def draw_heatmap(out, cells, grid, setups, title):
+    fig, _ = heat_figure(cells, grid, setups, title)
+    return P.save(fig, out, "heatmap")
+
+
+def corner_setups(calib_path):
+    """{corner name: DC.Corner} of the calibration; a corner a log reports
+    that the calibration lacks gets the flat brake at its position."""
+    cal = DC.read_calib(calib_path)
+    setups = {c.name: c for c in DC.corners({"flat": cal["flat"]})}
+    setups.update((c.name, c) for c in DC.corners(cal))
+    return setups
+
+
+def border_note(setups, calib_path, shown):
+    """One sentence per shown corner: whose brake its borders are drawn for."""
+    parts = []
+    for name in shown:
+        c = setups[name]
+        p = c.brake
+        parts.append("%s: %s limit, a = %g s/m, D = %g, w0 = %g rad/s, m = %g kg, dmu = %g"
+                     % (name, c.criterion, p["slope"], p["damping"], p["omega0"], p["mass"],
+                        p["delta_mu"]))
+    return ("Borders: Hopf border and stability limit from the closed forms of shared/model.md "
+            "(scipy, tools/plots/plotlib.py) for each corner's brake%s: %s." %
+            (" (from %s)" % calib_path if calib_path else " (the paper's)", "; ".join(parts)))
 
 
 def write_html(out, results, totals, n_ep, timing, border_note):
@@ -316,7 +351,7 @@ def main():
     if not logs or args.workers < 1:
         ap.error("give LOG files or --dir DIR with *.log files, and --workers >= 1")
     try:
-        p, criterion = DC.brake(DC.read_calib(args.calib))
+        setups = corner_setups(args.calib)
     except DC.CalibError as e:
         print("fleet: %s" % e, file=sys.stderr)
         return 2
@@ -344,19 +379,16 @@ def main():
     totals, n_ep = write_csvs(args.out, results)
     cells, grid = cells_of(results)
     write_cells(args.out, cells, grid)
-    border_note = ("Borders: Hopf border and %s stability limit from the closed forms of "
-                   "shared/model.md (scipy, tools/plots/plotlib.py) for a = %g s/m, D = %g, "
-                   "w0 = %g rad/s, m = %g kg, dmu = %g%s." %
-                   (criterion, p["slope"], p["damping"], p["omega0"], p["mass"], p["delta_mu"],
-                    " (from %s)" % args.calib if args.calib else " (the paper's brake)"))
-    draw_heatmap(args.out, cells, grid, p, criterion,
+    shown = [c for c in DC.CORNERS if c in cells] or [min(setups, key=DC.CORNERS.index)]
+    note = border_note(setups, args.calib, shown)
+    draw_heatmap(args.out, cells, grid, setups,
                  "%d logs: time per (v0, N) cell by reported state" % len(results))
-    write_html(args.out, results, totals, n_ep, timing, border_note)
+    write_html(args.out, results, totals, n_ep, timing, note)
     counts = {s: sum(r["status"] == s for r in results) for s in ("ok", "partial", "failed")}
     rate = len(results) / max(timing["job_s"], 1e-9)
     with open(os.path.join(args.out, "fleet.json"), "w") as f:
         json.dump(dict(timing, logs=len(results), episodes=n_ep, logs_per_s=rate,
-                       borders=border_note, **counts), f, indent=1)
+                       borders=note, **counts), f, indent=1)
     print("fleet: %d logs (ok %d, partial %d, failed %d), %d episodes; %s, %d workers: "
           "%.2f s, %.1f logs/s (wall with start-up %.2f s); report in %s" %
           (len(results), counts["ok"], counts["partial"], counts["failed"], n_ep, timing["where"],

@@ -9,14 +9,17 @@ usage: live_view.py (--iface IF | --log FILE [--rate X]) [--calib FILE]
                     [--v-max MPS] [--force-max N] [--interface NAME]
 
 Input: the monitor's frames SquealStatus (state, warning, Hopf margin),
-SquealDetail (v0) and SquealDetail2 (pad force) of corners FL, FR, RL, RR
-(corner k on the calibration's identifiers + 0x10 k), decoded with canmatrix
-from firmware/protocol/squeal.dbc; other frames are ignored.
+SquealDetail (v0) and SquealDetail2 (pad force) of the calibration's corners
+(without [corner] sections FL, FR, RL, RR on its identifiers + 0x10 k; with
+them each corner on its own status_id/detail_id/detail2_id, over the map of
+its own brake), decoded with canmatrix from firmware/protocol/squeal.dbc;
+other frames are ignored.
   --iface IF     a CAN interface (python-can, --interface socketcan by default)
   --log FILE     a candump -L log (e.g. the output of squeal-sim replay), played
                  at --rate X times its own speed (default 1; 0: as fast as it
                  reads; with --snapshot the default is 0)
-  --calib FILE   calibration text file: the brake of the map, the identifiers
+  --calib FILE   calibration text file: the corners, their brakes (maps) and
+                 their identifiers
   --snapshot FILE.png --after S
                  headless: draw one picture S seconds into the drive (log time,
                  or wall time on an interface; the end of a shorter log) and exit
@@ -70,11 +73,11 @@ class Corner:
 
 class LiveView:
     def __init__(self, calib, window_s=10.0, v_max=14.0, n_max=20000.0):
-        self.p, self.criterion = DC.brake(calib)
+        self.setup = {c.name: c for c in DC.corners(calib)}
         self.ids = {}
-        for k, ids in enumerate(DC.corner_ids(calib)):
-            for kind, cid in zip(KINDS, ids):
-                self.ids[cid] = (DC.CORNERS[k], kind)
+        for c in self.setup.values():
+            for kind, cid in zip(KINDS, c.ids):
+                self.ids[cid] = (c.name, kind)
         self.db = load_dbc()
         self.msgs = {kind: self.db.frame_by_name(kind) for kind in KINDS}
         self.window_s, self.v_max, self.n_max = window_s, v_max, n_max
@@ -125,7 +128,7 @@ class LiveView:
     # ---- drawing ----------------------------------------------------------
     def _build(self):
         plt = P.plt
-        names = [n for n in DC.CORNERS if n in self.corners] or ["FL"]
+        names = [n for n in DC.CORNERS if n in self.corners] or [min(self.setup, key=DC.CORNERS.index)]
         if self.fig is not None:
             plt.close(self.fig)
         self.fig = plt.figure(figsize=(11.0, 5.0 * len(names)), dpi=80)
@@ -134,7 +137,8 @@ class LiveView:
         self.axes = {}
         for i, name in enumerate(names):
             ax = self.fig.add_subplot(gs[2 * i:2 * i + 2, 0])
-            DC.draw_map(ax, self.p, self.v_max, self.n_max, self.criterion, legend=(i == 0))
+            brake = self.setup[name]
+            DC.draw_map(ax, brake.brake, self.v_max, self.n_max, brake.criterion, legend=(i == 0))
             trail = ax.scatter([], [], s=9, zorder=4)
             point = ax.scatter([], [], s=190, edgecolors="k", linewidths=1.6, zorder=5)
             title = ax.set_title(name, fontsize=10, loc="left")
@@ -157,8 +161,8 @@ class LiveView:
 
     def draw(self):
         from matplotlib.colors import to_rgba
-        names = tuple(n for n in DC.CORNERS if n in self.corners) or ("FL",)
-        if self.fig is None or names != self.drawn_corners:
+        names = tuple(n for n in DC.CORNERS if n in self.corners)
+        if self.fig is None or (names and names != self.drawn_corners):
             self._build()
         now = self.now if self.now is not None else 0.0
         for name, a in self.axes.items():

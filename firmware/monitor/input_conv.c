@@ -4,6 +4,7 @@
 #include <stddef.h>
 
 #include "fixmath.h"
+#include "hal.h"
 #include "sq_status.h"
 
 #define LIMIT ((int64_t)1 << 30)     /* numerators and denominators stay below */
@@ -108,9 +109,7 @@ int input_unit_parse(const char *s, input_unit_t *unit)
 {
 	uint32_t i;
 
-	if ((s == NULL) || (unit == NULL)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((s != NULL) && (unit != NULL));
 	if (same_nocase(s, "kph")) {
 		*unit = INPUT_UNIT_KMH;
 		return SQ_OK;
@@ -206,7 +205,9 @@ int input_conv_make(int32_t f_mant, int8_t f_exp, int32_t o_mant, int8_t o_exp,
 	frac_t scale;
 	frac_t offs;
 
-	if ((geom == NULL) || (conv == NULL) || (f_mant == 0) ||
+	HAL_REQUIRE((geom != NULL) && (conv != NULL));
+	/* the values are calibration data: calib_map checks them with this */
+	if ((f_mant == 0) ||
 	    (f_exp < -12) || (f_exp > 12) || (o_exp < -12) || (o_exp > 12) ||
 	    (geom->pad_radius_um == 0U) || (geom->wheel_radius_um == 0U) ||
 	    ((uint32_t)unit >= (uint32_t)INPUT_UNIT_COUNT)) {
@@ -259,9 +260,8 @@ int32_t input_conv_apply(const input_conv_t *conv, int64_t value)
 {
 	int64_t x;
 
-	if ((conv == NULL) || (conv->div <= 0)) {
-		return 0;
-	}
+	/* only a conversion input_conv_make() built */
+	HAL_REQUIRE((conv != NULL) && (conv->div > 0));
 	/* |value| < 2^32, |mul| < 2^30, |add| <= 2^61: no overflow */
 	if (value > (int64_t)UINT32_MAX) {
 		value = (int64_t)UINT32_MAX;
@@ -292,8 +292,10 @@ int32_t input_conv_torque_to_force(int32_t torque_mnm, int32_t v0_umps,
 	if (torque_mnm <= 0) {
 		return 0;
 	}
-	if ((mu_q30 <= 0) || (friction_faces == 0U) || (pad_radius_um == 0U)) {
-		return INT32_MAX;
+	/* the corner's geometry is validated with the calibration */
+	HAL_REQUIRE((friction_faces != 0U) && (pad_radius_um != 0U));
+	if (mu_q30 <= 0) {
+		return INT32_MAX; /* friction gone at this speed: no force bounds it */
 	}
 	/* N[mN] = T[mNm] 1e6 / (n_f mu r_p[um]) = x 2^30 / den */
 	x = ((int64_t)torque_mnm * 1000000) / (int64_t)pad_radius_um;  /* < 2^41 */

@@ -64,6 +64,11 @@ typedef struct {
 } input_conv_t;
 
 /*
+ * Contracts (hal.h): NULL pointers, a conversion input_conv_make() did not
+ * build, and a zero friction_faces or pad radius (validated with the
+ * calibration) are programming errors. Unit strings and calibration values
+ * are data: they get an error code.
+ *
  * The unit of a DBC unit string, case-insensitive ("km/h", "Km/h", "KPH",
  * "Bar", "rpm", "1/min", "Nm", ...). SQ_OK and *unit, or SQ_ENOENT.
  */

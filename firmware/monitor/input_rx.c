@@ -5,6 +5,7 @@
 
 #include "calib_map.h"
 #include "e2e_p02.h"
+#include "hal.h"
 #include "sq_status.h"
 
 #define POW10_MAX 9 /* 10^9 x 2^31 < 2^63 */
@@ -86,10 +87,9 @@ int input_rx_setup(const calib_input_t *desc, const input_geom_t *geom,
 {
 	const char *why = NULL;
 
-	if ((desc == NULL) || (geom == NULL) || (cfg == NULL) ||
-	    (calib_input_check(desc, &why) != SQ_OK)) {
-		return SQ_EINVAL;
-	}
+	/* descriptors come from a validated calibration */
+	HAL_REQUIRE((desc != NULL) && (geom != NULL) && (cfg != NULL));
+	HAL_REQUIRE(calib_input_check(desc, &why) == SQ_OK);
 	cfg->desc = *desc;
 	if ((input_conv_make(desc->factor.mant, desc->factor.exp, desc->offset.mant,
 			     desc->offset.exp, (input_unit_t)desc->unit, geom,
@@ -102,10 +102,14 @@ int input_rx_setup(const calib_input_t *desc, const input_geom_t *geom,
 
 bool input_rx_matches(const input_rx_cfg_t *cfg, const hal_can_frame_t *f, bool *id_only)
 {
-	const calib_input_t *in = &cfg->desc;
-	const bool ext = (f->flags & HAL_CAN_FLAG_EXT) != 0U;
-	const bool want_ext = (in->flags & CALIB_IN_EXTENDED) != 0U;
+	const calib_input_t *in;
+	bool ext;
+	bool want_ext;
 
+	HAL_REQUIRE((cfg != NULL) && (f != NULL) && (id_only != NULL));
+	in = &cfg->desc;
+	ext = (f->flags & HAL_CAN_FLAG_EXT) != 0U;
+	want_ext = (in->flags & CALIB_IN_EXTENDED) != 0U;
 	*id_only = false;
 	if (f->id != in->id) {
 		return false;
@@ -183,12 +187,14 @@ static input_rx_reason_t protection(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e
 input_rx_result_t input_rx_frame(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e,
 				 const hal_can_frame_t *f)
 {
-	const calib_input_t *in = &cfg->desc;
+	const calib_input_t *in;
 	input_rx_result_t r = { (uint8_t)INPUT_RX_OK, (uint8_t)E2E_P01_STATUS_NONEWDATA, 0U, 0U, 0 };
 	bool dlc_ok;
 	e2e_p01_status_t st = E2E_P01_STATUS_NONEWDATA;
 	input_rx_reason_t why;
 
+	HAL_REQUIRE((cfg != NULL) && (e2e != NULL) && (f != NULL));
+	in = &cfg->desc;
 	if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
 		dlc_ok = f->dlc == in->min_dlc;
 	} else {
@@ -223,8 +229,10 @@ input_rx_result_t input_rx_frame(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e,
 bool input_rx_plausible(const input_rx_cfg_t *cfg, bool *has_prev, int64_t *prev,
 			int64_t value)
 {
-	bool ok = (value >= cfg->raw_min) && (value <= cfg->raw_max);
+	bool ok;
 
+	HAL_REQUIRE((cfg != NULL) && (has_prev != NULL) && (prev != NULL));
+	ok = (value >= cfg->raw_min) && (value <= cfg->raw_max);
 	if (ok && *has_prev) {
 		const int64_t d = (value > *prev) ? (value - *prev) : (*prev - value);
 

@@ -52,9 +52,15 @@ typedef struct {
 } input_rx_result_t;
 
 /*
+ * Contracts (hal.h): NULL pointers are programming errors in every
+ * function here, and so is a descriptor calib_input_check() refuses (the
+ * calibration is validated before its inputs are set up). Frames are data:
+ * whatever they hold gives a reason, never a contract failure.
+ *
  * Prepare an input for a corner's geometry: conversion and raw bounds.
- * SQ_OK or SQ_EINVAL (a descriptor calib_input_check() refuses, or one
- * whose conversion cannot be built).
+ * SQ_OK or SQ_EINVAL (the conversion cannot be built for this geometry,
+ * e.g. a pressure for a corner without piston area, or the plausible range
+ * does not fit the raw domain).
  */
 int input_rx_setup(const calib_input_t *desc, const input_geom_t *geom,
 		   input_rx_cfg_t *cfg);

@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "hal.h"
 
 #define BITS_PER_FRAME 64U
 
@@ -49,7 +50,8 @@ uint8_t can_signal_min_dlc(const can_signal_t *sig)
 	uint8_t lsb;
 	uint32_t hi_byte;
 
-	if ((sig == NULL) || (sig->length == 0U) || (sig->length > CAN_SIGNAL_MAX_LEN) ||
+	HAL_REQUIRE(sig != NULL);
+	if ((sig->length == 0U) || (sig->length > CAN_SIGNAL_MAX_LEN) ||
 	    (sig->start_bit >= BITS_PER_FRAME) || (sig->byte_order > 1U) ||
 	    (sig->is_signed > 1U)) {
 		return 0U;
@@ -93,8 +95,9 @@ static uint64_t bit_mask(const can_signal_t *sig)
 
 bool can_signal_overlap(const can_signal_t *a, const can_signal_t *b)
 {
+	HAL_REQUIRE((a != NULL) && (b != NULL));
 	if (!can_signal_valid(a) || !can_signal_valid(b)) {
-		return true; /* a bad descriptor clashes with everything */
+		return true; /* a bad descriptor clashes with everything (validation) */
 	}
 	return (bit_mask(a) & bit_mask(b)) != 0U;
 }
@@ -105,9 +108,8 @@ uint32_t can_signal_get(const can_signal_t *sig, const uint8_t data[8])
 	uint8_t pos;
 	uint32_t i;
 
-	if (!can_signal_valid(sig) || (data == NULL)) {
-		return 0U; /* configurations are validated before use */
-	}
+	/* descriptors are validated with the calibration, before use */
+	HAL_REQUIRE(can_signal_valid(sig) && (data != NULL));
 	pos = lsb_position(sig);
 	for (i = 0U; i < sig->length; i++) {
 		raw |= (((uint32_t)data[pos / 8U] >> (pos % 8U)) & 1U) << i;
@@ -121,9 +123,7 @@ int64_t can_signal_value(const can_signal_t *sig, uint32_t raw)
 	uint64_t top;
 	uint64_t r;
 
-	if (!can_signal_valid(sig)) {
-		return 0;
-	}
+	HAL_REQUIRE(can_signal_valid(sig));
 	top = (uint64_t)1U << (sig->length - 1U);
 	r = (uint64_t)raw & ((top << 1) - 1U);
 	if ((sig->is_signed != 0U) && ((r & top) != 0U)) {
@@ -134,9 +134,7 @@ int64_t can_signal_value(const can_signal_t *sig, uint32_t raw)
 
 uint32_t can_signal_raw_of(const can_signal_t *sig, int64_t value)
 {
-	if (!can_signal_valid(sig)) {
-		return 0U;
-	}
+	HAL_REQUIRE(can_signal_valid(sig));
 	return (uint32_t)((uint64_t)value & (((uint64_t)1U << sig->length) - 1U));
 }
 
@@ -145,9 +143,7 @@ void can_signal_put(const can_signal_t *sig, uint8_t data[8], uint32_t raw)
 	uint8_t pos;
 	uint32_t i;
 
-	if (!can_signal_valid(sig) || (data == NULL)) {
-		return;
-	}
+	HAL_REQUIRE(can_signal_valid(sig) && (data != NULL));
 	pos = lsb_position(sig);
 	for (i = 0U; i < sig->length; i++) {
 		const uint8_t bit = (uint8_t)(1U << (pos % 8U));

@@ -34,6 +34,10 @@ typedef struct {
 } can_signal_t;
 
 /*
+ * Contracts (hal.h): a NULL pointer is a programming error everywhere; so
+ * is a bad descriptor given to get/value/put/raw_of, which take only
+ * descriptors the calibration's validation (min_dlc, valid, overlap) passed.
+ *
  * The smallest DLC that holds every bit of the signal (1..8), or 0 when the
  * descriptor is bad: length 0 or > 32, start bit > 63, byte order unknown,
  * or a bit beyond the 64 bits of a classic frame.
@@ -43,13 +47,13 @@ uint8_t can_signal_min_dlc(const can_signal_t *sig);
 /* True when sig is a usable descriptor (can_signal_min_dlc() != 0). */
 bool can_signal_valid(const can_signal_t *sig);
 
-/* True when the two signals share a bit (both must be valid). */
+/* True when the two signals share a bit, or when either is bad. */
 bool can_signal_overlap(const can_signal_t *a, const can_signal_t *b);
 
 /*
  * The raw bits of sig in data (the frame's 8 bytes; bytes at or beyond the
  * DLC are the caller's business: check the DLC against min_dlc first).
- * Unsigned: 0 .. 2^length - 1. A bad descriptor (validated at configuration) reads 0.
+ * Unsigned: 0 .. 2^length - 1.
  */
 uint32_t can_signal_get(const can_signal_t *sig, const uint8_t data[8]);
 

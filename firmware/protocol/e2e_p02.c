@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "e2e_p02.h"
 
+#include "hal.h"
 #include "sq_status.h"
 
 #define CRC8_H2F_POLY 0x2FU
@@ -31,7 +32,8 @@ uint8_t crc8_h2f(const uint8_t *data, size_t len)
 
 int e2e_p02_config_check(const e2e_p02_config_t *cfg)
 {
-	if ((cfg == NULL) || (cfg->data_len < 2U) || (cfg->data_len > 8U) ||
+	HAL_REQUIRE(cfg != NULL);
+	if ((cfg->data_len < 2U) || (cfg->data_len > 8U) ||
 	    (cfg->max_delta_counter < 1U) || (cfg->max_delta_counter > 15U)) {
 		return SQ_EINVAL;
 	}
@@ -40,19 +42,20 @@ int e2e_p02_config_check(const e2e_p02_config_t *cfg)
 
 uint8_t e2e_p02_crc(const e2e_p02_config_t *cfg, const uint8_t *data, uint8_t len)
 {
-	const uint8_t id = cfg->data_id_list[data[1] & COUNTER_MASK];
-	uint8_t c = crc8_h2f_update(0xFFU, &data[1], (size_t)len - 1U);
+	uint8_t id;
+	uint8_t c;
 
+	HAL_REQUIRE((cfg != NULL) && (data != NULL) && (len >= 2U) && (len <= 8U));
+	id = cfg->data_id_list[data[1] & COUNTER_MASK];
+	c = crc8_h2f_update(0xFFU, &data[1], (size_t)len - 1U);
 	return (uint8_t)(crc8_h2f_update(c, &id, 1U) ^ 0xFFU);
 }
 
 int e2e_p02_protect(const e2e_p02_config_t *cfg, e2e_p01_tx_t *tx,
 		    uint8_t *data, uint8_t len)
 {
-	if ((e2e_p02_config_check(cfg) != SQ_OK) || (tx == NULL) || (data == NULL) ||
-	    (len != cfg->data_len) || (tx->counter > COUNTER_MASK)) {
-		return SQ_EINVAL;
-	}
+	HAL_REQUIRE((e2e_p02_config_check(cfg) == SQ_OK) && (tx != NULL) && (data != NULL));
+	HAL_REQUIRE((len == cfg->data_len) && (tx->counter <= COUNTER_MASK));
 	data[1] = (uint8_t)((data[1] & 0xF0U) | tx->counter);
 	data[0] = e2e_p02_crc(cfg, data, len);
 	tx->counter = (uint8_t)((tx->counter + 1U) % E2E_P02_MODULUS);
@@ -64,9 +67,8 @@ e2e_p01_status_t e2e_p02_check(const e2e_p02_config_t *cfg, e2e_p01_rx_t *rx,
 {
 	e2e_p01_status_t st;
 
-	if ((rx == NULL) || (e2e_p02_config_check(cfg) != SQ_OK)) {
-		return E2E_P01_STATUS_WRONGCRC;
-	}
+	/* a bad configuration is the caller's error, never a wrong CRC */
+	HAL_REQUIRE((rx != NULL) && (e2e_p02_config_check(cfg) == SQ_OK));
 	e2e_rx_cycle(rx, (uint8_t)E2E_P02_MODULUS);
 	if (data == NULL) {
 		st = E2E_P01_STATUS_NONEWDATA;

@@ -34,13 +34,18 @@ uint8_t crc8_h2f_update(uint8_t crc, const uint8_t *data, size_t len);
 /* Whole CRC-8H2F: start 0xFF, final XOR 0xFF. */
 uint8_t crc8_h2f(const uint8_t *data, size_t len);
 
+/* SQ_OK, or SQ_EINVAL for data_len outside 2..8 or max_delta_counter
+ * outside 1..15. Contracts (hal.h): NULL pointers, and a configuration this
+ * rejects, given to crc/protect/check are programming errors, and so is
+ * protecting a buffer of another length; a received frame of the wrong
+ * length is bad data (WRONGCRC). */
 int e2e_p02_config_check(const e2e_p02_config_t *cfg);
 
 /* The CRC of a frame whose bytes 1..len-1 (counter included) are final. */
 uint8_t e2e_p02_crc(const e2e_p02_config_t *cfg, const uint8_t *data, uint8_t len);
 
 /* Write counter (low nibble of byte 1) and CRC, advance the counter
- * (15 -> 0). SQ_OK, or SQ_EINVAL with nothing changed. */
+ * (15 -> 0). SQ_OK (len must be cfg->data_len, the counter 0..15). */
 int e2e_p02_protect(const e2e_p02_config_t *cfg, e2e_p01_tx_t *tx,
 		    uint8_t *data, uint8_t len);
 

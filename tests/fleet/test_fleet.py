@@ -8,14 +8,15 @@ processes, then the same job once on a separately started `dask scheduler`
   - every broken log is listed with its reason, and the run goes on;
   - time per state per log equals replay's text summary of that log (run
     here, without Dask), the ALL rows are the sums, and each log has
-    state changes + 1 episodes (one corner today);
+    state changes + 1 episodes (the generated logs have one corner, FL);
   - the heat map: cells.csv's time is within each corner's total, the PNG
     has pixels in the reported-state colours of the states the fleet spent
     time in, the SVG draws both border lines; the HTML page shows it all;
   - the cluster path gives the same CSVs as the LocalCluster;
   - two corners (FL and an RR copied from it by a wrapper around squeal-sim,
-    since today's firmware has one corner): RR rows equal FL rows, and the
-    heat map gets a panel per corner.
+    so the aggregation is checked on identical corners; a real two-corner
+    vehicle calibration is tests/fleet/test_drive_corners.py): RR rows equal
+    FL rows, and the heat map gets a panel per corner.
 Prints "RESULT: N passed, M failed, K skipped".
 """
 import csv

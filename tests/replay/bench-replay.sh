@@ -14,6 +14,8 @@
 #   - times: median of RUNS (default 3) wall-clock runs each;
 #   - peak RSS of replay for 10^5 and 10^6 frames (/usr/bin/time, else the
 #     summary's VmHWM): constant memory means both are the same.
+#   - a vehicle-layout log (most frames on other identifiers) replayed with
+#     --calib, with and without frame output (at the end).
 # Builds nothing: make bench builds build/host/squeal-sim first.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -95,3 +97,25 @@ for f in "$DIR/in-1e5.log" "$DIR/in-1e6.log"; do
 	fi
 	printf 'replay peak RSS %8s frames: %6s kB (%s)\n' "$n" "$kb" "$how"
 done
+
+# Real vehicle traffic (issue 13's "about 4 M frames/s where most frames have
+# other identifiers"): a vehicle-layout log, 1,000,000 frames, the input map
+# of tests/inputmap/moto15_p02.cal (four corners, wheel speeds every 10 ms,
+# P02 pressure every 20 ms) among 40 other ECUs' identifiers
+# (tests/replay/gen_vehicle_traffic.py); replayed with --calib: the other
+# identifiers stop at the controller's filters (filtered_ids).
+VCAL=tests/inputmap/moto15_p02.cal
+VLOG=$DIR/vehicle-1e6.log
+if [ ! -s "$VLOG" ] || [ tests/replay/gen_vehicle_traffic.py -nt "$VLOG" ] || [ "$VCAL" -nt "$VLOG" ]; then
+	"$PY" tests/replay/gen_vehicle_traffic.py --calib "$VCAL" --frames 1000000 --out "$VLOG" --sim "$SIM" \
+		>"$DIR/vehicle-gen.txt"
+fi
+VN=$(wc -l <"$VLOG")
+VOWN=$("$SIM" replay --calib "$VCAL" --no-output "$VLOG" 2>&1 | awk '/frames_used/ {print $2}')
+echo "vehicle input: $VLOG ($VN frames, $VOWN on the input map's identifiers, $VCAL)"
+read -r vrep_w vrep <<<"$(median_s "$RUNS" "$SIM" replay --calib "$VCAL" "$VLOG")"
+read -r vnout_w vnout <<<"$(median_s "$RUNS" "$SIM" replay --calib "$VCAL" --no-output "$VLOG")"
+vfps() { awk -v n="$VN" -v t="$1" 'BEGIN {printf "%.0f", n / t}'; }
+printf 'vehicle replay         %8.2f %14s %10.2f  (%s runs; replay --calib, 4 corners)\n' \
+	"$vrep" "$(vfps "$vrep")" "$vrep_w" "$RUNS"
+printf 'vehicle --no-output    %8.2f %14s %10.2f  (%s runs)\n' "$vnout" "$(vfps "$vnout")" "$vnout_w" "$RUNS"

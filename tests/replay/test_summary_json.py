@@ -11,7 +11,10 @@
     decimals); for four-corner streams that today's firmware cannot send,
     through tests/replay/summary_driver (the summary module alone);
   - the counts equal the text summary's; --no-output writes no frames and
-    the same JSON; '--summary-json -' needs --no-output.
+    the same JSON; '--summary-json -' needs --no-output;
+  - segments: a log whose clock jumps back 2.8 s (a logger restart) and
+    then 0.4 s: the count equals the text summary's, the rebase point is the
+    line, jump and time the log was built with (and replay's message).
 Prints "RESULT: N passed, M failed".
 """
 import json
@@ -241,6 +244,53 @@ def check_log(tmp, name, plant_args):
     return eps
 
 
+def check_segments(tmp):
+    """A braking run, the same run again from 2.8 s before its end (the
+    logger's clock restarted), then three frames 0.4 s back (jitter, not a
+    restart)."""
+    one = os.path.join(tmp, "seg-one.log")
+    subprocess.run([SIM, "plant", "--log", one, "--quiet", "--scenario", "stop"], check=True)
+    lines = open(one).read().splitlines()
+    stamp = re.compile(r"^\((\d+)\.(\d{6})\)(.*)$")
+
+    def shifted(line, d_us):
+        m = stamp.match(line)
+        t = int(m.group(1)) * 1000000 + int(m.group(2)) + d_us
+        return "(%010d.%06d)%s" % (t // 1000000, t % 1000000, m.group(3))
+    last = stamp.match(lines[-1])
+    last_us = int(last.group(1)) * 1000000 + int(last.group(2))
+    two = lines + [shifted(x, last_us - 2800000) for x in lines]
+    jitter = [shifted(x, -400000) for x in two[-3:]]
+    log = os.path.join(tmp, "segments.log")
+    with open(log, "w") as f:
+        f.write("\n".join(two + jitter) + "\n")
+    p = run(["replay", log, "--no-output", "--summary-json", "-"])
+    doc = load_strict(p.stdout.decode())
+    err = p.stderr.decode()
+    t = text_summary(err)
+    seg = doc["segments"]
+    text = re.match(r"(\d+) \(new after a jump back of more than 1 s: (\d+)\)$", t["segments"])
+    R.check(p.returncode == 0 and text is not None and
+            [int(text.group(1)), int(text.group(2))] == [seg["total"], seg["new"]] == [2, 1],
+            "segments: total and new %s = the text summary's %s" % ([seg["total"], seg["new"]],
+                                                                    t["segments"]))
+    R.check(seg["rebase_points"] == [{"segment": 2, "line": len(lines) + 1, "back_s": Decimal("2.8"),
+                                      "at_s": Decimal(last_us) / 1000000}] and
+            seg["points_not_listed"] == 0,
+            "segments: rebase point at line %d, 2.8 s back, at %d us: %s" %
+            (len(lines) + 1, last_us, seg["rebase_points"]))
+    msg = re.findall(r":(\d+): timestamp goes back by ([\d.]+) s: new segment (\d+)", err)
+    R.check(msg == [(str(p["line"]), "%.6f" % p["back_s"], str(p["segment"])) for p in seg["rebase_points"]],
+            "segments: the rebase points are replay's messages %s" % msg)
+    R.check(doc["time_backwards"] == 3 == nums(t["time_backwards"])[0],
+            "segments: the 0.4 s jumps back are time_backwards (3), not segments")
+    empty = os.path.join(tmp, "seg-empty.log")
+    open(empty, "w").close()
+    doc = load_strict(run(["replay", empty, "--no-output", "--summary-json", "-"]).stdout.decode())
+    R.check(doc["segments"] == {"total": 0, "new": 0, "rebase_points": [], "points_not_listed": 0},
+            "segments: none in an empty log")
+
+
 def four_corners(tmp):
     """FL, FR and RR (no RL) through the summary module alone (canmatrix's
     encode takes raw values: NA values included on purpose)."""
@@ -295,6 +345,7 @@ def main():
         check_log(tmp, "stop-and-go", ["--scenario", os.path.join(ROOT, "scenarios", "stop-and-go.txt"),
                                        "--freeze-counter", "14"])
         four_corners(tmp)
+        check_segments(tmp)
         # escaping: a log name with quotes, backslash, control characters, UTF-8, a bad byte
         name = b'we"ird\\na\tme\x01\xc3\xa4\xff.log'
         path = os.path.join(tmp.encode(), name)

@@ -10,6 +10,13 @@
  * protocol's Profile 2 example (DataIDList 0x01..0x10, bytes 1..7 =
  * 01 00 00 00 00 00 00 -> CRC 0x1B), which a bitwise Python CRC
  * (poly 0x2F, init 0xFF, xorout 0xFF) reproduces.
+ *
+ * Contracts (issue 10 item 4): NULL pointers, a bad descriptor given to
+ * get/value/put/raw_of, a P02 configuration its check refuses, a conversion
+ * not built by input_conv_make go to hal_contract_failed (caught with
+ * expect_assert_failure, tests/support/test_contract.c); bad data (a short
+ * or corrupted frame, an unknown unit string, a bad descriptor given to the
+ * validation functions) keeps its error code.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -127,6 +134,32 @@ static void test_bad_descriptors(void **state)
 	assert_int_equal(can_signal_min_dlc(&moto_ok), 2);
 }
 
+static void test_signal_contracts(void **state)
+{
+	const can_signal_t ok = sig(0, 8, CAN_SIGNAL_INTEL, 0);
+	const can_signal_t bad = sig(60, 8, CAN_SIGNAL_INTEL, 0); /* beyond bit 63 */
+	const can_signal_t order = sig(0, 8, 2U, 0);               /* no such order */
+	uint8_t d[8] = { 0 };
+
+	(void)state;
+	expect_assert_failure(can_signal_min_dlc(NULL));
+	expect_assert_failure(can_signal_valid(NULL));
+	expect_assert_failure(can_signal_overlap(NULL, &ok));
+	expect_assert_failure(can_signal_overlap(&ok, NULL));
+	expect_assert_failure(can_signal_get(&ok, NULL));
+	expect_assert_failure(can_signal_get(NULL, d));
+	expect_assert_failure(can_signal_get(&bad, d));
+	expect_assert_failure(can_signal_get(&order, d));
+	expect_assert_failure(can_signal_value(&bad, 1U));
+	expect_assert_failure(can_signal_raw_of(&bad, -1));
+	expect_assert_failure(can_signal_put(&bad, d, 1U));
+	expect_assert_failure(can_signal_put(&ok, NULL, 1U));
+	/* the validation functions answer for a bad descriptor */
+	assert_false(can_signal_valid(&bad));
+	assert_false(can_signal_valid(&order));
+	assert_true(can_signal_overlap(&bad, &ok));
+}
+
 static void test_overlap(void **state)
 {
 	const can_signal_t a = sig(22, 15, CAN_SIGNAL_MOTOROLA, 0); /* 16..22, 24..31 */
@@ -230,6 +263,46 @@ static void test_p02_sequence_wraps_at_16(void **state)
 	assert_int_equal(e2e_p02_check(&c, &rx, NULL, 0), E2E_P01_STATUS_NONEWDATA);
 	assert_int_equal(e2e_p02_check(&c, &rx, d, 8), E2E_P01_STATUS_OKSOMELOST);
 	assert_int_equal(rx.lost_data, 1);
+}
+
+static void test_p02_contracts_and_bad_frames(void **state)
+{
+	const e2e_p02_config_t c = p02_cfg();
+	e2e_p02_config_t short_len = c;
+	e2e_p02_config_t no_delta = c;
+	e2e_p01_tx_t tx = { 0U };
+	e2e_p01_tx_t tx16 = { 16U };
+	e2e_p01_rx_t rx;
+	uint8_t d[8] = { 0 };
+
+	(void)state;
+	short_len.data_len = 1U;
+	no_delta.max_delta_counter = 0U;
+	e2e_p01_rx_init(&rx);
+	/* the configuration check answers for data it is given */
+	assert_int_equal(e2e_p02_config_check(&short_len), SQ_EINVAL);
+	assert_int_equal(e2e_p02_config_check(&no_delta), SQ_EINVAL);
+	assert_int_equal(e2e_p02_config_check(&c), SQ_OK);
+	expect_assert_failure(e2e_p02_config_check(NULL));
+	/* a NULL or refused configuration is never a wrong CRC */
+	expect_assert_failure(e2e_p02_check(NULL, &rx, d, 8));
+	expect_assert_failure(e2e_p02_check(&c, NULL, d, 8));
+	expect_assert_failure(e2e_p02_check(&short_len, &rx, d, 8));
+	expect_assert_failure(e2e_p02_check(&no_delta, &rx, d, 8));
+	expect_assert_failure(e2e_p02_protect(NULL, &tx, d, 8));
+	expect_assert_failure(e2e_p02_protect(&c, NULL, d, 8));
+	expect_assert_failure(e2e_p02_protect(&c, &tx, NULL, 8));
+	expect_assert_failure(e2e_p02_protect(&c, &tx, d, 7));   /* not data_len */
+	expect_assert_failure(e2e_p02_protect(&c, &tx16, d, 8)); /* counter 16 */
+	expect_assert_failure(e2e_p02_protect(&no_delta, &tx, d, 8));
+	expect_assert_failure(e2e_p02_crc(NULL, d, 8));
+	expect_assert_failure(e2e_p02_crc(&c, NULL, 8));
+	expect_assert_failure(e2e_p02_crc(&c, d, 1));
+	/* bad data: a frame of another length or a flipped bit is WRONGCRC */
+	assert_int_equal(e2e_p02_protect(&c, &tx, d, 8), SQ_OK);
+	assert_int_equal(e2e_p02_check(&c, &rx, d, 7), E2E_P01_STATUS_WRONGCRC);
+	d[5] ^= 0x10U;
+	assert_int_equal(e2e_p02_check(&c, &rx, d, 8), E2E_P01_STATUS_WRONGCRC);
 }
 
 static void test_counter_modulus_4(void **state)
@@ -348,6 +421,29 @@ static void test_refused_conversions(void **state)
 	assert_int_equal(input_conv_make(1, 0, 0, 0, INPUT_UNIT_COUNT, &geom, &c), SQ_EINVAL);
 }
 
+static void test_conversion_contracts(void **state)
+{
+	input_unit_t u;
+	input_conv_t c;
+	const input_conv_t unmade = { 1, 0, 0, 0U }; /* div 0: not from input_conv_make */
+
+	(void)state;
+	expect_assert_failure(input_unit_parse(NULL, &u));
+	expect_assert_failure(input_unit_parse("km/h", NULL));
+	expect_assert_failure(input_conv_make(1, 0, 0, 0, INPUT_UNIT_N, NULL, &c));
+	expect_assert_failure(input_conv_make(1, 0, 0, 0, INPUT_UNIT_N, &geom, NULL));
+	expect_assert_failure(input_conv_apply(NULL, 5));
+	expect_assert_failure(input_conv_apply(&unmade, 5));
+	expect_assert_failure(input_conv_torque_to_force(1000000, 0, 0U, 120000U, 1 << 28,
+							 161061274, 2 << 24));
+	expect_assert_failure(input_conv_torque_to_force(1000000, 0, 2U, 0U, 1 << 28,
+							 161061274, 2 << 24));
+	/* data: an unknown unit string is an error code, friction gone saturates */
+	assert_int_equal(input_unit_parse("furlong/fortnight", &u), SQ_ENOENT);
+	assert_int_equal(input_conv_torque_to_force(1000000, 0, 2U, 120000U, 0, 0, 2 << 24),
+			 INT32_MAX);
+}
+
 static void test_torque_to_force(void **state)
 {
 	/* 1000 Nm, 2 faces, r_p 0.12 m; mu(0) = 0.25 + 0.15 = 0.4:
@@ -379,16 +475,19 @@ int main(void)
 		cmocka_unit_test(test_motorola_short_in_one_byte),
 		cmocka_unit_test(test_signed_values),
 		cmocka_unit_test(test_bad_descriptors),
+		cmocka_unit_test(test_signal_contracts),
 		cmocka_unit_test(test_overlap),
 		cmocka_unit_test(test_put_is_the_inverse_and_keeps_other_bits),
 		cmocka_unit_test(test_crc8_h2f_check_value),
 		cmocka_unit_test(test_p02_spec_example),
 		cmocka_unit_test(test_p02_sequence_wraps_at_16),
+		cmocka_unit_test(test_p02_contracts_and_bad_frames),
 		cmocka_unit_test(test_counter_modulus_4),
 		cmocka_unit_test(test_unit_strings),
 		cmocka_unit_test(test_speed_conversions),
 		cmocka_unit_test(test_force_and_pressure_conversions),
 		cmocka_unit_test(test_refused_conversions),
+		cmocka_unit_test(test_conversion_contracts),
 		cmocka_unit_test(test_torque_to_force),
 	};
 

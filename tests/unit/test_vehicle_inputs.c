@@ -18,7 +18,9 @@
  * (shared/vehicle-bus.md) and the expected raw values and conversions are
  * derived by hand in the comments. Also: bad calibrations are refused whole
  * with FILE:LINE; a short frame is a bad DLC; "not available" and a fault
- * bit raise the input fault.
+ * bit raise the input fault. Contracts (issue 10 item 4): NULL pointers and
+ * a descriptor the calibration's validation refuses go to hal_contract_failed
+ * (expect_assert_failure, tests/support/test_contract.c); frames never do.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -470,6 +472,53 @@ static void test_written_map_parses_back(void **state)
 	assert_int_equal(back.inputs[0].offset.exp, -2);
 }
 
+static void test_input_rx_contracts(void **state)
+{
+	const calib_corner_t *c;
+	input_geom_t g;
+	input_rx_cfg_t cfg;
+	calib_input_t bad;
+	e2e_p01_rx_t rx;
+	hal_can_frame_t f;
+	bool id_only = false;
+	bool has_prev = false;
+	int64_t prev = 0;
+	static const uint8_t zeros[8] = { 0 };
+
+	(void)state;
+	load("ext29_kn.cal");
+	c = &cal.corners[0];
+	g = (input_geom_t){ c->pad_radius_um, c->wheel_radius_um, c->piston_area_cmm2,
+			    c->efficiency_ppm, c->axle_factor_ppm };
+	cfg = prepared("CLAMP", 0U);
+	e2e_p01_rx_init(&rx);
+	f = frame(0x0CF00A0BU, true, 8U, zeros);
+	expect_assert_failure(input_rx_setup(NULL, &g, &cfg));
+	expect_assert_failure(input_rx_setup(&cal.inputs[0], NULL, &cfg));
+	expect_assert_failure(input_rx_setup(&cal.inputs[0], &g, NULL));
+	/* a descriptor calib validation would refuse: a signal beyond bit 63 */
+	bad = cal.inputs[input_named("CLAMP")];
+	bad.sig.start_bit = 63U;
+	bad.sig.byte_order = (uint8_t)CAN_SIGNAL_INTEL;
+	expect_assert_failure(input_rx_setup(&bad, &g, &cfg));
+	expect_assert_failure(input_rx_matches(NULL, &f, &id_only));
+	expect_assert_failure(input_rx_matches(&cfg, NULL, &id_only));
+	expect_assert_failure(input_rx_matches(&cfg, &f, NULL));
+	expect_assert_failure(input_rx_frame(NULL, &rx, &f));
+	expect_assert_failure(input_rx_frame(&cfg, NULL, &f));
+	expect_assert_failure(input_rx_frame(&cfg, &rx, NULL));
+	expect_assert_failure(input_rx_plausible(NULL, &has_prev, &prev, 0));
+	expect_assert_failure(input_rx_plausible(&cfg, NULL, &prev, 0));
+	expect_assert_failure(input_rx_plausible(&cfg, &has_prev, NULL, 0));
+	/* bad data keeps its counted reason: a short frame, a wrong CRC */
+	f = frame(0x0CF00A0BU, true, 2U, zeros);
+	assert_true(input_rx_matches(&cfg, &f, &id_only));
+	assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, INPUT_RX_DLC);
+	f = frame(0x0CF00A0BU, true, 8U, zeros);
+	f.data[0] = 0x5AU; /* not the P01 CRC of these bytes */
+	assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, INPUT_RX_CRC);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -483,6 +532,7 @@ int main(void)
 		cmocka_unit_test(test_monitor_faults_on_layout_a),
 		cmocka_unit_test(test_bad_calibrations),
 		cmocka_unit_test(test_written_map_parses_back),
+		cmocka_unit_test(test_input_rx_contracts),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
