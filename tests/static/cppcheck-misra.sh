@@ -104,6 +104,10 @@ cppcheck_run() {
 	while [ $# -gt 0 ] && [ "$1" != -- ]; do args+=("$1"); shift; done
 	shift
 	files=("$@")
+	# a fresh build dir every run: cppcheck keeps each file's cross-file
+	# (CTU) information there, and after a header changed, stale entries
+	# report declarations twice (8.5) at lines that no longer hold them
+	rm -rf "$bdir"
 	mkdir -p "$bdir"
 	cppcheck --std=c11 --platform=unix64 --enable=warning,style,portability \
 		--library=tests/static/hal-contract.cfg \
