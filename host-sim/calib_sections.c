@@ -472,11 +472,15 @@ static const char *const input_keys[] = {
 	"stale_cycles", "max", "min", "step_max", NULL
 };
 
+/* the brake's standard deviations: flat keys a corner may override */
+#define SD_KEYS "mass_kg_sd", "omega0_radps_sd", "damping_sd", "mu_inf_sd", "delta_mu_sd", \
+	"slope_spm_sd", "slope_delta_mu_corr"
+
 static const char *const corner_keys[] = {
 	"speed", "force", "piston_area_mm2", "efficiency", "axle_factor", "friction_faces",
 	"mass_kg", "omega0_radps", "damping", "mu_inf", "delta_mu", "slope_spm", "criterion",
 	"pad_radius_m", "wheel_radius_m", "status_id", "detail_id", "detail2_id", "diag_id",
-	NULL
+	SD_KEYS, NULL
 };
 
 static int unknown_keys(const ctx_t *c, const char *const *known)
@@ -750,7 +754,7 @@ static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t
 {
 	static const char *const flat_keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
 		"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
-		"status_id", "detail_id", "detail2_id", "diag_id", NULL };
+		"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 	const calib_section_kv_t *kv;
 	calib_t tmp = *flat;
 	char msg[200];
@@ -984,7 +988,7 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 		calib_t tmp = *cal;
 		static const char *const keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
 			"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
-			"status_id", "detail_id", "detail2_id", "diag_id", NULL };
+			"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 		size_t k;
 
 		calib_flat_from_corner(c, &tmp);
