@@ -110,3 +110,35 @@ int model_adapter_eval(const squeal_params_t *params,
 	}
 	return rc;
 }
+
+int model_adapter_sigma(const squeal_params_t *params, const squeal_param_sd_t *sd,
+			int32_t v0_umps, int32_t force_mn, squeal_sigma_result_t *out)
+{
+	squeal_point_t pt;
+
+	HAL_REQUIRE((params != NULL) && (sd != NULL) && (out != NULL));
+	if ((v0_umps < 0) || (force_mn < 0)) {
+		v0_umps = -1; /* as model_adapter_eval: the model says invalid */
+		force_mn = -1;
+	}
+	point_from_int(v0_umps, force_mn, &pt);
+	return squeal_sigma_eval(params, sd, &pt, out);
+}
+
+int32_t model_adapter_margin_q16(const squeal_sigma_result_t *r, squeal_state_t state)
+{
+	squeal_num_t m = SQUEAL_SIGMA_MARGIN_MAX;
+	int32_t q;
+
+	HAL_REQUIRE(r != NULL);
+	if (squeal_sigma_margin(r, state, &m) != SQ_OK) {
+		return MODEL_MARGIN_NONE;
+	}
+#if defined(SQUEAL_NUMERIC_FIXED)
+	_Static_assert(SQUEAL_Q_MARGIN == 16, "margin is Q16");
+	q = m;
+#else
+	q = f_to_int(m, 65536.0f);
+#endif
+	return (q >= MODEL_MARGIN_NONE) ? MODEL_MARGIN_NONE : q;
+}
