@@ -193,6 +193,35 @@ static int pos_of(const char *n)
 	return -1;
 }
 
+int calib_text_brake(const calib_t *cal, const char *pos_name, calib_corner_t *brake,
+		     char *msg, size_t msglen)
+{
+	int pos;
+	uint32_t k;
+
+	if (pos_name == NULL) {
+		calib_corner_defaults(cal, 0U, brake);
+		return 0;
+	}
+	pos = pos_of(pos_name);
+	if (pos < 0) {
+		calib_text_errf(msg, msglen, "unknown corner '%s' (FL, FR, RL or RR)", pos_name);
+		return -1;
+	}
+	for (k = 0U; k < cal->n_corners; k++) {
+		if (cal->corners[k].pos == (uint8_t)pos) {
+			*brake = cal->corners[k];
+			return 0;
+		}
+	}
+	if ((cal->n_corners == 0U) && (pos == 0)) {
+		calib_corner_defaults(cal, 0U, brake); /* the legacy form's one corner */
+		return 0;
+	}
+	calib_text_errf(msg, msglen, "the calibration has no [corner %s]", pos_names[pos]);
+	return -1;
+}
+
 int calib_sections_header(calib_sections_t *s, const char *text, unsigned int line,
 			  char *msg, size_t msglen)
 {
