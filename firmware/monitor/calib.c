@@ -342,19 +342,16 @@ int calib_sd_validate(const calib_t *cal)
 static bool sds_valid(const calib_t *cal)
 {
 	calib_corner_t flat;
+	bool ok;
 	uint32_t k;
 
 	flat = (calib_corner_t){ 0 };
 	calib_corner_from_flat(cal, &flat);
-	if (!sd_valid(&flat)) {
-		return false;
+	ok = sd_valid(&flat);
+	for (k = 0U; ok && (k < CALIB_MAX_CORNERS); k++) {
+		ok = sd_valid(&cal->corners[k]);
 	}
-	for (k = 0U; k < CALIB_MAX_CORNERS; k++) {
-		if (!sd_valid(&cal->corners[k])) {
-			return false;
-		}
-	}
-	return true;
+	return ok;
 }
 
 static calib_error_t validate_why(const calib_t *cal)

@@ -72,8 +72,8 @@ static int corner_setup(monitor_t *me, uint32_t k)
  * classes, and no cost). */
 static bool sd_nonzero(const calib_sd_t *sd)
 {
-	return (sd->mass_sd_q16 | sd->omega0_sd_q12 | sd->damping_sd_q30 | sd->mu_inf_sd_q30 |
-		sd->delta_mu_sd_q30 | sd->slope_sd_q24) != 0;
+	return (sd->mass_sd_q16 != 0) || (sd->omega0_sd_q12 != 0) || (sd->damping_sd_q30 != 0) ||
+	       (sd->mu_inf_sd_q30 != 0) || (sd->delta_mu_sd_q30 != 0) || (sd->slope_sd_q24 != 0);
 }
 
 int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
@@ -415,20 +415,18 @@ static void update_uncertainty(monitor_t *me, const squeal_sigma_result_t *sig, 
 
 	me->uncertain = false;
 	me->margin_q16 = MODEL_MARGIN_NONE;
-	if (!valid || ((me->state != (uint8_t)SQUEAL_STATE_STABLE) &&
-		       (me->state != (uint8_t)SQUEAL_STATE_BISTABLE) &&
-		       (me->state != (uint8_t)SQUEAL_STATE_UNSTABLE))) {
-		return;
+	if (valid && (me->state <= (uint8_t)SQUEAL_STATE_UNSTABLE)) {
+		/* STABLE 0, BISTABLE 1, UNSTABLE 2: a class with a border */
+		me->margin_q16 = model_adapter_margin_q16(sig, (squeal_state_t)me->state);
+		if (me->state == (uint8_t)SQUEAL_STATE_STABLE) {
+			toward = me->margin_q16;
+		} else if (me->state == (uint8_t)SQUEAL_STATE_BISTABLE) {
+			toward = model_adapter_margin_q16(sig, SQUEAL_STATE_UNSTABLE); /* g_H */
+		} else {
+			/* unstable: already the most severe */
+		}
+		me->uncertain = toward < me->cal->uncertain_k_q16;
 	}
-	me->margin_q16 = model_adapter_margin_q16(sig, (squeal_state_t)me->state);
-	if (me->state == (uint8_t)SQUEAL_STATE_STABLE) {
-		toward = me->margin_q16;
-	} else if (me->state == (uint8_t)SQUEAL_STATE_BISTABLE) {
-		toward = model_adapter_margin_q16(sig, SQUEAL_STATE_UNSTABLE); /* g_H */
-	} else {
-		/* unstable: already the most severe */
-	}
-	me->uncertain = toward < me->cal->uncertain_k_q16;
 }
 
 static uint8_t warning_level(const monitor_t *me)
