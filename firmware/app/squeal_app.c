@@ -174,7 +174,12 @@ static void report_selftest(void)
  * fault); unreadable or corrupt -> defaults and the CalibInvalid fault. */
 static bool load_calibration(calib_t *cal)
 {
-	uint8_t buf[CALIB_BLOCK_LEN];
+	/* the stored block is read into the bytes of the output object (a
+	 * calib_t is larger than the block: tests/unit/test_calib.c asserts
+	 * it): the init stack then holds one calibration (calib_decode's), not
+	 * also a second kilobyte for the block; calib_decode reads the whole
+	 * block before it writes cal */
+	uint8_t *buf = (uint8_t *)cal;
 	calib_error_t why = CALIB_OK;
 	int rc;
 

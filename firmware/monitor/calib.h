@@ -236,7 +236,9 @@ int calib_sd_validate(const calib_t *cal);
 int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len);
 
 /* Parse and check a stored block. SQ_OK (*cal written), SQ_EBADMSG (with
- * *reason; *cal untouched). reason may be NULL. */
+ * *reason; *cal untouched). reason may be NULL. buf may be the bytes of
+ * the output object itself: the block is read whole before it is written
+ * (squeal_app reads the stored block into the calib_t it decodes into). */
 int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 		 calib_error_t *reason);
 

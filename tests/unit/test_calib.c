@@ -203,6 +203,10 @@ static void test_model_params_from_defaults(void **state)
 #endif
 }
 
+/* squeal_app's load_calibration reads the stored block into the calib_t
+ * it decodes into (calib_decode allows it): the block must fit in one. */
+_Static_assert(sizeof(calib_t) >= CALIB_BLOCK_LEN, "a calib_t holds the stored block");
+
 static void test_block_layout(void **state)
 {
 	uint8_t buf[CALIB_BLOCK_LEN];
