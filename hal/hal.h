@@ -194,9 +194,9 @@ void hal_watchdog_kick(void);
  *        is interrupted (reset, power loss) leaves either the old or the new
  *        block readable, never a mix; the CRC inside the block proves which.
  */
-/* 1 KiB flash page of the F103 minus the slot header (16): calib v2 with
- * the input map is 989 bytes */
-#define HAL_CALIB_MAX_LEN 1008U
+/* The F103's 2 KiB slot (two 1 KiB pages) minus the slot header (16):
+ * calib v2 with the input map and the deviations is 1136 bytes */
+#define HAL_CALIB_MAX_LEN 2032U
 int hal_calib_read(uint8_t *buf, uint32_t len);
 int hal_calib_write(const uint8_t *buf, uint32_t len);
 

@@ -193,6 +193,35 @@ static int pos_of(const char *n)
 	return -1;
 }
 
+int calib_text_brake(const calib_t *cal, const char *pos_name, calib_corner_t *brake,
+		     char *msg, size_t msglen)
+{
+	int pos;
+	uint32_t k;
+
+	if (pos_name == NULL) {
+		calib_corner_defaults(cal, 0U, brake);
+		return 0;
+	}
+	pos = pos_of(pos_name);
+	if (pos < 0) {
+		calib_text_errf(msg, msglen, "unknown corner '%s' (FL, FR, RL or RR)", pos_name);
+		return -1;
+	}
+	for (k = 0U; k < cal->n_corners; k++) {
+		if (cal->corners[k].pos == (uint8_t)pos) {
+			*brake = cal->corners[k];
+			return 0;
+		}
+	}
+	if ((cal->n_corners == 0U) && (pos == 0)) {
+		calib_corner_defaults(cal, 0U, brake); /* the legacy form's one corner */
+		return 0;
+	}
+	calib_text_errf(msg, msglen, "the calibration has no [corner %s]", pos_names[pos]);
+	return -1;
+}
+
 int calib_sections_header(calib_sections_t *s, const char *text, unsigned int line,
 			  char *msg, size_t msglen)
 {
@@ -472,11 +501,15 @@ static const char *const input_keys[] = {
 	"stale_cycles", "max", "min", "step_max", NULL
 };
 
+/* the brake's standard deviations: flat keys a corner may override */
+#define SD_KEYS "mass_kg_sd", "omega0_radps_sd", "damping_sd", "mu_inf_sd", "delta_mu_sd", \
+	"slope_spm_sd", "slope_delta_mu_corr"
+
 static const char *const corner_keys[] = {
 	"speed", "force", "piston_area_mm2", "efficiency", "axle_factor", "friction_faces",
 	"mass_kg", "omega0_radps", "damping", "mu_inf", "delta_mu", "slope_spm", "criterion",
 	"pad_radius_m", "wheel_radius_m", "status_id", "detail_id", "detail2_id", "diag_id",
-	NULL
+	SD_KEYS, NULL
 };
 
 static int unknown_keys(const ctx_t *c, const char *const *known)
@@ -750,7 +783,7 @@ static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t
 {
 	static const char *const flat_keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
 		"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
-		"status_id", "detail_id", "detail2_id", "diag_id", NULL };
+		"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 	const calib_section_kv_t *kv;
 	calib_t tmp = *flat;
 	char msg[200];
@@ -984,7 +1017,7 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 		calib_t tmp = *cal;
 		static const char *const keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
 			"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
-			"status_id", "detail_id", "detail2_id", "diag_id", NULL };
+			"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 		size_t k;
 
 		calib_flat_from_corner(c, &tmp);

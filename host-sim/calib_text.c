@@ -133,12 +133,30 @@ static const key_desc_t keys[] = {
 	  "bus the Squeal* frames go out on"),
 	K("input_listen_only", input_listen_only, KIND_BOOL, 1.0, "",
 	  "input bus listen-only: nothing sent on it, no ACK (yes/no)"),
+	/* uncertainty (issue 12, docs/uncertainty.md): 0 <= sd <= |param|
+	 * (mu_inf's <= 1.5), |corr| <= 1; all 0: crisp classes as before */
+	K("mass_kg_sd", sd.mass_sd_q16, KIND_Q, Q16, "kg",
+	  "standard deviation of mass_kg"),
+	K("omega0_radps_sd", sd.omega0_sd_q12, KIND_Q, Q12, "rad/s",
+	  "standard deviation of omega0_radps"),
+	K("damping_sd", sd.damping_sd_q30, KIND_Q, Q30, "-",
+	  "standard deviation of damping"),
+	K("mu_inf_sd", sd.mu_inf_sd_q30, KIND_Q, Q30, "-",
+	  "standard deviation of mu_inf (carried; enters no border)"),
+	K("delta_mu_sd", sd.delta_mu_sd_q30, KIND_Q, Q30, "-",
+	  "standard deviation of delta_mu"),
+	K("slope_spm_sd", sd.slope_sd_q24, KIND_Q, Q24, "s/m",
+	  "standard deviation of slope_spm"),
+	K("slope_delta_mu_corr", sd.slope_delta_mu_corr_q30, KIND_Q, Q30, "-",
+	  "correlation of slope_spm and delta_mu estimates"),
+	K("uncertain_k_sigma", uncertain_k_q16, KIND_Q, Q16, "sigma",
+	  "within k sigma of a border: the more severe neighbouring level (0 = off)"),
 };
 
 #define KEY_COUNT (sizeof(keys) / sizeof(keys[0]))
 #define LINE_MAX_LEN 512
 
-_Static_assert(KEY_COUNT == 38U, "one key per calib_t field");
+_Static_assert(KEY_COUNT == 46U, "one key per calib_t field");
 
 size_t calib_text_key_count(void)
 {
@@ -623,6 +641,9 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 	if (calib_validate(&cal) != SQ_OK) {
 		if ((int64_t)cal.mu_inf_q30 + cal.delta_mu_q30 < 0) {
 			calib_text_errf(err, errlen, "%s: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
+				name);
+		} else if (calib_sd_validate(&cal) != SQ_OK) {
+			calib_text_errf(err, errlen, "%s: a standard deviation must be in 0 .. |its parameter| (mu_inf_sd <= 1.5), a brake's own or a corner's",
 				name);
 		} else {
 			calib_text_errf(err, errlen, "%s: the six CAN identifiers (disc_speed_id, pad_force_id, status_id, detail_id, diag_id, detail2_id) must all differ",

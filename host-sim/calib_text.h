@@ -61,6 +61,15 @@ int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, ch
 int calib_text_flat_key(const char *key, const char *value, calib_t *cal, char *msg,
 			size_t msglen);
 
+/*
+ * The brake of one corner of a loaded calibration: pos_name NULL gives the
+ * flat keys' brake (every corner's default), "FL".."RR" (any case) the
+ * [corner] of that position. 0, or -1 with msg (unknown name, no such
+ * corner in the calibration).
+ */
+int calib_text_brake(const calib_t *cal, const char *pos_name, calib_corner_t *brake,
+		     char *msg, size_t msglen);
+
 /* One line of error text into err (nothing when errlen is 0). */
 void calib_text_errf(char *err, size_t errlen, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));

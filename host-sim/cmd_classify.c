@@ -11,9 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "calib.h"
+#include "calib_text.h"
 #include "sim_commands.h"
 #include "sim_num.h"
 #include "squeal_model.h"
+#include "squeal_sigma.h"
 
 /* Vehicle speed for display: v_car = (r_w / r_p) v0 with the default wheel
  * (0.30 m) and effective pad radius (0.12 m) of model.md section 8. */
@@ -26,6 +29,10 @@ typedef struct {
 	bool have_v0;
 	bool have_force;
 	squeal_criterion_t criterion;
+	bool have_criterion;
+	bool have_model_option;      /* --slope .. --delta-mu given         */
+	const char *calib_path;      /* --calib: brake and deviations from it */
+	const char *corner;          /* --corner POS: that corner's brake     */
 	bool json;
 } classify_args_t;
 
@@ -50,7 +57,8 @@ static void classify_usage(FILE *f)
 	fprintf(f,
 		"usage: squeal-sim classify --v0 MPS --force N [--slope A] [--damping D]\n"
 		"         [--omega0 W] [--mass M] [--mu-inf X] [--delta-mu Y]\n"
-		"         [--criterion exact|cubic] [--json]\n\n"
+		"         [--criterion exact|cubic] [--json]\n"
+		"       squeal-sim classify --v0 MPS --force N --calib FILE [--corner POS] [--json]\n\n"
 		"Classifies one operating point of the friction oscillator as stable,\n"
 		"bistable, unstable or not sliding (shared/model.md), with its margins.\n\n"
 		"  --v0 MPS         disc surface speed at the pad radius [m/s] (required)\n"
@@ -62,6 +70,10 @@ static void classify_usage(FILE *f)
 		"  --mu-inf X       friction coefficient at high speed (default 0.25)\n"
 		"  --delta-mu Y     mu_0 - mu_inf                    (default 0.15)\n"
 		"  --criterion C    exact (I1(s)/s, default) or cubic (the paper's)\n"
+		"  --calib FILE     the brake of a calibration file (its flat keys) with its\n"
+		"                   standard deviations: also the margin to the border next\n"
+		"                   to the class in sigmas (docs/uncertainty.md)\n"
+		"  --corner POS     with --calib: the brake of [corner POS] (FL, FR, RL, RR)\n"
 		"  --json           one JSON object on stdout\n\n"
 		"Exit status: 0 classified, 1 input outside the model's domain\n"
 		"(state \"invalid\"), 2 bad usage. Numeric build: %s.\n",
@@ -72,7 +84,8 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 {
 	enum {
 		OPT_V0 = 256, OPT_FORCE, OPT_SLOPE, OPT_DAMPING, OPT_OMEGA0,
-		OPT_MASS, OPT_MU_INF, OPT_DELTA_MU, OPT_CRITERION, OPT_JSON, OPT_HELP
+		OPT_MASS, OPT_MU_INF, OPT_DELTA_MU, OPT_CRITERION, OPT_JSON, OPT_HELP,
+		OPT_CALIB, OPT_CORNER
 	};
 	static const struct option options[] = {
 		{ "v0", required_argument, NULL, OPT_V0 },
@@ -85,6 +98,8 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 		{ "delta-mu", required_argument, NULL, OPT_DELTA_MU },
 		{ "criterion", required_argument, NULL, OPT_CRITERION },
 		{ "json", no_argument, NULL, OPT_JSON },
+		{ "calib", required_argument, NULL, OPT_CALIB },
+		{ "corner", required_argument, NULL, OPT_CORNER },
 		{ "help", no_argument, NULL, OPT_HELP },
 		{ NULL, 0, NULL, 0 },
 	};
@@ -108,24 +123,31 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 			a->have_force = true;
 			break;
 		case OPT_SLOPE:
+			a->have_model_option = true;
 			rc = parse_double("--slope", optarg, &a->params.slope_spm);
 			break;
 		case OPT_DAMPING:
+			a->have_model_option = true;
 			rc = parse_double("--damping", optarg, &a->params.damping);
 			break;
 		case OPT_OMEGA0:
+			a->have_model_option = true;
 			rc = parse_double("--omega0", optarg, &a->params.omega0_radps);
 			break;
 		case OPT_MASS:
+			a->have_model_option = true;
 			rc = parse_double("--mass", optarg, &a->params.mass_kg);
 			break;
 		case OPT_MU_INF:
+			a->have_model_option = true;
 			rc = parse_double("--mu-inf", optarg, &a->params.mu_inf);
 			break;
 		case OPT_DELTA_MU:
+			a->have_model_option = true;
 			rc = parse_double("--delta-mu", optarg, &a->params.delta_mu);
 			break;
 		case OPT_CRITERION:
+			a->have_criterion = true;
 			if (strcmp(optarg, "exact") == 0) {
 				a->criterion = SQUEAL_CRITERION_EXACT;
 			} else if (strcmp(optarg, "cubic") == 0) {
@@ -138,6 +160,12 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 			break;
 		case OPT_JSON:
 			a->json = true;
+			break;
+		case OPT_CALIB:
+			a->calib_path = optarg;
+			break;
+		case OPT_CORNER:
+			a->corner = optarg;
 			break;
 		case 'h':
 		case OPT_HELP:
@@ -160,6 +188,37 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 	if (!a->have_v0 || !a->have_force) {
 		fprintf(stderr, "squeal-sim classify: --v0 and --force are required (see --help)\n");
 		return -1;
+	}
+	if ((a->calib_path != NULL) && a->have_model_option) {
+		fprintf(stderr, "squeal-sim classify: --calib gives the brake; leave out --slope .. --delta-mu\n");
+		return -1;
+	}
+	if ((a->corner != NULL) && (a->calib_path == NULL)) {
+		fprintf(stderr, "squeal-sim classify: --corner needs --calib\n");
+		return -1;
+	}
+	return 0;
+}
+
+/* The brake and its deviations from --calib (criterion too, unless given). */
+static int load_brake(classify_args_t *a, squeal_params_t *params, squeal_param_sd_t *sd)
+{
+	calib_t cal;
+	calib_corner_t brake;
+	char err[300];
+
+	if (calib_text_load(a->calib_path, &cal, err, sizeof(err)) != SQ_OK) {
+		fprintf(stderr, "squeal-sim classify: %s\n", err);
+		return -1;
+	}
+	if (calib_text_brake(&cal, a->corner, &brake, err, sizeof(err)) != 0) {
+		fprintf(stderr, "squeal-sim classify: %s: %s\n", a->calib_path, err);
+		return -1;
+	}
+	calib_corner_params(&brake, params);
+	calib_corner_sd(&brake, sd);
+	if (!a->have_criterion) {
+		a->criterion = (squeal_criterion_t)brake.criterion;
 	}
 	return 0;
 }
@@ -202,7 +261,16 @@ static bool has(const squeal_result_t *r, uint32_t has_flag, uint32_t sat_flag)
 	return ((r->flags & has_flag) != 0U) && ((r->flags & sat_flag) == 0U);
 }
 
-static void print_json(const classify_args_t *a, const squeal_result_t *r)
+/* The margin in sigmas, or none (NAN): no deviations, no border, no class. */
+static double margin_of(const squeal_sigma_result_t *sig, bool have_sig)
+{
+	if (!have_sig || (sig->margin_sigma >= SQUEAL_SIGMA_MARGIN_MAX)) {
+		return (double)NAN;
+	}
+	return sim_num_to_double(sig->margin_sigma, SQUEAL_Q_MARGIN);
+}
+
+static void print_json(const classify_args_t *a, const squeal_result_t *r, double margin)
 {
 	result_d_t d;
 	const bool lnq = has(r, SQUEAL_HAS_LNQ, 0U);
@@ -231,6 +299,7 @@ static void print_json(const classify_args_t *a, const squeal_result_t *r)
 		   d.trigger_velocity_mps, false);
 	json_field("basin_ratio", has(r, SQUEAL_HAS_BASIN, SQUEAL_SAT_BASIN),
 		   d.basin_ratio, false);
+	json_field("border_margin_sigma", !isnan(margin), margin, false);
 	printf("  \"saturated\": %s\n", ((r->flags & 0xff00U) != 0U) ? "true" : "false");
 	printf("}\n");
 }
@@ -251,7 +320,7 @@ static const char *state_explanation(squeal_state_t state)
 	}
 }
 
-static void print_text(const classify_args_t *a, const squeal_result_t *r)
+static void print_text(const classify_args_t *a, const squeal_result_t *r, double margin)
 {
 	result_d_t d;
 
@@ -282,29 +351,48 @@ static void print_text(const classify_args_t *a, const squeal_result_t *r)
 		printf("basin ratio      rho = %.6g (< 1: cycle below the stick line)\n",
 		       d.basin_ratio);
 	}
+	if (!isnan(margin)) {
+		printf("border margin    %.3g sigma to the border next to this class\n", margin);
+	}
 }
 
 int cmd_classify(int argc, char **argv)
 {
 	classify_args_t a;
 	squeal_params_t params;
+	squeal_param_sd_t sd;
 	squeal_point_t point;
 	squeal_result_t result;
+	squeal_sigma_result_t sig;
+	bool have_sig = false;
 	int rc;
 
 	rc = classify_parse(argc, argv, &a);
 	if (rc != 0) {
 		return (rc > 0) ? 0 : 2;
 	}
-	/* A value the fixed build cannot represent saturates; the model then
-	 * rejects it like any other value outside its domain. */
-	(void)sim_params_to_model(&a.params, &params);
+	squeal_sigma_sd_zero(&sd);
+	if (a.calib_path != NULL) {
+		if (load_brake(&a, &params, &sd) != 0) {
+			return 2;
+		}
+	} else {
+		/* A value the fixed build cannot represent saturates; the model
+		 * then rejects it like any other value outside its domain. */
+		(void)sim_params_to_model(&a.params, &params);
+	}
 	(void)sim_point_to_model(a.v0_mps, a.force_n, &point);
 	rc = squeal_model_classify(&params, &point, a.criterion, &result);
+	if ((rc == SQ_OK) && (a.calib_path != NULL)) {
+		/* the margin of the class reported (the exact criterion's
+		 * borders, as the monitor's) */
+		have_sig = (squeal_sigma_eval(&params, &sd, &point, &sig) == SQ_OK) &&
+			   (squeal_sigma_margin(&sig, result.state, &sig.margin_sigma) == SQ_OK);
+	}
 	if (a.json) {
-		print_json(&a, &result);
+		print_json(&a, &result, margin_of(&sig, have_sig));
 	} else {
-		print_text(&a, &result);
+		print_text(&a, &result, margin_of(&sig, have_sig));
 	}
 	if (rc != SQ_OK) {
 		fprintf(stderr,

@@ -23,8 +23,12 @@ sigma-golden:
 # The fitting tools (numpy/scipy). The CLI test also runs today's
 # `squeal-sim replay --calib` on a written calibration.
 CALIB_FIT_TESTS := tests/calibrate/test_fit_friction.py tests/calibrate/test_fit_modal.py \
-	tests/calibrate/test_fit_cli.py
+	tests/calibrate/test_fit_cli.py tests/calibrate/test_classify_sigma.py \
+	tests/calibrate/test_done_when.py
 tests/calibrate/test_fit_cli.py: build/host/squeal-sim
+# issue 12's "Done when": fits -> calibration -> classify/replay --calib, both builds
+tests/calibrate/test_classify_sigma.py tests/calibrate/test_done_when.py: build/host/squeal-sim \
+	build/host-fixed/squeal-sim
 TEST_PROGS += $(CALIB_FIT_TESTS)
 
 # `make plots` also draws the documented calibration example (README,

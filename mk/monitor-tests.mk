@@ -15,6 +15,7 @@
 
 MONITOR_TEST_VARIANTS := test test-fixed
 MONITOR_TESTS := test_monitor test_monitor_faults test_calib test_app test_monitor_bounds test_app_buses \
+	test_monitor_sigma \
 	test_app_selftest
 MONITOR_EXPECT_H := build/monitor/monitor_expect.h
 

@@ -130,7 +130,7 @@ build/test/test_calib_flash: tests/target/test_calib_flash.c hal/stm32f4/calib_f
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -o $@ \
 		tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \
-		-Wl,--defsym,__calib_start=calib_flash_sim,--defsym,__calib_slot_size=1024,--defsym,__calib_slot_count=2
+		-Wl,--defsym,__calib_start=calib_flash_sim,--defsym,__calib_slot_size=2048,--defsym,__calib_slot_count=2
 TEST_PROGS += build/test/test_calib_flash
 
 # Target-in-the-loop tests: the scripts run QEMU on images make builds first.

@@ -81,6 +81,16 @@ static const calib_field_t fields[] = {
 	F_U8(input_listen_only, 0, 1),
 	F_U8(n_inputs, 0, (int64_t)CALIB_MAX_INPUTS),
 	F_U8(n_corners, 0, (int64_t)CALIB_MAX_CORNERS),
+	/* standard deviations: the parameters' stored ranges; sd <= |param|
+	 * and |corr| <= 1 are squeal_sigma_sd_check()'s (sd_check below) */
+	F_I32(sd.mass_sd_q16, 0, 10000LL << 16),
+	F_I32(sd.omega0_sd_q12, 0, 500000LL << 12),
+	F_I32(sd.damping_sd_q30, 0, 1LL << 30),
+	F_I32(sd.mu_inf_sd_q30, 0, 3LL << 29),
+	F_I32(sd.delta_mu_sd_q30, 0, 3LL << 29),
+	F_I32(sd.slope_sd_q24, 0, 20LL << 24),
+	F_I32(sd.slope_delta_mu_corr_q30, -(1LL << 30), 1LL << 30),
+	F_I32(uncertain_k_q16, 0, 100LL << 16),  /* 0: rule off */
 	FI(offsetof(calib_t, inputs[0].id), 4U, 0U, 0, 0x1FFFFFFF),
 	FI(offsetof(calib_t, inputs[0].flags), 1U, 0U, 0, (int64_t)CALIB_IN_FLAGS_ALL),
 	FI(offsetof(calib_t, inputs[0].min_dlc), 1U, 0U, 0, 8),
@@ -154,6 +164,14 @@ static const calib_field_t fields[] = {
 	FC(offsetof(calib_t, corners[0].detail_id), 2U, 0U, 0, 0x7FF),
 	FC(offsetof(calib_t, corners[0].detail2_id), 2U, 0U, 0, 0x7FF),
 	FC(offsetof(calib_t, corners[0].diag_id), 2U, 0U, 0, 0x7FF),
+	FC(offsetof(calib_t, corners[0].sd.mass_sd_q16), 4U, 1U, 0, 10000LL << 16),
+	FC(offsetof(calib_t, corners[0].sd.omega0_sd_q12), 4U, 1U, 0, 500000LL << 12),
+	FC(offsetof(calib_t, corners[0].sd.damping_sd_q30), 4U, 1U, 0, 1LL << 30),
+	FC(offsetof(calib_t, corners[0].sd.mu_inf_sd_q30), 4U, 1U, 0, 3LL << 29),
+	FC(offsetof(calib_t, corners[0].sd.delta_mu_sd_q30), 4U, 1U, 0, 3LL << 29),
+	FC(offsetof(calib_t, corners[0].sd.slope_sd_q24), 4U, 1U, 0, 20LL << 24),
+	FC(offsetof(calib_t, corners[0].sd.slope_delta_mu_corr_q30), 4U, 1U,
+	   -(1LL << 30), 1LL << 30),
 };
 
 #define FIELD_COUNT (sizeof(fields) / sizeof(fields[0]))
@@ -204,6 +222,8 @@ static const calib_t factory = {
 	.input_listen_only = 0U,
 	.n_inputs = 0U,
 	.n_corners = 0U,
+	.sd = { 0 },                   /* no uncertainty: crisp classes   */
+	.uncertain_k_q16 = 2 << 16,    /* k = 2 sigma                     */
 };
 
 void calib_default(calib_t *cal)
@@ -301,6 +321,42 @@ static bool bitrate_exact(uint16_t kbps)
 	return false;
 }
 
+/* Each brake's deviations in squeal_sigma's domain for its parameters
+ * (0 <= sd <= |param|, mu_inf's sd <= 1.5, |corr| <= 1): the flat keys and
+ * every corner slot (unused slots are zeros, which pass). */
+static bool sds_valid(const calib_t *cal);
+
+static bool sd_valid(const calib_corner_t *c)
+{
+	squeal_params_t p;
+	squeal_param_sd_t sd;
+
+	calib_corner_params(c, &p);
+	calib_corner_sd(c, &sd);
+	return squeal_sigma_sd_check(&p, &sd) == SQ_OK;
+}
+
+int calib_sd_validate(const calib_t *cal)
+{
+	HAL_REQUIRE(cal != NULL);
+	return sds_valid(cal) ? SQ_OK : SQ_EINVAL;
+}
+
+static bool sds_valid(const calib_t *cal)
+{
+	calib_corner_t flat;
+	bool ok;
+	uint32_t k;
+
+	flat = (calib_corner_t){ 0 };
+	calib_corner_from_flat(cal, &flat);
+	ok = sd_valid(&flat);
+	for (k = 0U; ok && (k < CALIB_MAX_CORNERS); k++) {
+		ok = sd_valid(&cal->corners[k]);
+	}
+	return ok;
+}
+
 static calib_error_t validate_why(const calib_t *cal)
 {
 	uint32_t i;
@@ -317,7 +373,8 @@ static calib_error_t validate_why(const calib_t *cal)
 			}
 		}
 	}
-	if (((int64_t)cal->mu_inf_q30 + cal->delta_mu_q30 < 0) || !ids_distinct(cal)) {
+	if (((int64_t)cal->mu_inf_q30 + cal->delta_mu_q30 < 0) || !ids_distinct(cal) ||
+	    !sds_valid(cal)) {
 		return CALIB_ERR_RANGE;
 	}
 	if (!bitrate_exact(cal->bitrate_kbps)) {
@@ -458,6 +515,39 @@ void calib_corner_params(const calib_corner_t *c, squeal_params_t *params)
 	params->mu_inf = (float)c->mu_inf_q30 * (1.0f / 1073741824.0f);
 	params->delta_mu = (float)c->delta_mu_q30 * (1.0f / 1073741824.0f);
 	params->slope_spm = (float)c->slope_q24 * (1.0f / 16777216.0f);
+#endif
+}
+
+void calib_corner_sd(const calib_corner_t *c, squeal_param_sd_t *sd)
+{
+	HAL_REQUIRE((c != NULL) && (sd != NULL));
+#if defined(SQUEAL_NUMERIC_FIXED)
+	sd->mass_kg_sd = c->sd.mass_sd_q16;
+	sd->omega0_radps_sd = c->sd.omega0_sd_q12;
+	sd->damping_sd = c->sd.damping_sd_q30;
+	sd->mu_inf_sd = c->sd.mu_inf_sd_q30;
+	sd->delta_mu_sd = c->sd.delta_mu_sd_q30;
+	sd->slope_spm_sd = c->sd.slope_sd_q24;
+	sd->slope_delta_mu_corr = c->sd.slope_delta_mu_corr_q30; /* Q30 = SQUEAL_Q_CORR */
+#else
+	sd->mass_kg_sd = (float)c->sd.mass_sd_q16 * (1.0f / 65536.0f);
+	sd->omega0_radps_sd = (float)c->sd.omega0_sd_q12 * (1.0f / 4096.0f);
+	sd->damping_sd = (float)c->sd.damping_sd_q30 * (1.0f / 1073741824.0f);
+	sd->mu_inf_sd = (float)c->sd.mu_inf_sd_q30 * (1.0f / 1073741824.0f);
+	sd->delta_mu_sd = (float)c->sd.delta_mu_sd_q30 * (1.0f / 1073741824.0f);
+	sd->slope_spm_sd = (float)c->sd.slope_sd_q24 * (1.0f / 16777216.0f);
+	sd->slope_delta_mu_corr = (float)c->sd.slope_delta_mu_corr_q30 *
+				  (1.0f / 1073741824.0f);
+#endif
+}
+
+squeal_num_t calib_uncertain_k(const calib_t *cal)
+{
+	HAL_REQUIRE(cal != NULL);
+#if defined(SQUEAL_NUMERIC_FIXED)
+	return cal->uncertain_k_q16; /* Q16 = SQUEAL_Q_MARGIN */
+#else
+	return (float)cal->uncertain_k_q16 * (1.0f / 65536.0f);
 #endif
 }
 

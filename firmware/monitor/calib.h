@@ -28,6 +28,7 @@
 
 #include "can_signal.h"
 #include "squeal_model.h"
+#include "squeal_sigma.h"
 
 #define CALIB_MAGIC 0x42435153UL /* "SQCB" little-endian */
 #define CALIB_VERSION 2U /* 2: buses (issue 10), input map and corners (issue 11) */
@@ -65,31 +66,50 @@ typedef struct {
 	int8_t exp;
 } calib_dec_t;
 
+/*
+ * Standard deviations of the brake's parameters (issue 12, docs/uncertainty.md),
+ * in the Q formats of the parameters they belong to; all zero (the default)
+ * is today's crisp classification. Domain: 0 <= sd <= |parameter|,
+ * |corr| <= 1 (calib_validate).
+ */
+typedef struct {
+	int32_t mass_sd_q16;       /* sd of m                                 */
+	int32_t omega0_sd_q12;     /* sd of w0                                */
+	int32_t damping_sd_q30;    /* sd of D                                 */
+	int32_t mu_inf_sd_q30;     /* sd of mu_inf (enters no border)         */
+	int32_t delta_mu_sd_q30;   /* sd of delta_mu                          */
+	int32_t slope_sd_q24;      /* sd of a                                 */
+	int32_t slope_delta_mu_corr_q30; /* corr(a, delta_mu), -1 .. 1       */
+} calib_sd_t;
+
+/* Members ordered by alignment so that calib_t (on the ECU's stack while a
+ * block is decoded) carries little padding; the stored order is calib.c's
+ * table, not this one. */
 typedef struct {
 	uint32_t id;               /* 11- or 29-bit identifier                */
+	uint32_t mux_value;        /* selector value (CALIB_IN_MUX)           */
+	uint32_t na_raw;           /* CALIB_IN_NA                             */
+	uint32_t na_raw2;          /* CALIB_IN_NA2                            */
+	calib_dec_t factor;        /* physical = raw x factor + offset        */
+	calib_dec_t offset;
+	calib_dec_t max;           /* plausible range and step, physical      */
+	calib_dec_t min;
+	calib_dec_t step_max;
+	uint16_t data_id;          /* P01                                     */
+	uint16_t period_ms;        /* expected period                         */
 	uint8_t flags;             /* CALIB_IN_*                              */
 	uint8_t min_dlc;           /* shorter frames: bad DLC                 */
 	can_signal_t sig;          /* the value                               */
-	calib_dec_t factor;        /* physical = raw x factor + offset        */
-	calib_dec_t offset;
 	uint8_t unit;              /* input_unit_t                            */
 	can_signal_t mux;          /* selector (CALIB_IN_MUX)                 */
-	uint32_t mux_value;
-	uint32_t na_raw;           /* CALIB_IN_NA                             */
-	uint32_t na_raw2;          /* CALIB_IN_NA2                            */
 	uint8_t qualifier_bit;     /* DBC bit number (CALIB_IN_QUALIFIER)     */
 	uint8_t qualifier_invalid; /* the bit's value that means invalid     */
 	uint8_t protection;        /* CALIB_PROT_*                            */
-	uint16_t data_id;          /* P01                                     */
 	uint8_t data_id_list[CALIB_DATA_ID_LIST_LEN]; /* P02                  */
 	can_signal_t counter;      /* CALIB_PROT_COUNTER                      */
 	uint8_t counter_modulus;   /* 2..16                                   */
 	uint8_t max_delta_counter; /* largest accepted counter step           */
-	uint16_t period_ms;        /* expected period                         */
 	uint8_t stale_cycles;      /* missed periods before stale             */
-	calib_dec_t max;           /* plausible range and step, physical      */
-	calib_dec_t min;
-	calib_dec_t step_max;
 } calib_input_t;
 
 typedef struct {
@@ -113,6 +133,7 @@ typedef struct {
 	uint16_t detail_id;
 	uint16_t detail2_id;
 	uint16_t diag_id;
+	calib_sd_t sd;             /* the corner's brake's deviations         */
 } calib_corner_t;
 
 typedef struct {
@@ -165,16 +186,23 @@ typedef struct {
 	/* input map and corners (0 corners: the legacy flat keys above) */
 	uint8_t n_inputs;
 	uint8_t n_corners;
+	/* uncertainty (issue 12): the flat brake's deviations (every corner
+	 * inherits them) and k of the "uncertain" rule */
+	calib_sd_t sd;               /* all 0: crisp classes               0 */
+	int32_t uncertain_k_q16;     /* k [sigma], SQUEAL_Q_MARGIN         2 */
 	calib_input_t inputs[CALIB_MAX_INPUTS];
 	calib_corner_t corners[CALIB_MAX_CORNERS];
 } calib_t;
 
 /* Size of the stored block: header 8 + fields + CRC 4 (v1: 103 bytes, then
- * 3 bus bytes, 2 counts, 8 inputs of CALIB_INPUT_STORED_LEN, 4 corners of
- * CALIB_CORNER_STORED_LEN). */
+ * 3 bus bytes, 2 counts, the flat deviations and k, 8 inputs of
+ * CALIB_INPUT_STORED_LEN, 4 corners of CALIB_CORNER_STORED_LEN (with their
+ * deviations): 1136 bytes). */
+#define CALIB_SD_STORED_LEN 28U
 #define CALIB_INPUT_STORED_LEN 82U
-#define CALIB_CORNER_STORED_LEN 57U
-#define CALIB_BLOCK_LEN (103U + 3U + 2U + (CALIB_MAX_INPUTS * CALIB_INPUT_STORED_LEN) + \
+#define CALIB_CORNER_STORED_LEN (57U + CALIB_SD_STORED_LEN)
+#define CALIB_BLOCK_LEN (103U + 3U + 2U + CALIB_SD_STORED_LEN + 4U + \
+			 (CALIB_MAX_INPUTS * CALIB_INPUT_STORED_LEN) + \
 			 (CALIB_MAX_CORNERS * CALIB_CORNER_STORED_LEN))
 
 /* Why a block was refused (calib_decode's *reason). */
@@ -198,6 +226,9 @@ const calib_t *calib_factory(void);
 /* Range check of every field. SQ_OK or SQ_EINVAL. NULL pointers given to
  * any calib_* function are programming errors: hal_contract_failed(). */
 int calib_validate(const calib_t *cal);
+/* The part of calib_validate() about the deviations (flat and every corner
+ * slot in squeal_sigma_sd_check()'s domain): SQ_OK or SQ_EINVAL. */
+int calib_sd_validate(const calib_t *cal);
 
 /* Serialize (always CALIB_BLOCK_LEN bytes; a shorter buffer is a
  * programming error). SQ_OK, SQ_EINVAL (a calibration that does not
@@ -205,7 +236,9 @@ int calib_validate(const calib_t *cal);
 int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len);
 
 /* Parse and check a stored block. SQ_OK (*cal written), SQ_EBADMSG (with
- * *reason; *cal untouched). reason may be NULL. */
+ * *reason; *cal untouched). reason may be NULL. buf may be the bytes of
+ * the output object itself: the block is read whole before it is written
+ * (squeal_app reads the stored block into the calib_t it decodes into). */
 int calib_decode(const uint8_t *buf, uint32_t len, calib_t *cal,
 		 calib_error_t *reason);
 
@@ -221,6 +254,10 @@ int calib_field_range(uint32_t offset, int64_t *min, int64_t *max);
  * from one corner. */
 void calib_model_params(const calib_t *cal, squeal_params_t *params);
 void calib_corner_params(const calib_corner_t *corner, squeal_params_t *params);
+/* The standard deviations of one corner's brake (squeal_sigma.h's form). */
+void calib_corner_sd(const calib_corner_t *corner, squeal_param_sd_t *sd);
+/* k of the "uncertain" rule in SQUEAL_Q_MARGIN's format (float: sigmas). */
+squeal_num_t calib_uncertain_k(const calib_t *cal);
 
 /* CRC-32 (IEEE 802.3), continuing from crc (start with 0). */
 uint32_t calib_crc32(uint32_t crc, const uint8_t *data, uint32_t len);

@@ -326,6 +326,7 @@ void calib_corner_from_flat(const calib_t *cal, calib_corner_t *c)
 	c->detail_id = cal->detail_id;
 	c->detail2_id = cal->detail2_id;
 	c->diag_id = cal->diag_id;
+	c->sd = cal->sd;
 }
 
 void calib_flat_from_corner(const calib_corner_t *c, calib_t *cal)
@@ -343,6 +344,7 @@ void calib_flat_from_corner(const calib_corner_t *c, calib_t *cal)
 	cal->detail_id = c->detail_id;
 	cal->detail2_id = c->detail2_id;
 	cal->diag_id = c->diag_id;
+	cal->sd = c->sd;
 }
 
 void calib_corner_defaults(const calib_t *cal, uint8_t pos, calib_corner_t *c)

@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 #include "model_adapter.h"
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "hal.h"
 
 #if defined(SQUEAL_NUMERIC_FIXED)
+
+_Static_assert(SQUEAL_Q_MARGIN == 16, "the margin is Q16: model_adapter_margin_q16 copies it");
 
 /* round(v * mul / 2^q) for v >= 0 or < 0, clamped to int32 */
 static int32_t q_to_int(int32_t v, int64_t mul, uint32_t q)
@@ -109,4 +112,32 @@ int model_adapter_eval(const squeal_params_t *params,
 		out->basin_ratio_ppm = 999999;
 	}
 	return rc;
+}
+
+int model_adapter_sigma(const squeal_params_t *params, const squeal_param_sd_t *sd,
+			int32_t v0_umps, int32_t force_mn, squeal_sigma_result_t *out)
+{
+	squeal_point_t pt;
+	/* as model_adapter_eval: negative inputs are invalid to the model */
+	const bool neg = (v0_umps < 0) || (force_mn < 0);
+
+	HAL_REQUIRE((params != NULL) && (sd != NULL) && (out != NULL));
+	point_from_int(neg ? -1 : v0_umps, neg ? -1 : force_mn, &pt);
+	return squeal_sigma_eval(params, sd, &pt, out);
+}
+
+int32_t model_adapter_margin_q16(const squeal_sigma_result_t *r, squeal_state_t state)
+{
+	squeal_num_t m = SQUEAL_SIGMA_MARGIN_MAX;
+	int32_t q = MODEL_MARGIN_NONE;
+
+	HAL_REQUIRE(r != NULL);
+	if (squeal_sigma_margin(r, state, &m) == SQ_OK) {
+#if defined(SQUEAL_NUMERIC_FIXED)
+		q = m; /* SQUEAL_Q_MARGIN == 16, checked above */
+#else
+		q = f_to_int(m, 65536.0f);
+#endif
+	}
+	return (q >= MODEL_MARGIN_NONE) ? MODEL_MARGIN_NONE : q;
 }

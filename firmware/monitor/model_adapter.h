@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 #include "squeal_model.h"
+#include "squeal_sigma.h"
 
 /* Result of one classification in integer engineering units. A field whose
  * MODEL_EVAL_HAS_* bit is clear does not exist (or did not fit) and is 0. */
@@ -40,5 +41,19 @@ typedef struct {
 int model_adapter_eval(const squeal_params_t *params,
 		       squeal_criterion_t criterion,
 		       int32_t v0_umps, int32_t force_mn, model_eval_t *out);
+
+/*
+ * The calibration's standard deviations propagated to the borders at the
+ * operating point (squeal_sigma_eval; same point conversion as above).
+ * Returns squeal_sigma_eval's code.
+ */
+int model_adapter_sigma(const squeal_params_t *params, const squeal_param_sd_t *sd,
+			int32_t v0_umps, int32_t force_mn, squeal_sigma_result_t *out);
+
+/* Margin of `state` (squeal_sigma_margin) in sigmas x 2^16, rounded;
+ * MODEL_MARGIN_NONE (SQUEAL_SIGMA_MARGIN_MAX: no uncertainty, no border,
+ * no adjacent border). */
+#define MODEL_MARGIN_NONE ((int32_t)1000 << 16)
+int32_t model_adapter_margin_q16(const squeal_sigma_result_t *r, squeal_state_t state);
 
 #endif /* MODEL_ADAPTER_H */

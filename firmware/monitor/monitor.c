@@ -68,6 +68,14 @@ static int corner_setup(monitor_t *me, uint32_t k)
 	return SQ_OK;
 }
 
+/* Any deviation calibrated? All 0: no propagation at all (today's crisp
+ * classes, and no cost). */
+static bool sd_nonzero(const calib_sd_t *sd)
+{
+	return (sd->mass_sd_q16 != 0) || (sd->omega0_sd_q12 != 0) || (sd->damping_sd_q30 != 0) ||
+	       (sd->mu_inf_sd_q30 != 0) || (sd->delta_mu_sd_q30 != 0) || (sd->slope_sd_q24 != 0);
+}
+
 int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
 			bool calib_invalid, uint32_t platform_faults, uint64_t now_us)
 {
@@ -84,6 +92,8 @@ int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
 		rc = SQ_EINVAL;
 	}
 	calib_corner_params(&me->corner, &me->params);
+	me->sigma_on = sd_nonzero(&me->corner.sd);
+	me->margin_q16 = MODEL_MARGIN_NONE;
 	me->platform_faults = platform_faults;
 	input_init(&me->speed, now_us);
 	input_init(&me->force, now_us);
@@ -391,12 +401,43 @@ static uint8_t classify_pair(monitor_t *me)
 	return (uint8_t)me->eval.state;
 }
 
+/*
+ * The uncertainty of the debounced class (issue 12, docs/uncertainty.md):
+ * BorderMargin of `state` and whether the point is within k sigma of the
+ * border to the MORE severe neighbouring class (stable: the stable border,
+ * next to bistable; bistable: the Hopf border, next to unstable; unstable
+ * has no more severe neighbour). Only with deviations calibrated; the
+ * result of the latest classification (sig, valid) or none.
+ */
+static void update_uncertainty(monitor_t *me, const squeal_sigma_result_t *sig, bool valid)
+{
+	int32_t toward = MODEL_MARGIN_NONE;
+
+	me->uncertain = false;
+	me->margin_q16 = MODEL_MARGIN_NONE;
+	if (valid && (me->state <= (uint8_t)SQUEAL_STATE_UNSTABLE)) {
+		/* STABLE 0, BISTABLE 1, UNSTABLE 2: a class with a border */
+		me->margin_q16 = model_adapter_margin_q16(sig, (squeal_state_t)me->state);
+		if (me->state == (uint8_t)SQUEAL_STATE_STABLE) {
+			toward = me->margin_q16;
+		} else if (me->state == (uint8_t)SQUEAL_STATE_BISTABLE) {
+			toward = model_adapter_margin_q16(sig, SQUEAL_STATE_UNSTABLE); /* g_H */
+		} else {
+			/* unstable: already the most severe */
+		}
+		me->uncertain = toward < me->cal->uncertain_k_q16;
+	}
+}
+
 static uint8_t warning_level(const monitor_t *me)
 {
 	switch (me->state) {
 	case SQUEAL_STATE_UNSTABLE:
 		return MSG_WARNING_LEVEL_CRITICAL;
 	case SQUEAL_STATE_BISTABLE:
+		if (me->uncertain) {
+			return MSG_WARNING_LEVEL_CRITICAL; /* within k sigma of Hopf */
+		}
 		/* small basin (rho below the threshold): a small disturbance
 		 * starts stick-slip */
 		if (((me->eval.has & MODEL_EVAL_HAS_BASIN) == 0U) ||
@@ -404,6 +445,14 @@ static uint8_t warning_level(const monitor_t *me)
 			return MSG_WARNING_LEVEL_WARNING;
 		}
 		return MSG_WARNING_LEVEL_ADVISORY;
+	case SQUEAL_STATE_STABLE:
+		/* within k sigma of the stable border: the level of the
+		 * bistable side of it, where rho -> 1 */
+		if (me->uncertain) {
+			return ((uint32_t)PPM_ONE < me->cal->rho_warn_ppm) ?
+				MSG_WARNING_LEVEL_WARNING : MSG_WARNING_LEVEL_ADVISORY;
+		}
+		return MSG_WARNING_LEVEL_NONE;
 	default:
 		return MSG_WARNING_LEVEL_NONE;
 	}
@@ -500,6 +549,14 @@ static void send_status(monitor_t *me)
 			/* friction not falling with speed: no border at all */
 			m.hopf_margin_mps = NO_BORDER_MARGIN_RAW;
 		}
+	}
+	m.border_margin_sigma = MSG_BORDER_MARGIN_SIGMA_NA;
+	if (classified(me) && (me->margin_q16 < MODEL_MARGIN_NONE)) {
+		/* tenths of a sigma, rounded; raw = tenths + 1 (0: n/a) */
+		const int64_t tenths = (((int64_t)me->margin_q16 * 10) + 32768) >> 16;
+
+		m.border_margin_sigma = (tenths >= (int64_t)MSG_BORDER_MARGIN_SIGMA_SAT - 1) ?
+			(uint8_t)MSG_BORDER_MARGIN_SIGMA_SAT : (uint8_t)(tenths + 1);
 	}
 	rc = msg_squeal_status_pack(&m, data, &dlc);
 	tx_protected(me, me->corner.status_id, MSG_SQUEAL_STATUS_DATA_ID,
@@ -705,10 +762,23 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 	if ((me->speed.faults != 0U) || (me->force.faults != 0U)) {
 		set_state(me, MONITOR_STATE_FAULT);
 		me->have_eval = false;
+		update_uncertainty(me, NULL, false);
 	} else if (may_classify && me->speed.fresh && me->force.fresh) {
+		squeal_sigma_result_t sig = { 0 };
+		const uint8_t cls = classify_pair(me);
+		bool sig_ok = false;
+
 		me->speed.fresh = false;
 		me->force.fresh = false;
-		debounce(me, classify_pair(me));
+		if (me->sigma_on && me->have_eval && (cls != (uint8_t)SQUEAL_STATE_NOT_SLIDING)) {
+			squeal_param_sd_t sd;
+
+			calib_corner_sd(&me->corner, &sd);
+			sig_ok = model_adapter_sigma(&me->params, &sd, me->speed.value,
+						     me->force.value, &sig) == SQ_OK;
+		}
+		debounce(me, cls);
+		update_uncertainty(me, &sig, sig_ok);
 	} else {
 		/* no fault and no new input pair: nothing to classify */
 	}

@@ -137,6 +137,12 @@ typedef struct {
 	uint8_t warning;             /* reported WarningLevel                   */
 	uint8_t candidate;           /* state the debounce is counting towards  */
 	uint8_t candidate_count;
+	/* uncertainty (issue 12): off when the corner's deviations are all 0 */
+	bool sigma_on;
+	bool uncertain;              /* within k sigma of the border to the more
+				      * severe neighbouring class              */
+	int32_t margin_q16;          /* BorderMargin of `state` [sigma x 2^16],
+				      * MODEL_MARGIN_NONE: none to report      */
 
 	/* transmit */
 	e2e_p01_tx_t tx_status;

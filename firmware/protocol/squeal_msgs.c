@@ -22,7 +22,7 @@ enum {
 	SIG_PF_CRC, SIG_PF_COUNTER, SIG_PF_N,
 	/* SquealStatus */
 	SIG_ST_CRC, SIG_ST_COUNTER, SIG_ST_STATE, SIG_ST_WARNING,
-	SIG_ST_BASIN, SIG_ST_MARGIN,
+	SIG_ST_BASIN, SIG_ST_MARGIN, SIG_ST_BORDER_SIGMA,
 	/* SquealDetail */
 	SIG_DT_CRC, SIG_DT_COUNTER, SIG_DT_V0, SIG_DT_HOPF_SPEED,
 	SIG_DT_TRIGGER, SIG_DT_VSB,
@@ -98,6 +98,10 @@ const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT] = {
 	  MSG_SIG_SIGNED | MSG_SIG_HAS_NA, 0U, 1, 100, 0,
 	  MSG_HOPF_MARGIN_MPS_MIN, MSG_HOPF_MARGIN_MPS_MAX,
 	  MSG_HOPF_MARGIN_MPS_NA },
+	/* raw 0 = not available (what a monitor without deviations sends) */
+	{ MSG_SQUEAL_STATUS_ID, "BorderMargin_sigma", "sigma", 56U, 8U, MSG_SIG_HAS_NA, 0U,
+	  1, 10, -1, 1, (int32_t)MSG_BORDER_MARGIN_SIGMA_SAT,
+	  (int32_t)MSG_BORDER_MARGIN_SIGMA_NA },
 
 	E2E_SIGS(MSG_SQUEAL_DETAIL_ID, "SquealDetail"),
 	UNS_NA(MSG_SQUEAL_DETAIL_ID, "V0_mps", "m/s", 12U, 14U, 1, 100,
@@ -376,6 +380,7 @@ int msg_squeal_status_pack(const msg_squeal_status_t *msg, uint8_t data[8],
 	raw[3] = msg->warning_level;
 	raw[4] = msg->basin_ratio;
 	raw[5] = msg->hopf_margin_mps;
+	raw[6] = msg->border_margin_sigma;
 	return pack_sigs(SIG_ST_CRC, N_ST, raw, 0U, MSG_SQUEAL_STATUS_DLC, data,
 			 dlc);
 }
@@ -397,6 +402,7 @@ int msg_squeal_status_unpack(const uint8_t *data, uint8_t dlc,
 	msg->warning_level = (uint8_t)raw[3];
 	msg->basin_ratio = (uint16_t)raw[4];
 	msg->hopf_margin_mps = (int16_t)raw[5];
+	msg->border_margin_sigma = (uint8_t)raw[6];
 	return SQ_OK;
 }
 

@@ -85,6 +85,11 @@ typedef struct {
 #define MSG_HOPF_MARGIN_MPS_MIN      (-32767) /* x 0.01 m/s */
 #define MSG_HOPF_MARGIN_MPS_MAX      32767
 #define MSG_HOPF_MARGIN_MPS_NA       (-32768)
+/* BorderMargin_sigma: physical = raw x 0.1 - 0.1 sigma. 0 = not available
+ * (no class, no deviations calibrated, no border), 1..254 = 0.0..25.3,
+ * 255 = 25.4 or more (saturated). */
+#define MSG_BORDER_MARGIN_SIGMA_NA   0U
+#define MSG_BORDER_MARGIN_SIGMA_SAT  255U
 
 typedef struct {
 	uint8_t crc;
@@ -93,6 +98,7 @@ typedef struct {
 	uint8_t warning_level;  /* WarningLevel, 0..3                         */
 	uint16_t basin_ratio;   /* BasinRatio, 0.0001                         */
 	int16_t hopf_margin_mps; /* HopfMargin_mps, 0.01 m/s                  */
+	uint8_t border_margin_sigma; /* BorderMargin_sigma, see above         */
 } msg_squeal_status_t;
 
 /* ---- SquealDetail: monitor -> vehicle, 100 ms (speeds) ------------------ */
@@ -279,7 +285,7 @@ typedef struct {
 } msg_desc_t;
 
 #define MSG_COUNT     6U
-#define MSG_SIG_COUNT 52U
+#define MSG_SIG_COUNT 53U
 
 extern const msg_desc_t msg_table[MSG_COUNT];
 extern const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT];

@@ -2,8 +2,9 @@
 /*
  * STM32F103 specifics for the shared bare-metal HAL: clocks (HSE 8 MHz x 9
  * = 72 MHz, HSI 8 MHz fallback reported by the caller), CAN pins (remapped
- * to PB8 RX / PB9 TX, like the F4 board), and calibration flash: 1 KiB page
- * erase and half-word programming (RM0008 / PM0075), every wait bounded.
+ * to PB8 RX / PB9 TX, like the F4 board), and calibration flash: a slot is
+ * two 1 KiB pages, erased first page (the slot header) first, and half-word
+ * programming (RM0008 / PM0075), every wait bounded.
  */
 #include <stddef.h>
 
@@ -17,6 +18,8 @@
 #define ERASE_TIMEOUT_US   100000U /* page erase max 40 ms */
 #define PROGRAM_TIMEOUT_US   1000U /* half-word max 70 us  */
 #define IDLE_TIMEOUT_US     10000U
+#define FLASH_PAGE_BYTES     1024U /* medium density                  */
+#define SLOT_PAGES_MAX          4U /* bound of the erase loop          */
 
 extern const uint8_t __calib_start[];
 extern const uint8_t __calib_slot_size[];
@@ -140,22 +143,31 @@ static int flash_wait_done(uint32_t timeout_us)
 	return SQ_OK;
 }
 
+/* The header is in the slot's first page, erased first: a power cut after
+ * it leaves a slot without a valid header (ignored), never a valid header
+ * over a half-erased payload. */
 int chip_flash_erase_slot(uint32_t slot)
 {
-	uint32_t addr = (uint32_t)(uintptr_t)__calib_start + slot * (uint32_t)(uintptr_t)__calib_slot_size;
-	int rc;
+	const uint32_t size = (uint32_t)(uintptr_t)__calib_slot_size;
+	const uint32_t addr = (uint32_t)(uintptr_t)__calib_start + slot * size;
+	const uint32_t pages = size / FLASH_PAGE_BYTES;
+	uint32_t page;
+	int rc = SQ_OK;
 
-	if (slot > 1U) {
+	if ((slot > 1U) || (pages == 0U) || (pages > SLOT_PAGES_MAX) ||
+	    ((size % FLASH_PAGE_BYTES) != 0U)) {
 		return SQ_EINVAL;
 	}
 	if (flash_unlock() != SQ_OK) {
 		FLASH_CR = FLASH_CR_LOCK;
 		return SQ_EIO;
 	}
-	FLASH_CR = FLASH_CR_PER;
-	FLASH_AR = addr;
-	FLASH_CR = FLASH_CR_PER | FLASH_CR_STRT;
-	rc = flash_wait_done(ERASE_TIMEOUT_US);
+	for (page = 0U; (page < pages) && (rc == SQ_OK); page++) {
+		FLASH_CR = FLASH_CR_PER;
+		FLASH_AR = addr + (page * FLASH_PAGE_BYTES);
+		FLASH_CR = FLASH_CR_PER | FLASH_CR_STRT;
+		rc = flash_wait_done(ERASE_TIMEOUT_US);
+	}
 	FLASH_CR = FLASH_CR_LOCK;
 	return rc;
 }

@@ -5,7 +5,9 @@
  * (including backward clock jumps), CAN status reports and TX completions.
  *
  * Input: byte 0 picks one of four calibrations (defaults, E2E off, cubic
- * criterion with filtering and no debounce, moved identifiers), then
+ * criterion with filtering and no debounce, moved identifiers), with bit 2
+ * a vehicle input map, bit 3 standard deviations (moderate, or with bit 4
+ * each as large as its parameter, correlation -1: issue 12), then
  * operations [op, arguments...] until the input ends (at most 512).
  *
  * Properties after every operation:
@@ -14,7 +16,10 @@
  *     is bit-for-bit what monitor_init() got: NO frame, whatever its
  *     identifier, flags, DLC, payload or E2E, changes it (the calibration
  *     write-protection property, see docs/reliability.md);
- *   - the state is one of 0..3 or 15 and the warning level matches it;
+ *   - the state is one of 0..3 or 15 and the warning level matches it
+ *     (or the uncertain rule's raised level: stable -> advisory, bistable
+ *     -> critical, only with deviations; then BorderMargin_sigma is there
+ *     exactly for a class, and the rule raises only within k sigma);
  *     after a step, a faulted input forces FAULT;
  *   - the TX queue indices stay in range; every queued frame is one of our
  *     four output identifiers, DLC 8, standard data frame, with a correct
@@ -129,6 +134,24 @@ static void pick_calibration(uint8_t which, calib_t *cal)
 	default:
 		break;
 	}
+	if ((which & 8U) != 0U) {
+		if ((which & 16U) != 0U) {
+			/* as large as allowed: sd = |param|, corr -1 */
+			cal->sd.mass_sd_q16 = cal->mass_q16;
+			cal->sd.omega0_sd_q12 = cal->omega0_q12;
+			cal->sd.damping_sd_q30 = cal->damping_q30;
+			cal->sd.mu_inf_sd_q30 = cal->mu_inf_q30;
+			cal->sd.delta_mu_sd_q30 = cal->delta_mu_q30;
+			cal->sd.slope_sd_q24 = cal->slope_q24;
+			cal->sd.slope_delta_mu_corr_q30 = -(1 << 30);
+		} else {
+			cal->sd.mass_sd_q16 = 1311;        /* 2 %  */
+			cal->sd.damping_sd_q30 = 2469606;  /* 10 % */
+			cal->sd.delta_mu_sd_q30 = 6442451; /* 4 %  */
+			cal->sd.slope_sd_q24 = 1677722;    /* 5 %  */
+			cal->sd.slope_delta_mu_corr_q30 = 912680550;
+		}
+	}
 	/* after the flat keys: the map takes their identifiers */
 	if ((which & 4U) != 0U) {
 		vehicle_map(cal);
@@ -216,12 +239,25 @@ static void check_monitor(const ctx_t *c, const monitor_t *before, bool stepped)
 		break;
 	case SQUEAL_STATE_BISTABLE:
 		FUZZ_REQUIRE((me->warning == MSG_WARNING_LEVEL_ADVISORY) ||
-			     (me->warning == MSG_WARNING_LEVEL_WARNING));
+			     (me->warning == MSG_WARNING_LEVEL_WARNING) ||
+			     (me->uncertain && (me->warning == MSG_WARNING_LEVEL_CRITICAL)));
+		break;
+	case SQUEAL_STATE_STABLE:
+		FUZZ_REQUIRE((me->warning == MSG_WARNING_LEVEL_NONE) ||
+			     (me->uncertain && (me->warning == MSG_WARNING_LEVEL_ADVISORY)));
 		break;
 	default:
 		FUZZ_REQUIRE(me->warning == MSG_WARNING_LEVEL_NONE);
 		break;
 	}
+	/* the uncertainty: only with deviations, only for a class, the rule
+	 * only within k sigma of the class's own margin (stable) */
+	FUZZ_REQUIRE(me->sigma_on || (!me->uncertain && (me->margin_q16 == MODEL_MARGIN_NONE)));
+	FUZZ_REQUIRE((me->state <= (uint8_t)SQUEAL_STATE_UNSTABLE) ||
+		     (!me->uncertain && (me->margin_q16 == MODEL_MARGIN_NONE)));
+	FUZZ_REQUIRE((me->margin_q16 >= 0) && (me->margin_q16 <= MODEL_MARGIN_NONE));
+	FUZZ_REQUIRE((me->state != (uint8_t)SQUEAL_STATE_STABLE) || !me->uncertain ||
+		     (me->margin_q16 < me->cal->uncertain_k_q16));
 	if (stepped && ((me->speed.faults != 0U) || (me->force.faults != 0U))) {
 		FUZZ_REQUIRE(me->state == MONITOR_STATE_FAULT);
 	}

@@ -186,7 +186,8 @@ static void packed_msg(uint32_t k, uint32_t v, uint8_t out[8])
 	}
 	case MSG_SQUEAL_STATUS_ID: {
 		const msg_squeal_status_t m = { 0U, 0U, (uint8_t)(v % 4U), (uint8_t)(v % 4U),
-						(uint16_t)(v % 10001U), (int16_t)(v % 1000U) };
+						(uint16_t)(v % 10001U), (int16_t)(v % 1000U),
+						(uint8_t)(v % 256U) };
 
 		rc = msg_squeal_status_pack(&m, out, &dlc);
 		break;

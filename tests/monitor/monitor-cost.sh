@@ -17,24 +17,28 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # "corners 4": the same drive with four corners on the same frames (the
 # worst step: one corner classifies, all four receive, tick and send).
-for run in "host 1" "host-fixed 1" "host 4" "host-fixed 4"; do
+# "sigma": the calibration carries standard deviations (issue 12): every
+# classification also propagates them.
+for run in "host 1" "host-fixed 1" "host 4" "host-fixed 4" \
+	   "host 1 sigma" "host-fixed 1 sigma" "host 4 sigma" "host-fixed 4 sigma"; do
 	set -- $run
 	v=$1
 	corners=$2
+	extra=${3:-}
 	prog=build/$v/monitor_step_cost
 	for fn in squeal_app_poll monitor_step_slot; do
 		rm -f "$tmp"/cg.*
 		valgrind --tool=callgrind --collect-atstart=no --toggle-collect="$fn" \
-			--callgrind-out-file="$tmp/cg.out" "$prog" "$corners" >"$tmp/stdout" 2>"$tmp/stderr"
+			--callgrind-out-file="$tmp/cg.out" "$prog" "$corners" $extra >"$tmp/stdout" 2>"$tmp/stderr"
 		# each dump file's total: the "totals:" (or "summary:") line
 		# (dump number d is poll d, at T0 + (d - 1) ms)
 		for f in "$tmp"/cg.out.*; do
 			awk -v d="${f##*.}" '/^(totals|summary):/ {print $2, d; exit}' "$f"
-		done | awk -v v="$v" -v fn="$fn" -v c="$corners" '
+		done | awk -v v="$v" -v fn="$fn" -v c="$corners" -v x="$extra" '
 			$1 > 0 { n++; s += $1; if ($1 > max) { max = $1; at = $2 }
 				 if (min == 0 || $1 < min) min = $1 }
-			END { printf "%-10s %u corner%s %-16s calls %5d  mean %7.0f  min %6d  max %7d instructions (poll %d)\n",
-			      v, c, (c == 1) ? " " : "s", fn, n, s / n, min, max, at }'
+			END { printf "%-10s %u corner%s %-5s %-16s calls %5d  mean %7.0f  min %6d  max %7d instructions (poll %d)\n",
+			      v, c, (c == 1) ? " " : "s", x, fn, n, s / n, min, max, at }'
 	done
 	sed 's/^/           /' "$tmp/stdout"
 done

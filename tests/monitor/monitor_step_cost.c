@@ -7,6 +7,10 @@
  * transmissions, so the steps that receive two frames, classify, and send
  * SquealStatus + Detail + Detail2 + Diag are all in the run.
  *
+ * A second argument "sigma" calibrates standard deviations (the Monte Carlo
+ * file's first set: m 2 %, w0 1.5 %, D 10 %, dmu 4 %, a 5 %, corr 0.85):
+ * every classification also propagates them (squeal_sigma, issue 12).
+ *
  * With an argument N (2..4) the calibration has N corners, all on the same
  * DiscSpeed/PadForce frames (each corner its own outputs): every frame feeds
  * every corner, and the app staggers their classifications, one per step.
@@ -16,9 +20,11 @@
  * --toggle-collect limiting collection to the function measured). Without
  * valgrind the requests are no-ops and it just runs.
  */
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <valgrind/callgrind.h>
 
@@ -39,14 +45,30 @@ static int queue(uint16_t speed_raw, uint32_t k)
 	return test_send_pair(&snd, speed_raw, FORCE_RAW, T0_US + 10000ULL * k);
 }
 
-/* n corners on the legacy inputs, stored as the app's calibration */
-static int store_corners(uint32_t n)
+/* n corners on the legacy inputs (1: the legacy form), with or without
+ * deviations, stored as the app's calibration */
+static int store_corners(uint32_t n, bool sigma)
 {
 	static calib_t cal;
 	static uint8_t block[CALIB_BLOCK_LEN];
 	calib_corner_t c0;
 
 	calib_default(&cal);
+	if (sigma) {
+		cal.sd.mass_sd_q16 = 1311;
+		cal.sd.omega0_sd_q12 = 75 * 4096;
+		cal.sd.damping_sd_q30 = 2469606;
+		cal.sd.delta_mu_sd_q30 = 6442451;
+		cal.sd.slope_sd_q24 = 1677722;
+		cal.sd.slope_delta_mu_corr_q30 = 912680550;
+	}
+	if (n == 1U) {
+		if (calib_encode(&cal, block, sizeof(block)) != SQ_OK) {
+			return SQ_EINVAL;
+		}
+		test_hal_calib_store(block, sizeof(block));
+		return SQ_OK;
+	}
 	if (calib_corner_view(&cal, 0U, &c0, &cal.inputs[0], &cal.inputs[1]) != SQ_OK) {
 		return SQ_EINVAL;
 	}
@@ -67,6 +89,7 @@ static int store_corners(uint32_t n)
 int main(int argc, char **argv)
 {
 	const uint32_t corners = (argc > 1) ? (uint32_t)strtoul(argv[1], NULL, 10) : 1U;
+	const bool sigma = (argc > 2) && (strcmp(argv[2], "sigma") == 0);
 	static const uint16_t dwell[3] = { 2500U, 1250U, 900U }; /* 3, 1.5, 1.08 m/s */
 	uint32_t k = 0U;
 	uint32_t polls = 0U;
@@ -76,7 +99,7 @@ int main(int argc, char **argv)
 	test_hal_set_time_us(T0_US);
 	test_sender_init(&snd);
 	if ((corners < 1U) || (corners > CALIB_MAX_CORNERS) ||
-	    ((corners > 1U) && (store_corners(corners) != SQ_OK))) {
+	    (((corners > 1U) || sigma) && (store_corners(corners, sigma) != SQ_OK))) {
 		fprintf(stderr, "corners 1..4\n");
 		return 1;
 	}
@@ -109,8 +132,8 @@ int main(int argc, char **argv)
 		polls++;
 		test_hal_advance_us(1000U);
 	}
-	printf("corners %u, polls %u, input pairs %u, classifications %u, state changes %u, "
-	       "frames sent %u, final state %u\n", corners, polls, n_frames,
+	printf("%scorners %u, polls %u, input pairs %u, classifications %u, state changes %u, "
+	       "frames sent %u, final state %u\n", sigma ? "sigma on, " : "", corners, polls, n_frames,
 	       squeal_app_monitor()->count.classifications,
 	       squeal_app_monitor()->count.state_changes, test_hal_tx_count(),
 	       squeal_app_monitor()->state);

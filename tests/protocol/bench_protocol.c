@@ -46,7 +46,8 @@ int main(void)
 	e2e_p01_tx_init(&tx);
 	t0 = now_s();
 	for (unsigned long i = 0; i < N; i++) {
-		msg_squeal_status_t m = { 0, 0, (uint8_t)(i & 3U), 2, (uint16_t)(i % 10000U), (int16_t)(i & 0x7FFFU) };
+		msg_squeal_status_t m = { 0, 0, (uint8_t)(i & 3U), 2, (uint16_t)(i % 10000U),
+					  (int16_t)(i & 0x7FFFU), (uint8_t)(i & 0xFFU) };
 
 		if (msg_squeal_status_pack(&m, frame, &dlc) != SQ_OK ||
 		    e2e_p01_protect(&st_cfg, &tx, frame, dlc) != SQ_OK) {

@@ -57,6 +57,14 @@ static const struct frame_case cases[] = {
 				  { "BasinRatio", 0, "0" }, { "HopfMargin_mps", -32768, "NA" } } },
 	{ MSG_SQUEAL_STATUS_ID, { { "SquealState", 3, "3" }, { "WarningLevel", 0, "0" },
 				  { "BasinRatio", 1, "0.0001" }, { "HopfMargin_mps", -1, "-0.01" } } },
+	/* BorderMargin_sigma: raw x 0.1 - 0.1; 0 = not available, 255 = 25.4 or more */
+	{ MSG_SQUEAL_STATUS_ID, { { "SquealState", 1, "1" }, { "WarningLevel", 3, "3" },
+				  { "BorderMargin_sigma", 21, "2" } } },
+	{ MSG_SQUEAL_STATUS_ID, { { "SquealState", 0, "0" }, { "BorderMargin_sigma", 1, "0" } } },
+	{ MSG_SQUEAL_STATUS_ID, { { "SquealState", 2, "2" }, { "WarningLevel", 3, "3" },
+				  { "BorderMargin_sigma", 254, "25.3" } } },
+	{ MSG_SQUEAL_STATUS_ID, { { "SquealState", 0, "0" }, { "BorderMargin_sigma", 255, "25.4" } } },
+	{ MSG_SQUEAL_STATUS_ID, { { "SquealState", 0, "0" }, { "BorderMargin_sigma", 0, "NA" } } },
 	{ MSG_SQUEAL_DETAIL_ID, { { "V0_mps", 1234, "12.34" }, { "HopfSpeed_mps", 123, "1.23" },
 				  { "TriggerVelocity_mps", 50, "0.5" },
 				  { "VehicleSpeedBorder_kph", 111, "11.1" } } },
@@ -132,6 +140,7 @@ static int set_field(uint16_t id, union any_msg *m, const char *name, int32_t ra
 		if (IS("WarningLevel")) { m->st.warning_level = (uint8_t)raw; return 0; }
 		if (IS("BasinRatio")) { m->st.basin_ratio = (uint16_t)raw; return 0; }
 		if (IS("HopfMargin_mps")) { m->st.hopf_margin_mps = (int16_t)raw; return 0; }
+		if (IS("BorderMargin_sigma")) { m->st.border_margin_sigma = (uint8_t)raw; return 0; }
 		break;
 	case MSG_SQUEAL_DETAIL_ID:
 		if (IS("V0_mps")) { m->dt.v0_mps = (uint16_t)raw; return 0; }

@@ -59,9 +59,10 @@ static int unpack_squeal_status(const uint8_t *data, uint8_t dlc)
 
 	if (rc == SQ_OK) {
 		printf(" SquealStatus_CRC=%u SquealStatus_Counter=%u SquealState=%u WarningLevel=%u"
-		       " BasinRatio=%u HopfMargin_mps=%d", (unsigned int)m.crc, (unsigned int)m.counter,
-		       (unsigned int)m.squeal_state, (unsigned int)m.warning_level,
-		       (unsigned int)m.basin_ratio, (int)m.hopf_margin_mps);
+		       " BasinRatio=%u HopfMargin_mps=%d BorderMargin_sigma=%u", (unsigned int)m.crc,
+		       (unsigned int)m.counter, (unsigned int)m.squeal_state,
+		       (unsigned int)m.warning_level, (unsigned int)m.basin_ratio,
+		       (int)m.hopf_margin_mps, (unsigned int)m.border_margin_sigma);
 	}
 	return rc;
 }

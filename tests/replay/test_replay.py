@@ -421,7 +421,7 @@ def test_decode_vs_canmatrix(r, db, out):
     rc, txt, _ = run(SIM_TEST, ["decode", "-"], stdin=out)
     first = txt.decode().splitlines()[0]
     r.check(re.match(r"^\d+\.\d{6} SquealStatus state=fault warning=none BasinRatio=NA "
-                     r"HopfMargin_mps=NA ctr=0 e2e=initial$", first) is not None,
+                     r"HopfMargin_mps=NA BorderMargin_sigma=NA ctr=0 e2e=initial$", first) is not None,
             "decode text line: %r" % first)
     bad_crc = b"(0000000001.000000) can0 300#00000000FFFF0080\n(0000000001.010000) can0 123#11\n"
     rc, txt, _ = run(SIM_TEST, ["decode", "-"], stdin=bad_crc)

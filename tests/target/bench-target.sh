@@ -35,7 +35,6 @@ for m in "M4F-float netduinoplus2 build/tv-m4f/model-vectors.elf build/bench-m4f
 	t=$(qemu "$machine" "$tv" | grep '^TIMING')
 	out=$(qemu "$machine" "$bs")
 	b=$(echo "$out" | grep '^BENCH ')
-	b4=$(echo "$out" | grep '^BENCH4 ')
 	if [ -z "$t" ] || [ -z "$b" ]; then
 		echo "$name: run failed"; continue
 	fi
@@ -54,11 +53,22 @@ for m in "M4F-float netduinoplus2 build/tv-m4f/model-vectors.elf build/bench-m4f
 			name, (sft / sf - ov) * kb, sf, cls
 		printf "%s   without frames: mean %6.0f\n", name, ((stot - sft) / (steps - sf) - ov) * kb
 	}'
-	[ -n "$b4" ] && awk -v name="$name" -v cali="$(kv "$b4" cal_insns)" -v bcal="$(kv "$b4" cal_ticks)" \
-	    -v steps="$(kv "$b4" steps)" -v stot="$(kv "$b4" ticks_total)" -v smax="$(kv "$b4" ticks_max)" \
-	    -v ov="$(kv "$b4" overhead_ticks)" -v cls="$(kv "$b4" classifications)" 'BEGIN {
-		kb = cali / bcal
-		printf "%s 1 ms step, 4 corners: mean %6.0f  max %6.0f instructions (%d steps, %d classifications)\n",
-			name, (stot / steps - ov) * kb, (smax - ov) * kb, steps, cls
-	}'
+	for tag in BENCH4 BENCHS BENCHS4; do
+		bx=$(echo "$out" | grep "^$tag ")
+		case $tag in
+		BENCH4) what="1 ms step, 4 corners:" ;;
+		BENCHS) what="1 ms step, sigma on:" ;;
+		BENCHS4) what="1 ms step, 4 corners, sigma on:" ;;
+		esac
+		[ -n "$bx" ] && awk -v name="$name" -v what="$what" -v cali="$(kv "$bx" cal_insns)" \
+		    -v bcal="$(kv "$bx" cal_ticks)" -v steps="$(kv "$bx" steps)" \
+		    -v stot="$(kv "$bx" ticks_total)" -v smax="$(kv "$bx" ticks_max)" \
+		    -v sft="$(kv "$bx" ticks_frames)" -v sf="$(kv "$bx" steps_with_frames)" \
+		    -v ov="$(kv "$bx" overhead_ticks)" -v cls="$(kv "$bx" classifications)" 'BEGIN {
+			kb = cali / bcal
+			printf "%s %s mean %6.0f  max %6.0f instructions (%d steps, %d classifications; with frames mean %6.0f)\n",
+				name, what, (stot / steps - ov) * kb, (smax - ov) * kb, steps, cls,
+				(sft / sf - ov) * kb
+		}'
+	done
 done

@@ -47,7 +47,7 @@ overlap=$(
 	done)
 check "F4 image leaves the calibration sectors free" [ -z "$overlap" ]
 check "F4 stack at the bottom of SRAM" [ "$(sym "$f4" _sstack)" = 20000000 ]
-check "F103 calibration pages at 0x0801F800" [ "$(sym "$f1" __calib_start)" = 0801f800 ]
+check "F103 calibration pages at 0x0801F000" [ "$(sym "$f1" __calib_start)" = 0801f000 ]
 
 want='openocd -f interface/stlink.cfg -f target/stm32f4x.cfg -c "program build/stm32f4/squeal-monitor.elf verify reset exit"'
 got=$(env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -s --no-print-directory flash DRY_RUN=1 TARGET=stm32f4 NUMERIC=float 2>/dev/null | tail -1)

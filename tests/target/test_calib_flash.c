@@ -19,7 +19,7 @@
 #include "chip.h"
 #include "stm32_board.h"
 
-#define SLOT 1024U
+#define SLOT 2048U /* the F103's two-page slot (linker/stm32f103xb.ld) */
 uint8_t calib_flash_sim[2U * SLOT] __attribute__((aligned(4)));
 
 static long budget = -1; /* bytes the "power" still allows; -1: unlimited */
@@ -144,30 +144,29 @@ static void test_writes_alternate_slots_and_keep_the_old(void **state)
 }
 
 /* The heart of it: cut the power after every possible number of bytes. */
-static void test_interrupted_write_leaves_old_or_new(void **state)
+static void interrupted_write(size_t len)
 {
-	uint8_t a[200], b[200], out[200];
+	static uint8_t a[HAL_CALIB_MAX_LEN], b[HAL_CALIB_MAX_LEN], out[HAL_CALIB_MAX_LEN];
 	long cut;
 	long total = -1;
 	uint32_t saw_old = 0U, saw_new = 0U;
 
-	(void)state;
-	fill(a, sizeof(a), 10U);
-	fill(b, sizeof(b), 20U);
+	fill(a, (uint32_t)len, 10U);
+	fill(b, (uint32_t)len, 20U);
 	for (cut = 0;; cut++) {
 		int rc;
 
 		setup(NULL);
-		assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
+		assert_int_equal(hal_calib_write(a, (uint32_t)len), SQ_OK);
 		budget = cut;
-		rc = hal_calib_write(b, sizeof(b));
+		rc = hal_calib_write(b, (uint32_t)len);
 		budget = -1;
-		assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
-		if (memcmp(out, a, sizeof(a)) == 0) {
+		assert_int_equal(hal_calib_read(out, (uint32_t)len), SQ_OK);
+		if (memcmp(out, a, len) == 0) {
 			saw_old++;
 			assert_int_not_equal(rc, SQ_OK);
 		} else {
-			assert_memory_equal(out, b, sizeof(b)); /* never a mix */
+			assert_memory_equal(out, b, len); /* never a mix */
 			saw_new++;
 		}
 		if (rc == SQ_OK) {
@@ -176,10 +175,24 @@ static void test_interrupted_write_leaves_old_or_new(void **state)
 		}
 		assert_int_equal(rc, SQ_EIO);
 	}
-	/* erase (1024) + payload + 12 header bytes + 4 magic bytes */
-	assert_int_equal(total, (long)(SLOT + sizeof(b) + 16U));
+	/* erase (SLOT) + payload + 12 header bytes + 4 magic bytes */
+	assert_int_equal(total, (long)(SLOT + len + 16U));
 	assert_int_equal(saw_new, 1U); /* only the complete write counts */
 	assert_true(saw_old > SLOT);
+}
+
+static void test_interrupted_write_leaves_old_or_new(void **state)
+{
+	(void)state;
+	interrupted_write(200U);
+}
+
+/* The calibration block v2 with deviations (1136 bytes) spans both 1 KiB
+ * pages of the F103's slot: cut anywhere, still old or new. */
+static void test_interrupted_two_page_write_leaves_old_or_new(void **state)
+{
+	(void)state;
+	interrupted_write(1136U);
 }
 
 static void test_corrupt_newest_falls_back_to_older(void **state)
@@ -329,6 +342,7 @@ int main(void)
 		cmocka_unit_test_setup(test_write_then_read_round_trip, setup),
 		cmocka_unit_test_setup(test_writes_alternate_slots_and_keep_the_old, setup),
 		cmocka_unit_test_setup(test_interrupted_write_leaves_old_or_new, setup),
+		cmocka_unit_test_setup(test_interrupted_two_page_write_leaves_old_or_new, setup),
 		cmocka_unit_test_setup(test_corrupt_newest_falls_back_to_older, setup),
 		cmocka_unit_test(test_crc_reference_check_value),
 		cmocka_unit_test_setup(test_sequence_wraps, setup),

@@ -203,17 +203,22 @@ static void test_model_params_from_defaults(void **state)
 #endif
 }
 
+/* squeal_app's load_calibration reads the stored block into the calib_t
+ * it decodes into (calib_decode allows it): the block must fit in one. */
+_Static_assert(sizeof(calib_t) >= CALIB_BLOCK_LEN, "a calib_t holds the stored block");
+
 static void test_block_layout(void **state)
 {
 	uint8_t buf[CALIB_BLOCK_LEN];
 
 	(void)state;
 	/* version 2: the 99 bytes of v1 (header + fields), then input_bus,
-	 * output_bus, input_listen_only, n_inputs, n_corners, 8 inputs x 82
-	 * and 4 corners x 57 bytes, then the CRC: 99 + 3 + 2 + 656 + 228 = 988,
-	 * block 992 */
+	 * output_bus, input_listen_only, n_inputs, n_corners, the flat
+	 * deviations (7 x 4) and k (4), 8 inputs x 82 and 4 corners x 85
+	 * bytes (57 + their deviations), then the CRC: 99 + 3 + 2 + 32 + 656
+	 * + 340 = 1132, block 1136 */
 	assert_int_equal(CALIB_VERSION, 2);
-	assert_int_equal(CALIB_BLOCK_LEN, 992);
+	assert_int_equal(CALIB_BLOCK_LEN, 1136);
 	encode_default(buf);
 	assert_memory_equal(buf, "SQCB", 4);
 	assert_int_equal(get_le(&buf[4], 2U), CALIB_VERSION);
@@ -223,7 +228,11 @@ static void test_block_layout(void **state)
 	assert_int_equal(buf[101], 0); /* normal mode */
 	assert_int_equal(buf[102], 0); /* no input map: the legacy corner */
 	assert_int_equal(buf[103], 0);
-	assert_int_equal(get_le(&buf[988], 4U), ref_crc32(buf, 988U));
+	for (unsigned i = 104U; i < 132U; i++) {
+		assert_int_equal(buf[i], 0); /* no deviations */
+	}
+	assert_int_equal(get_le(&buf[132], 4U), 2U << 16); /* k = 2 sigma, Q16 */
+	assert_int_equal(get_le(&buf[1132], 4U), ref_crc32(buf, 1132U));
 }
 
 /* ---- round trip ---------------------------------------------------------------- */

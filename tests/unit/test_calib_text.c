@@ -169,6 +169,27 @@ static void test_last_line_without_newline(void **state)
 	assert_int_equal(cal.watchdog_ms, 300);
 }
 
+/* A standard deviation's maximum is its parameter's: the line that sets the
+ * parameter there (NULL: not a deviation bounded by its parameter). */
+static const char *sd_param_max(const char *key)
+{
+	static const char *const rows[][2] = {
+		{ "mass_kg_sd", "mass_kg = 10000" },
+		{ "omega0_radps_sd", "omega0_radps = 500000" },
+		{ "damping_sd", "damping = 1" },
+		{ "delta_mu_sd", "delta_mu = 1.5" },
+		{ "slope_spm_sd", "slope_spm = 20" },
+	};
+	size_t i;
+
+	for (i = 0; i < sizeof(rows) / sizeof(rows[0]); i++) {
+		if (strcmp(rows[i][0], key) == 0) {
+			return rows[i][1];
+		}
+	}
+	return NULL;
+}
+
 /* Every key's range ends (as calib_text's table has them) are accepted by
  * the firmware's own calib_validate, and one step beyond is refused by the
  * parser: the two tables agree. */
@@ -218,7 +239,12 @@ static void test_range_ends_agree_with_calib_validate(void **state)
 			fail_msg("%s: %s", in, err);
 		}
 		assert_int_equal(calib_validate(&cal), SQ_OK);
-		snprintf(in, sizeof(in), "%s = %s\n", key, maxv);
+		if (sd_param_max(key) != NULL) {
+			/* sd <= |param|: the parameter at its own maximum */
+			snprintf(in, sizeof(in), "%s\n%s = %s\n", sd_param_max(key), key, maxv);
+		} else {
+			snprintf(in, sizeof(in), "%s = %s\n", key, maxv);
+		}
 		if (parse_text(in, &cal, err, sizeof(err)) != SQ_OK) {
 			fail_msg("%s: %s", in, err);
 		}
@@ -397,10 +423,43 @@ static void test_example_file_parses_to_defaults(void **state)
 	free(text);
 }
 
+/* The deviations (issue 12): stored in their parameters' Q formats
+ * (hand-derived raw values), bounded by their parameters. */
+static void test_deviations(void **state)
+{
+	calib_t cal;
+	char err[256] = "";
+
+	(void)state;
+	assert_int_equal(parse_text("delta_mu_sd = 0.03\nslope_spm_sd = 0.2\n"
+				    "slope_delta_mu_corr = -0.5\nuncertain_k_sigma = 3\n"
+				    "mass_kg_sd = 0.01\nomega0_radps_sd = 25\ndamping_sd = 0.002\n"
+				    "mu_inf_sd = 0.01\n", &cal, err, sizeof(err)), SQ_OK);
+	assert_int_equal(cal.sd.delta_mu_sd_q30, 32212255);   /* 0.03 * 2^30 = 32212254.72 */
+	assert_int_equal(cal.sd.slope_sd_q24, 3355443);       /* 0.2 * 2^24 = 3355443.2 */
+	assert_int_equal(cal.sd.slope_delta_mu_corr_q30, -536870912);
+	assert_int_equal(cal.uncertain_k_q16, 196608);
+	assert_int_equal(cal.sd.mass_sd_q16, 655);            /* 655.36 */
+	assert_int_equal(cal.sd.omega0_sd_q12, 102400);
+	assert_int_equal(cal.sd.damping_sd_q30, 2147484);     /* 2147483.648 */
+	assert_int_equal(cal.sd.mu_inf_sd_q30, 10737418);     /* 10737418.24 */
+	/* defaults: all 0, k = 2 */
+	assert_int_equal(parse_text("", &cal, err, sizeof(err)), SQ_OK);
+	assert_int_equal(cal.sd.delta_mu_sd_q30, 0);
+	assert_int_equal(cal.uncertain_k_q16, 2 << 16);
+	expect_error("slope_delta_mu_corr = 1.01\n", "out of range");
+	expect_error("mass_kg_sd = -0.1\n", "out of range");
+	expect_error("mass_kg = 1\nmass_kg_sd = 1.5\n", "standard deviation");
+	expect_error("delta_mu = 0.1\ndelta_mu_sd = 0.11\n", "standard deviation");
+	expect_error("slope_spm = 2\nslope_spm_sd = 2.01\n", "standard deviation");
+	expect_error("uncertain_k_sigma = 100.01\n", "out of range");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_empty_file_gives_defaults),
+		cmocka_unit_test(test_deviations),
 		cmocka_unit_test(test_values_in_physical_units),
 		cmocka_unit_test(test_rejects_with_line_numbers),
 		cmocka_unit_test(test_long_line_rejected),

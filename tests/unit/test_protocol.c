@@ -524,13 +524,31 @@ static void test_layout_squeal_status_extremes(void **state)
 {
 	/* fault, warning none, basin 1.0, margin +327.67, counter 1 */
 	static const uint8_t expect[8] = { 0x00, 0xF1, 0x00, 0x10, 0x27, 0xFF, 0x7F, 0x00 };
-	msg_squeal_status_t m = { 0, 1, MSG_SQUEAL_STATE_FAULT, 0, 10000, 32767 };
+	msg_squeal_status_t m = { 0, 1, MSG_SQUEAL_STATE_FAULT, 0, 10000, 32767, 0 };
 	uint8_t d[8];
 	uint8_t dlc = 0;
 
 	(void)state;
 	assert_int_equal(msg_squeal_status_pack(&m, d, &dlc), SQ_OK);
 	assert_memory_equal(d, expect, 8);
+}
+
+/* BorderMargin_sigma (issue 12): bits 56..63, Intel = byte 7 whole; raw
+ * 21 = 2.0 sigma (x 0.1 - 0.1) */
+static void test_layout_squeal_status_border_margin(void **state)
+{
+	/* counter 1 | stable 0 << 4 = 0x01; basin NA FF FF; margin NA 00 80 */
+	static const uint8_t expect[8] = { 0x00, 0x01, 0x00, 0xFF, 0xFF, 0x00, 0x80, 0x15 };
+	msg_squeal_status_t m = { 0, 1, MSG_SQUEAL_STATE_STABLE, 0, 0xFFFFU, -32768, 21 };
+	msg_squeal_status_t u;
+	uint8_t d[8];
+	uint8_t dlc = 0;
+
+	(void)state;
+	assert_int_equal(msg_squeal_status_pack(&m, d, &dlc), SQ_OK);
+	assert_memory_equal(d, expect, 8);
+	assert_int_equal(msg_squeal_status_unpack(expect, 8, &u), SQ_OK);
+	assert_int_equal(u.border_margin_sigma, 21);
 }
 
 static void test_layout_squeal_diag_every_page(void **state)
@@ -656,7 +674,8 @@ static void test_roundtrip_squeal_status_limits(void **state)
 			for (size_t b = 0; b < 3U; b++) {
 				for (size_t g = 0; g < sizeof(margins) / sizeof(margins[0]); g++) {
 					msg_squeal_status_t m = { (uint8_t)(s * 50U), (uint8_t)(w + s),
-								  states[s], w, basins[b], margins[g] };
+								  states[s], w, basins[b], margins[g],
+								  (uint8_t)(g * 85U) };
 					msg_squeal_status_t u;
 
 					assert_int_equal(msg_squeal_status_pack(&m, d, &dlc), SQ_OK);
@@ -667,6 +686,7 @@ static void test_roundtrip_squeal_status_limits(void **state)
 					assert_int_equal(u.warning_level, m.warning_level);
 					assert_int_equal(u.basin_ratio, m.basin_ratio);
 					assert_int_equal(u.hopf_margin_mps, m.hopf_margin_mps);
+					assert_int_equal(u.border_margin_sigma, m.border_margin_sigma);
 				}
 			}
 		}
@@ -796,7 +816,7 @@ static void test_pack_rejects_out_of_range_values(void **state)
 		assert_int_equal(msg_disc_speed_pack(&m, d, &dlc), SQ_ERANGE);
 	}
 	{
-		msg_squeal_status_t m = { 0, 0, 4, 0, 0, 0 };
+		msg_squeal_status_t m = { 0, 0, 4, 0, 0, 0, 0 };
 		assert_int_equal(msg_squeal_status_pack(&m, d, &dlc), SQ_ERANGE);
 		m.squeal_state = 14;
 		assert_int_equal(msg_squeal_status_pack(&m, d, &dlc), SQ_ERANGE);
@@ -1001,6 +1021,7 @@ int main(void)
 		cmocka_unit_test(test_layout_squeal_detail),
 		cmocka_unit_test(test_layout_squeal_detail2),
 		cmocka_unit_test(test_layout_squeal_status_extremes),
+		cmocka_unit_test(test_layout_squeal_status_border_margin),
 		cmocka_unit_test(test_layout_squeal_diag_every_page),
 		cmocka_unit_test(test_roundtrip_disc_speed_and_pad_force_limits),
 		cmocka_unit_test(test_roundtrip_squeal_status_limits),

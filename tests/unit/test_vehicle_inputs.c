@@ -517,6 +517,57 @@ static void test_input_rx_contracts(void **state)
 	f = frame(0x0CF00A0BU, true, 8U, zeros);
 	f.data[0] = 0x5AU; /* not the P01 CRC of these bytes */
 	assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, INPUT_RX_CRC);
+
+/* The deviations: flat keys are every corner's, a [corner] may set its own
+ * (stored in the parameters' Q formats: 0.006 x 2^30 = 6442450.9); a
+ * corner's deviation above its own parameter is refused; the writer writes
+ * them back. */
+static void test_corner_deviations(void **state)
+{
+	char buf[2048];
+	char err[300] = "";
+	FILE *f;
+	calib_t c2;
+
+	(void)state;
+	snprintf(buf, sizeof(buf), "delta_mu_sd = 0.006\nslope_spm_sd = 0.1\n%s"
+		 "[corner FL]\nspeed = S\nforce = F\n"
+		 "[corner FR]\nspeed = S\nforce = F\nslope_spm = 3\nslope_spm_sd = 0.3\n"
+		 "status_id = 0x320\ndetail_id = 0x321\ndiag_id = 0x322\ndetail2_id = 0x323\n",
+		 good_input);
+	f = fmemopen(buf, strlen(buf), "r");
+	assert_non_null(f);
+	assert_int_equal(calib_text_parse_map(f, "car.cal", &cal, &names, err, sizeof(err)), SQ_OK);
+	fclose(f);
+	assert_int_equal(cal.n_corners, 2);
+	assert_int_equal(cal.corners[0].sd.delta_mu_sd_q30, 6442451);
+	assert_int_equal(cal.corners[0].sd.slope_sd_q24, 1677722);   /* 0.1 x 2^24 */
+	assert_int_equal(cal.corners[1].sd.delta_mu_sd_q30, 6442451); /* inherited */
+	assert_int_equal(cal.corners[1].sd.slope_sd_q24, 5033165);   /* 0.3 x 2^24 */
+	/* written and read back: the same block */
+	{
+		char *text = NULL;
+		size_t len = 0;
+		FILE *o = open_memstream(&text, &len);
+		uint8_t a[CALIB_BLOCK_LEN];
+		uint8_t b[CALIB_BLOCK_LEN];
+
+		assert_non_null(o);
+		assert_int_equal(calib_text_write(o, &cal), SQ_OK);
+		fclose(o);
+		f = fmemopen(text, len, "r");
+		assert_non_null(f);
+		assert_int_equal(calib_text_parse_map(f, "w.cal", &c2, NULL, err, sizeof(err)),
+				 SQ_OK);
+		fclose(f);
+		free(text);
+		assert_int_equal(calib_encode(&cal, a, sizeof(a)), SQ_OK);
+		assert_int_equal(calib_encode(&c2, b, sizeof(b)), SQ_OK);
+		assert_memory_equal(a, b, sizeof(a));
+	}
+	snprintf(buf, sizeof(buf), "%s[corner FL]\nspeed = S\nforce = F\nslope_spm = 1\n"
+		 "slope_spm_sd = 1.5\n", good_input);
+	refused(buf, "car.cal: a standard deviation");
 }
 
 int main(void)
@@ -531,6 +582,7 @@ int main(void)
 		cmocka_unit_test(test_f_torque_and_rpm),
 		cmocka_unit_test(test_monitor_faults_on_layout_a),
 		cmocka_unit_test(test_bad_calibrations),
+		cmocka_unit_test(test_corner_deviations),
 		cmocka_unit_test(test_written_map_parses_back),
 		cmocka_unit_test(test_input_rx_contracts),
 	};
