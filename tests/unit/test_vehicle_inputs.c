@@ -517,6 +517,7 @@ static void test_input_rx_contracts(void **state)
 	f = frame(0x0CF00A0BU, true, 8U, zeros);
 	f.data[0] = 0x5AU; /* not the P01 CRC of these bytes */
 	assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, INPUT_RX_CRC);
+}
 
 /* The deviations: flat keys are every corner's, a [corner] may set its own
  * (stored in the parameters' Q formats: 0.006 x 2^30 = 6442450.9); a
