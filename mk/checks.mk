@@ -23,6 +23,9 @@ TEST_PROGS += tests/static/test-cppcheck-misra-control.sh
 tests/protocol/test-unpack-crosscheck-control.sh: build/test/tests/protocol/unpack_random
 TEST_PROGS += tests/protocol/test-unpack-crosscheck-control.sh
 
+# the mutant list still applies to the sources (nothing is built or run)
+TEST_PROGS += tests/support/check-mutants.sh
+
 # Mutation score (tools/mutate.py, mutants in tools/mutants.txt): a scratch
 # copy in build/mutate/, one mutant at a time, only the tests mapped to the
 # mutated file; about 1.5 minutes on two cores (incremental builds). A

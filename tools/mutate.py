@@ -45,6 +45,9 @@ CALIB_TESTS = ["build/test/test_calib", "build/test-fixed/test_calib",
 PROTOCOL_TESTS = ["build/test/tests/unit/test_protocol",
                   "tests/protocol/test_canmatrix_crosscheck.py",
                   "tests/protocol/test_unpack_crosscheck.py"]
+# the vehicle input map (issue 11): extraction, protection, conversion
+INPUTMAP_TESTS = ["build/test/test_inputmap", "build/test-fixed/test_inputmap",
+                  "build/test/test_vehicle_inputs", "build/test-fixed/test_vehicle_inputs"]
 TESTS_FOR = {
     "firmware/protocol/crc8_p01.c": PROTOCOL_TESTS,
     "firmware/protocol/e2e_p01.c": PROTOCOL_TESTS + ["build/test/test_monitor_faults"],
@@ -63,6 +66,10 @@ TESTS_FOR = {
     "firmware/model/fixmath.c": ["build/test-fixed/test_model", "build/test-fixed/test_model_props",
                                  "build/test-fixed/test_fixmath"],
     "firmware/model/sq_mathf.c": ["build/test/test_model", "build/test/test_model_props"],
+    "firmware/protocol/can_signal.c": INPUTMAP_TESTS,
+    "firmware/protocol/e2e_p02.c": INPUTMAP_TESTS,
+    "firmware/monitor/input_conv.c": INPUTMAP_TESTS,
+    "firmware/monitor/input_rx.c": INPUTMAP_TESTS + MONITOR_TESTS,
     "host-sim/candump_log.c": ["build/test/test_candump_log"],
     "host-sim/calib_text.c": ["build/test/test_calib_text"],
 }

@@ -99,6 +99,24 @@ static void test_motorola_short_in_one_byte(void **state)
 	assert_int_equal(can_signal_min_dlc(&s), 1);
 }
 
+/* An Intel signal whose last bit is bit 0 of a byte needs that byte:
+ * 0|9@1+ takes bits 0..8 (bytes 0 and 1), 7|2@1+ bits 7 and 8; 0|8@1+
+ * only byte 0. (min_dlc is what a short frame is counted against.) */
+static void test_intel_min_dlc_at_byte_edges(void **state)
+{
+	const can_signal_t nine = sig(0, 9, CAN_SIGNAL_INTEL, 0);
+	const can_signal_t two = sig(7, 2, CAN_SIGNAL_INTEL, 0);
+	const can_signal_t eight = sig(0, 8, CAN_SIGNAL_INTEL, 0);
+	const uint8_t d[8] = { 0x80, 0x01 };
+
+	(void)state;
+	assert_int_equal(can_signal_min_dlc(&nine), 2);
+	assert_int_equal(can_signal_min_dlc(&two), 2);
+	assert_int_equal(can_signal_min_dlc(&eight), 1);
+	assert_int_equal(can_signal_get(&two, d), 3);      /* bit 7 and bit 8 set */
+	assert_int_equal(can_signal_get(&nine, d), 0x180); /* 1 1000 0000 */
+}
+
 static void test_signed_values(void **state)
 {
 	const can_signal_t s = sig(0, 12, CAN_SIGNAL_INTEL, 1);
@@ -473,6 +491,7 @@ int main(void)
 		cmocka_unit_test(test_motorola_sawtooth),
 		cmocka_unit_test(test_motorola_big_endian_16_and_32),
 		cmocka_unit_test(test_motorola_short_in_one_byte),
+		cmocka_unit_test(test_intel_min_dlc_at_byte_edges),
 		cmocka_unit_test(test_signed_values),
 		cmocka_unit_test(test_bad_descriptors),
 		cmocka_unit_test(test_signal_contracts),
