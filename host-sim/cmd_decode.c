@@ -73,10 +73,6 @@ typedef struct {
 	bool overflow;
 } decoder_t;
 
-static const char *const state_names[16] = {
-	"stable", "bistable", "unstable", "not_sliding", "4", "5", "6", "7", "8",
-	"9", "10", "11", "12", "13", "14", "fault"
-};
 static const char *const level_names[4] = { "none", "advisory", "warning", "critical" };
 static const char *const page_names[5] = {
 	"uptime_and_bus_off", "task_time_and_overruns", "e2e_errors", "tx_and_frame_errors",
@@ -329,7 +325,13 @@ static void decode_frame(decoder_t *d, const candump_frame_t *f)
 				continue;
 			}
 			if (strcmp(s->name, "SquealState") == 0) {
-				put(d, " state=%s", state_names[raw & 0xF]);
+				const char *n = msg_squeal_state_name((uint8_t)(raw & 0xF));
+
+				if (n != NULL) {
+					put(d, " state=%s", n);
+				} else {
+					put(d, " state=%d", (int)(raw & 0xF)); /* a value the DBC does not name */
+				}
 			} else if (strcmp(s->name, "WarningLevel") == 0) {
 				if ((raw >= 0) && (raw < 4)) {
 					put(d, " warning=%s", level_names[raw]);

@@ -224,20 +224,9 @@ static void remove_calibration(void)
 
 static const char *state_name(uint8_t state)
 {
-	switch (state) {
-	case MSG_SQUEAL_STATE_STABLE:
-		return "stable";
-	case MSG_SQUEAL_STATE_BISTABLE:
-		return "bistable";
-	case MSG_SQUEAL_STATE_UNSTABLE:
-		return "unstable";
-	case MSG_SQUEAL_STATE_NOT_SLIDING:
-		return "not_sliding";
-	case MSG_SQUEAL_STATE_FAULT:
-		return "fault";
-	default:
-		return "?";
-	}
+	const char *n = msg_squeal_state_name(state);
+
+	return (n != NULL) ? n : "?";
 }
 
 /* index into the per-state time table: 0..3, 4 = fault */

@@ -62,9 +62,6 @@
 #define N_STATES 5U /* stable, bistable, unstable, not sliding, fault */
 #define N_LEVELS 4U
 
-static const char *const state_names[N_STATES] = {
-	"stable", "bistable", "unstable", "not_sliding", "fault"
-};
 static const char *const level_names[N_LEVELS] = {
 	"none", "advisory", "warning", "critical"
 };
@@ -567,7 +564,7 @@ static void summary(const replay_t *r, const replay_args_t *a)
 		fprintf(o, "  corner %s              inputs used speed %u force %u, implausible %u/%u, final %s\n",
 			pos[c->corner.pos & 3U], c->speed.count.used, c->force.count.used,
 			c->speed.count.implausible, c->force.count.implausible,
-			state_names[state_index(c->state)]);
+			rs_state_name(state_index(c->state)));
 	}
 	fprintf(o, "  rejected:\n");
 	fprintf(o, "    malformed_lines     %llu\n", (unsigned long long)r->malformed);
@@ -610,7 +607,7 @@ static void summary(const replay_t *r, const replay_args_t *a)
 	fprintf(o, "  gaps_skipped          %llu\n", (unsigned long long)r->gaps);
 	fprintf(o, "  state_time_s         ");
 	for (i = 0U; i < N_STATES; i++) {
-		fprintf(o, " %s=", state_names[i]);
+		fprintf(o, " %s=", rs_state_name(i));
 		print_us(o, r->state_us[i]);
 	}
 	fprintf(o, "\n  warnings_raised      ");
@@ -627,13 +624,13 @@ static void summary(const replay_t *r, const replay_args_t *a)
 	for (i = 0U; i < N_STATES; i++) {
 		for (j = 0U; j < N_STATES; j++) {
 			if (r->transitions[i][j] != 0U) {
-				fprintf(o, " %s->%s=%llu", state_names[i], state_names[j],
+				fprintf(o, " %s->%s=%llu", rs_state_name(i), rs_state_name(j),
 					(unsigned long long)r->transitions[i][j]);
 			}
 		}
 	}
 	fprintf(o, "\n  final_state           %s, warning %s\n",
-		state_names[state_index(m->state)],
+		rs_state_name(state_index(m->state)),
 		(m->warning < N_LEVELS) ? level_names[m->warning] : "?");
 	fprintf(o, "  output_frames         %llu (", (unsigned long long)r->out_frames);
 	for (i = 0U; i < MSG_COUNT; i++) {
@@ -752,7 +749,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_key(w, "state_time_s");
 	json_begin_object(w);
 	for (i = 0U; i < N_STATES; i++) {
-		json_kv_seconds(w, state_names[i], r->state_us[i]);
+		json_kv_seconds(w, rs_state_name(i), r->state_us[i]);
 	}
 	json_end_object(w);
 	json_key(w, "warnings_raised");
@@ -770,7 +767,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 
 			changes += r->transitions[i][j];
 			if (r->transitions[i][j] != 0U) {
-				(void)snprintf(name, sizeof(name), "%s->%s", state_names[i], state_names[j]);
+				(void)snprintf(name, sizeof(name), "%s->%s", rs_state_name(i), rs_state_name(j));
 				json_kv_u64(w, name, r->transitions[i][j]);
 			}
 		}
@@ -778,7 +775,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_kv_u64(w, "total", changes);
 	json_end_object(w);
 	json_key(w, "final_state");
-	json_string(w, r->started ? state_names[state_index(m->state)] : NULL);
+	json_string(w, r->started ? rs_state_name(state_index(m->state)) : NULL);
 	json_key(w, "final_warning");
 	json_string(w, (r->started && (m->warning < N_LEVELS)) ? level_names[m->warning] : NULL);
 	json_key(w, "output_frames");

@@ -8,9 +8,12 @@
 #include "squeal_msgs.h"
 #include "sq_status.h"
 
-const char *const rs_state_names[RS_N_STATES] = {
-	"stable", "bistable", "unstable", "not_sliding", "fault"
-};
+const char *rs_state_name(unsigned i)
+{
+	const char *n = msg_squeal_state_name((uint8_t)((i < 4U) ? i : MSG_SQUEAL_STATE_FAULT));
+
+	return (n != NULL) ? n : "?";
+}
 const char *const rs_corner_names[RS_CORNERS_MAX] = { "FL", "FR", "RL", "RR" };
 
 /* The signals read, looked up once by their DBC names. */
@@ -124,7 +127,7 @@ static void write_episode(replay_summary_t *rs, unsigned k, uint64_t end_us)
 
 	json_begin_object(w);
 	json_kv_string(w, "corner", rs_corner_names[k]);
-	json_kv_string(w, "state", rs_state_names[e->state]);
+	json_kv_string(w, "state", rs_state_name(e->state));
 	json_kv_seconds(w, "start_s", e->start_us);
 	json_kv_seconds(w, "end_s", end_us);
 	json_kv_u64(w, "warning_level", e->warning_max);
@@ -272,7 +275,7 @@ static void write_corner(const replay_summary_t *rs, unsigned k)
 	json_key(w, "state_time_s");
 	json_begin_object(w);
 	for (s = 0U; s < RS_N_STATES; s++) {
-		json_kv_seconds(w, rs_state_names[s], c->state_us[s]);
+		json_kv_seconds(w, rs_state_name(s), c->state_us[s]);
 	}
 	json_end_object(w);
 	/* occupancy: [v0 cell, force cell, state, seconds], non-zero cells only */
@@ -287,7 +290,7 @@ static void write_corner(const replay_summary_t *rs, unsigned k)
 				json_begin_array(w);
 				json_u64(w, i);
 				json_u64(w, j);
-				json_string(w, rs_state_names[s]);
+				json_string(w, rs_state_name(s));
 				json_fixed(w, (int64_t)c->cell_us[s][i][j], 6U);
 				json_end_array(w);
 			}

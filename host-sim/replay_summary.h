@@ -87,7 +87,9 @@ typedef struct {
 	rs_corner_t corner[RS_CORNERS_MAX];
 } replay_summary_t;
 
-extern const char *const rs_state_names[RS_N_STATES];
+/* State index i (0..RS_N_STATES-1: SquealState 0..3, then fault) by its
+ * DBC name (msg_squeal_state_name). */
+const char *rs_state_name(unsigned i);
 extern const char *const rs_corner_names[RS_CORNERS_MAX];
 
 /* Starts with the DBC's identifiers and opens the document's "episodes"

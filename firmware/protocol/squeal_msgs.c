@@ -611,6 +611,24 @@ int msg_pad_force_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
 
 /* ---- descriptor access --------------------------------------------------- */
 
+const char *msg_squeal_state_name(uint8_t state)
+{
+	switch (state) {
+	case MSG_SQUEAL_STATE_STABLE:
+		return "stable";
+	case MSG_SQUEAL_STATE_BISTABLE:
+		return "bistable";
+	case MSG_SQUEAL_STATE_UNSTABLE:
+		return "unstable";
+	case MSG_SQUEAL_STATE_NOT_SLIDING:
+		return "not_sliding";
+	case MSG_SQUEAL_STATE_FAULT:
+		return "fault";
+	default:
+		return NULL;
+	}
+}
+
 const msg_desc_t *msg_desc_find(uint16_t id)
 {
 	size_t i;

@@ -294,6 +294,15 @@ extern const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT];
 const msg_desc_t *msg_desc_find(uint16_t id);
 
 /*
+ * The name of a SquealState value as the DBC's VAL_ table writes it
+ * ("stable", "bistable", "unstable", "not_sliding", "fault"), or NULL for a
+ * value the DBC does not name. The one place the bus's state names are
+ * spelled (the DBC cross-check compares them with the VAL_ table); host
+ * tools print states through it.
+ */
+const char *msg_squeal_state_name(uint8_t state);
+
+/*
  * Raw value of one signal in a frame (sign-extended when signed).
  * Returns SQ_OK; SQ_ENOENT for a multiplexed signal that this frame does
  * not carry (other page); SQ_EBADMSG when dlc is not the message's DLC;

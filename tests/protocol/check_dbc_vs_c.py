@@ -29,6 +29,8 @@ def parse_table(text):
                 mux=f[7], num=int(f[8]), den=int(f[9]), off=int(f[10]),
                 raw_min=int(f[11]), raw_max=int(f[12]),
                 na=int(f[14]) if f[13] == "NA" else None)
+        elif f[0] == "STATENAME":
+            defs.setdefault("_state_names", {})[int(f[1])] = f[2]
         elif f[0] == "DEF":
             defs[f[1]] = int(f[2])
     return msgs, sigs, defs
@@ -135,6 +137,9 @@ def compare(db, msgs, sigs, defs, r):
             "SquealState value table %s" % vals)
     for k, v in vals.items():
         r.check(defs.get("MSG_SQUEAL_STATE_" + v.upper()) == k, "MSG_SQUEAL_STATE_%s" % v.upper())
+    r.check(defs.get("_state_names") == vals,
+            "msg_squeal_state_name() names exactly the SquealState value table (%s)"
+            % defs.get("_state_names"))
     vals = {int(k): v for k, v in st.signal_by_name("WarningLevel").values.items()}
     r.check(vals == {0: "none", 1: "advisory", 2: "warning", 3: "critical"},
             "WarningLevel value table %s" % vals)

@@ -294,6 +294,13 @@ static int emit_table(void)
 			       (int)((s->flags & MSG_SIG_HAS_NA) != 0U ? s->na_raw : 0));
 		}
 	}
+	for (unsigned int v = 0; v < 16U; v++) { /* msg_squeal_state_name() */
+		const char *n = msg_squeal_state_name((uint8_t)v);
+
+		if (n != NULL) {
+			printf("STATENAME\t%u\t%s\n", v, n);
+		}
+	}
 	def("MSG_SQUEAL_STATE_STABLE", MSG_SQUEAL_STATE_STABLE);
 	def("MSG_SQUEAL_STATE_BISTABLE", MSG_SQUEAL_STATE_BISTABLE);
 	def("MSG_SQUEAL_STATE_UNSTABLE", MSG_SQUEAL_STATE_UNSTABLE);
