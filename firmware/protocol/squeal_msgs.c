@@ -613,20 +613,20 @@ int msg_pad_force_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
 
 const char *msg_squeal_state_name(uint8_t state)
 {
-	switch (state) {
-	case MSG_SQUEAL_STATE_STABLE:
-		return "stable";
-	case MSG_SQUEAL_STATE_BISTABLE:
-		return "bistable";
-	case MSG_SQUEAL_STATE_UNSTABLE:
-		return "unstable";
-	case MSG_SQUEAL_STATE_NOT_SLIDING:
-		return "not_sliding";
-	case MSG_SQUEAL_STATE_FAULT:
-		return "fault";
-	default:
-		return NULL;
+	/* the model's states 0..3, in SquealState's order, then FAULT (15) */
+	static const char *const model_states[4] = {
+		"stable", "bistable", "unstable", "not_sliding"
+	};
+	const char *name;
+
+	if (state <= MSG_SQUEAL_STATE_NOT_SLIDING) {
+		name = model_states[state];
+	} else if (state == MSG_SQUEAL_STATE_FAULT) {
+		name = "fault";
+	} else {
+		name = NULL; /* a value the DBC does not name */
 	}
+	return name;
 }
 
 const msg_desc_t *msg_desc_find(uint16_t id)
