@@ -4,6 +4,9 @@
 # must be able to fail. make mutate: the mutation score (a bench figure).
 TEST_PROGS += tests/support/test-run-tests.sh
 
+# the shared check helpers (check, all_of, any_of) can fail
+TEST_PROGS += tests/support/test-checks-lib.sh
+
 # run-ecu-boot.sh on a stub emulator: a bad boot fails exactly its six checks
 tests/target/test-ecu-boot-control.sh: build/stm32f4-ecutest/squeal-monitor.elf \
 	build/stm32f4-faulttest/squeal-monitor.elf

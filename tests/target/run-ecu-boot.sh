@@ -21,21 +21,8 @@ logdir=${ECU_BOOT_LOGDIR:-build/test-logs}
 elf=build/stm32f4-ecutest/squeal-monitor.elf
 log=$logdir/target-ecu-boot.txt
 mkdir -p "$(dirname "$log")"
-pass=0; fail=0
-check() { # description, condition...
-	local d=$1; shift
-	if "$@"; then pass=$((pass + 1)); echo "PASS: $d"; else fail=$((fail + 1)); echo "FAIL: $d"; fi
-}
-# all_of 'cond' 'cond'...: a compound condition as ONE argument of check, so
-# that every part runs inside check (check "d" [ A ] && [ B ] would run [ B ]
-# outside it and throw its result away). A part that cannot be evaluated
-# (an empty field in arithmetic) is false.
-all_of() {
-	local c
-	for c in "$@"; do
-		(eval "$c") 2>/dev/null || return 1
-	done
-}
+# shellcheck source=tests/support/checks.sh
+. tests/support/checks.sh
 timeout 60 "$qemu" -M netduinoplus2 -nographic -monitor none -serial none \
 	-semihosting-config enable=on,target=native -kernel "$elf" >"$log" 2>&1
 rc=$?
@@ -87,5 +74,4 @@ check "recorded PC is the faulting instruction's function (stm32_test_event, got
 	[ "$func" = stm32_test_event ]
 check "second boot runs its main loop to the end" grep -q '^EVT summary.* reset_reason=4 ' "$flog"
 
-echo "RESULT: $pass passed, $fail failed"
-[ "$fail" = 0 ]
+checks_done

@@ -29,7 +29,8 @@ check "self-test before the main loop" \
 check "crystal measured: none started in QEMU (hse_hz=$(f "$st" hse_hz))" [ "$(f "$st" hse_hz)" = 0 ]
 check "crystal fault bit (0x1) set" [ $(( 16#$(f "$st" faults) & 1 )) = 1 ]
 check "reset cause reported (cold start, RCC_CSR reads 0: unknown = 6)" [ "$(f "$st" reset)" = 6 ]
-check "BOR level reported, 0..3 (got $(f "$st" bor))" [ -n "$(f "$st" bor)" ] && [ "$(f "$st" bor)" -le 3 ]
+check "BOR level reported, 0..3 (got $(f "$st" bor))" \
+	all_of '[ -n "$(f "$st" bor)" ]' '[ "$(f "$st" bor)" -le 3 ]'
 check "CAN1 loopback: unavailable (2) in QEMU" [ "$(f "$st" lb0)" = 2 ]
 check "CAN2 loopback: unavailable (2) in QEMU" [ "$(f "$st" lb1)" = 2 ]
 check "loopback unavailable is not a loopback failure (fault bit 0x4 clear)" [ $(( 16#$(f "$st" faults) & 4 )) = 0 ]
@@ -44,7 +45,7 @@ echo "  | $st2"
 prev=$(f "$st2" stack_prev); res=$(f "$st2" stack_reserve)
 check "after a reset: reset cause HAL_RESET_FAULT (4)" [ -n "$st2" ]
 check "after a reset: previous run's stack use measured (${prev:-?} of ${res:-?} bytes, 64..reserve/2)" \
-	[ -n "$prev" ] && [ "$prev" -ge 64 ] && [ "$prev" -le $(( ${res:-0} / 2 )) ]
+	all_of '[ -n "$prev" ]' '[ "$prev" -ge 64 ]' '[ "$prev" -le $(( ${res:-0} / 2 )) ]'
 
 # Clock security system: a crystal that stops at run time gives the NMI
 # (QEMU has no CSS: the test image pends the NMI itself once its main loop
@@ -59,7 +60,7 @@ check "NMI (vector 2) recorded" grep -q '^EVT fault vector=2 ' "$log3"
 check "next start reports HAL_RESET_FAULT from the NMI" grep -q '^EVT reset_reason value=4 fault_vector=2 ' "$log3"
 sum3=$(grep '^EVT summary' "$log3" || true)
 check "and runs on the HSI (16 MHz) with the clock fallback reported" \
-	[ -n "$sum3" ] && echo "$sum3" | grep -q ' core_mhz=16' && \
-	[ $(( $(echo "$sum3" | sed -nE 's/.* faults=0x([0-9a-f]+).*/0x\1/p') & 1 )) = 1 ]
+	all_of '[ -n "$sum3" ]' 'echo "$sum3" | grep -q " core_mhz=16"' \
+	'[ $(( $(echo "$sum3" | sed -nE "s/.* faults=0x([0-9a-f]+).*/0x\1/p") & 1 )) = 1 ]'
 
 finish
