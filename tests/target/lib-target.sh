@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # SPDX-License-Identifier: MIT
 # Shared by the target-in-the-loop scripts (source it): one QEMU run of an
 # ECU test image with semihosting, and the suite's check/all_of/any_of
