@@ -94,6 +94,14 @@ typedef struct {
 
 #define HAL_CAN_MAX_FILTERS 14U /* per bus (bxCAN: 28 banks split by CAN2SB) */
 
+/* The largest identifier of a frame or filter with these HAL_CAN_FLAG_*
+ * (11 or 29 bits), for every backend's range checks. */
+static inline uint32_t hal_can_id_max(uint8_t flags)
+{
+	return ((flags & HAL_CAN_FLAG_EXT) != 0U) ? (uint32_t)HAL_CAN_EXT_ID_MAX :
+		(uint32_t)HAL_CAN_STD_ID_MAX;
+}
+
 /* True when every filter's id and mask fit its kind (11 or 29 bits): the
  * SQ_EINVAL check of hal_can_set_rx_filter(), the same for every backend. */
 static inline bool hal_can_filters_in_range(const hal_can_filter_t *filters, uint32_t count)
@@ -102,8 +110,7 @@ static inline bool hal_can_filters_in_range(const hal_can_filter_t *filters, uin
 	bool ok = true;
 
 	for (i = 0U; i < count; i++) {
-		const uint32_t max = ((filters[i].flags & HAL_CAN_FLAG_EXT) != 0U) ?
-			(uint32_t)HAL_CAN_EXT_ID_MAX : (uint32_t)HAL_CAN_STD_ID_MAX;
+		const uint32_t max = hal_can_id_max(filters[i].flags);
 
 		ok = ok && (filters[i].id <= max) && (filters[i].mask <= max);
 	}

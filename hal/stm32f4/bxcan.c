@@ -479,8 +479,7 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 	    (frame->flags & ~(uint8_t)(HAL_CAN_FLAG_EXT | HAL_CAN_FLAG_RTR)) != 0U) {
 		return SQ_EINVAL;
 	}
-	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U ? frame->id > HAL_CAN_EXT_ID_MAX
-						     : frame->id > HAL_CAN_STD_ID_MAX) {
+	if (frame->id > hal_can_id_max(frame->flags)) {
 		return SQ_EINVAL;
 	}
 	if (st->mode == HAL_CAN_MODE_LISTEN_ONLY) {
@@ -565,6 +564,7 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 {
 	bus_state_t *st = bus_get(bus);
 	uint32_t i;
+	bool flags_ok = true;
 
 	HAL_REQUIRE(count <= HAL_CAN_MAX_FILTERS);
 	HAL_REQUIRE(count == 0U || filters != NULL);
@@ -572,13 +572,11 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 		return SQ_ENODEV;
 	}
 	for (i = 0; i < count; i++) {
-		uint32_t max = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U ? HAL_CAN_EXT_ID_MAX
-									   : HAL_CAN_STD_ID_MAX;
-
-		if ((filters[i].flags & ~(uint8_t)HAL_CAN_FLAG_EXT) != 0U || filters[i].id > max ||
-		    filters[i].mask > max) {
-			return SQ_EINVAL;
-		}
+		/* bxCAN's banks know no other kind of frame than EXT or not */
+		flags_ok = flags_ok && ((filters[i].flags & ~(uint8_t)HAL_CAN_FLAG_EXT) == 0U);
+	}
+	if (!flags_ok || !hal_can_filters_in_range(filters, count)) {
+		return SQ_EINVAL;
 	}
 	filter_banks_write(bus, filters, count);
 	return SQ_OK;

@@ -54,11 +54,6 @@ static vbus_t *bus_of(uint8_t bus)
 	return (bus < bus_count) ? &buses[bus] : NULL;
 }
 
-static uint32_t id_max(uint8_t flags)
-{
-	return ((flags & HAL_CAN_FLAG_EXT) != 0U) ? HAL_CAN_EXT_ID_MAX : HAL_CAN_STD_ID_MAX;
-}
-
 /* ---- RX ------------------------------------------------------------------- */
 
 static bool filter_pass(const vbus_t *b, const hal_can_frame_t *f)
@@ -223,7 +218,7 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 		return SQ_ENODEV;
 	}
 	if ((frame->dlc > HAL_CAN_MAX_DLEN) || ((frame->flags & HAL_CAN_FLAG_ERR) != 0U) ||
-	    (frame->id > id_max(frame->flags))) {
+	    (frame->id > hal_can_id_max(frame->flags))) {
 		return SQ_EINVAL;
 	}
 	if (b->status.mode == HAL_CAN_MODE_LISTEN_ONLY) {
