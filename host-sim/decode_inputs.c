@@ -72,7 +72,7 @@ int decode_inputs_load(decode_inputs_t *d, const char *path)
 		}
 	}
 	for (i = 0U; i < d->n_inputs; i++) {
-		e2e_p01_rx_init(&d->e2e[i]);
+		input_rx_state_init(&d->st[i]);
 	}
 	return 0;
 }
@@ -151,12 +151,8 @@ void decode_inputs_frame(decode_inputs_t *d, const candump_frame_t *f, bool csv,
 		if (!input_rx_matches(cfg, &h, &id_only)) {
 			continue;
 		}
-		r = input_rx_frame(cfg, &d->e2e[i], &h);
+		r = input_rx_judge(cfg, &d->st[i], &h);
 		why = (input_rx_reason_t)r.reason;
-		if ((why == INPUT_RX_OK) &&
-		    !input_rx_plausible(cfg, &d->has_prev[i], &d->prev[i], r.value)) {
-			why = INPUT_RX_IMPLAUSIBLE;
-		}
 		if (csv) {
 			fprintf(out, "%" PRIu64 ".%06" PRIu64 ",%s,", f->t_ns / 1000000000U,
 				(f->t_ns % 1000000000U) / 1000U, f->iface);

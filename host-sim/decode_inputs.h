@@ -28,9 +28,7 @@ typedef struct {
 	uint32_t n_inputs;
 	uint32_t n_corners;
 	input_rx_cfg_t rx[CALIB_MAX_INPUTS];
-	e2e_p01_rx_t e2e[CALIB_MAX_INPUTS];
-	bool has_prev[CALIB_MAX_INPUTS];
-	int64_t prev[CALIB_MAX_INPUTS];
+	input_rx_state_t st[CALIB_MAX_INPUTS];
 	/* per corner: its inputs prepared with its geometry, its last v0 */
 	calib_corner_t corner[CALIB_MAX_CORNERS];
 	input_rx_cfg_t corner_rx[CALIB_MAX_CORNERS][2];

@@ -49,3 +49,23 @@ BENCH_PROGS += tests/monitor/monitor-cost.sh
 monitor-cost: tests/monitor/monitor-cost.sh
 	tests/monitor/monitor-cost.sh
 BENCH_PROGS += tests/monitor/monitor-ram.sh
+
+# The input stage's one verdict per frame (order of the checks, reason
+# names, na_raw2) on fixture layout A, E2E P02 keeping byte 1's high
+# nibble (CRCs from two independent Python references), and the
+# uncertainty following the classification's criterion (exact or cubic,
+# against tests/reference/sigma_cubic_ref.py), both builds.
+#   build/<v>/test_input_verdict
+#   build/<v>/test_e2e_p02
+#   build/<v>/test_sigma_criterion
+define input_verdict_rules
+build/$(1)/test_input_verdict: build/$(1)/app/tests/unit/test_input_verdict.o build/$(1)/app/tests/support/test_contract.o build/$(1)/app/host-sim/calib_text.o build/$(1)/app/host-sim/calib_sections.o build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+build/$(1)/test_e2e_p02: build/$(1)/app/tests/unit/test_e2e_p02.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+build/$(1)/test_sigma_criterion: build/$(1)/app/tests/unit/test_sigma_criterion.o build/$(1)/app/tests/support/sq_num.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,$(MONITOR_TEST_VARIANTS),$(eval $(call input_verdict_rules,$(v))))
+TEST_PROGS += $(foreach v,$(MONITOR_TEST_VARIANTS),build/$(v)/test_input_verdict build/$(v)/test_e2e_p02 \
+	build/$(v)/test_sigma_criterion)

@@ -83,6 +83,29 @@ squeal_case_t squeal_model_case(const squeal_params_t *params,
 	return SQUEAL_CASE_SLIDING;
 }
 
+squeal_case_t squeal_model_classify_case(const squeal_params_t *params,
+					 const squeal_point_t *point,
+					 squeal_criterion_t criterion,
+					 squeal_result_t *out, squeal_log_terms_t *t)
+{
+	squeal_case_t c = squeal_model_case(params, point);
+
+	if ((c == SQUEAL_CASE_INVALID) ||
+	    ((criterion != SQUEAL_CRITERION_EXACT) &&
+	     (criterion != SQUEAL_CRITERION_CUBIC))) {
+		squeal_model_result_clear(out, SQUEAL_STATE_INVALID);
+		c = SQUEAL_CASE_INVALID;
+	} else if (c == SQUEAL_CASE_NOT_SLIDING) {
+		squeal_model_result_clear(out, SQUEAL_STATE_NOT_SLIDING);
+	} else {
+		squeal_model_result_clear(out, SQUEAL_STATE_STABLE);
+		if (c == SQUEAL_CASE_SLIDING) {
+			squeal_model_classify_sliding(params, point, criterion, out, t);
+		}
+	}
+	return c;
+}
+
 /*
  * The domain rules of squeal_model.h (squeal_model_case); the sliding case
  * itself is each build's squeal_model_classify_sliding().
@@ -92,23 +115,9 @@ int squeal_model_classify(const squeal_params_t *params,
 			  squeal_criterion_t criterion,
 			  squeal_result_t *out)
 {
-	squeal_case_t c;
+	squeal_log_terms_t t;
 
 	HAL_REQUIRE((params != NULL) && (point != NULL) && (out != NULL));
-	c = squeal_model_case(params, point);
-	if ((c == SQUEAL_CASE_INVALID) ||
-	    ((criterion != SQUEAL_CRITERION_EXACT) &&
-	     (criterion != SQUEAL_CRITERION_CUBIC))) {
-		squeal_model_result_clear(out, SQUEAL_STATE_INVALID);
-		return SQ_EINVAL;
-	}
-	if (c == SQUEAL_CASE_NOT_SLIDING) {
-		squeal_model_result_clear(out, SQUEAL_STATE_NOT_SLIDING);
-		return SQ_OK;
-	}
-	squeal_model_result_clear(out, SQUEAL_STATE_STABLE);
-	if (c == SQUEAL_CASE_SLIDING) {
-		squeal_model_classify_sliding(params, point, criterion, out);
-	}
-	return SQ_OK;
+	return (squeal_model_classify_case(params, point, criterion, out, &t) ==
+		SQUEAL_CASE_INVALID) ? SQ_EINVAL : SQ_OK;
 }

@@ -241,32 +241,70 @@ void squeal_model_log_terms(const squeal_params_t *p,
 		ln_field(p->delta_mu, SQUEAL_Q_MU);
 	/* s = a v0: Q24 * Q20 = Q44 -> Q32; < 2000 * 2^32 by the domain */
 	t->s = ((int64_t)p->slope_spm * point->v0_mps) >> 12;
+	t->stable_lhs = 0;
+	t->stable_rhs = 0;
+	t->stable_dh = 0;
+	t->has_border = false;
+}
+
+void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+{
+	if (t->has_border) {
+		return;
+	}
+	if (criterion == SQUEAL_CRITERION_CUBIC) {
+		/* ln 2Q >= ln(1 + s^2/8); s in Q16 keeps s^2 in 64 bits */
+		const uint64_t s16 = (uint64_t)t->s >> 16;
+		const uint64_t u = ((s16 * s16) >> 3) + ((uint64_t)1 << 32);
+		/* (s/4) / (1 + s^2/8) in Q32: s/4 < 2^41 shifted up by 21, the
+		 * Q32 divisor (>= 2^32) down by 11 */
+		const uint64_t q = (((uint64_t)t->s >> 2) << 21) / (u >> 11);
+
+		t->stable_lhs = t->c2 + t->s;
+		t->stable_rhs = fx_ln_u64(u, 32);
+		t->stable_dh = (int64_t)q - Q32_ONE;
+	} else {
+		int64_t h;
+		int64_t dh;
+
+		/* c2 >= H(s) */
+		squeal_model_bessel_h(t->s, &h, &dh);
+		/* H' lies in [-1, 0]; keep the interpolated value there */
+		if (dh < -Q32_ONE) {
+			dh = -Q32_ONE;
+		} else if (dh > 0) {
+			dh = 0;
+		} else {
+			/* in range */
+		}
+		t->stable_lhs = t->c2;
+		t->stable_rhs = h;
+		t->stable_dh = dh;
+	}
+	t->has_border = true;
 }
 
 void squeal_model_classify_sliding(const squeal_params_t *p,
 				   const squeal_point_t *point,
 				   squeal_criterion_t criterion,
-				   squeal_result_t *out)
+				   squeal_result_t *out, squeal_log_terms_t *t)
 {
-	squeal_log_terms_t t;
 	int64_t ln_a;
 	int64_t ln_w0;
 	int64_t ln_force;
 	int64_t c2;
-	int64_t s;
 	int64_t lq2;
 	int64_t x = 0;
 	int64_t ln_x;
 	bool stable;
 	bool sat;
 
-	squeal_model_log_terms(p, point, &t);
-	ln_a = t.ln_a;
-	ln_w0 = t.ln_w0;
-	ln_force = t.ln_force;
-	c2 = t.c2;
-	s = t.s;
-	lq2 = c2 + s;
+	squeal_model_log_terms(p, point, t);
+	ln_a = t->ln_a;
+	ln_w0 = t->ln_w0;
+	ln_force = t->ln_force;
+	c2 = t->c2;
+	lq2 = c2 + t->s;
 	out->ln_q = fx_q32_to_i32(lq2 - FX_LN2_Q32, SQUEAL_Q_LNQ, &sat);
 	out->flags |= SQUEAL_HAS_LNQ;
 
@@ -291,19 +329,8 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 		out->state = SQUEAL_STATE_UNSTABLE;
 		return;
 	}
-	if (criterion == SQUEAL_CRITERION_CUBIC) {
-		/* stable iff lq2 >= ln(1 + s^2/8); s in Q16 keeps s^2 in 64 bits */
-		const uint64_t s16 = (uint64_t)s >> 16;
-		const uint64_t u = ((s16 * s16) >> 3) + ((uint64_t)1 << 32);
-
-		stable = lq2 >= fx_ln_u64(u, 32);
-	} else {
-		int64_t h;
-		int64_t dh;
-
-		squeal_model_bessel_h(s, &h, &dh);
-		stable = c2 >= h;
-	}
+	squeal_model_stable_border(t, criterion);
+	stable = t->stable_lhs >= t->stable_rhs;
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
 
 	ln_x = cycle_ln_x(lq2, criterion, &x);

@@ -268,23 +268,50 @@ void squeal_model_log_terms(const squeal_params_t *p,
 	t->c2 = SQ_LN2F + sq_lnf(p->damping) + sq_lnf(p->omega0_radps) +
 		sq_lnf(p->mass_kg) - sq_lnf(p->slope_spm) -
 		sq_lnf(point->force_n) - sq_lnf(p->delta_mu);
+	t->stable_lhs = 0.0f;
+	t->stable_rhs = 0.0f;
+	t->stable_dh = 0.0f;
+	t->has_border = false;
+}
+
+void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+{
+	const float s = t->s;
+
+	if (t->has_border) {
+		return;
+	}
+	if (criterion == SQUEAL_CRITERION_CUBIC) {
+		/* ln 2Q >= ln(1 + s^2/8) */
+		t->stable_lhs = t->c2 + s;
+		t->stable_rhs = sq_log1pf(0.125f * s * s);
+		t->stable_dh = 0.25f * s / (1.0f + 0.125f * s * s) - 1.0f;
+	} else {
+		float g;
+		float dg;
+		float h;
+
+		/* c2 >= H(s) */
+		squeal_model_bessel_g(s, &g, &dg, &h);
+		t->stable_lhs = t->c2;
+		t->stable_rhs = h;
+		t->stable_dh = dg - 1.0f;
+	}
+	t->has_border = true;
 }
 
 void squeal_model_classify_sliding(const squeal_params_t *p,
 				   const squeal_point_t *point,
 				   squeal_criterion_t criterion,
-				   squeal_result_t *out)
+				   squeal_result_t *out, squeal_log_terms_t *t)
 {
-	squeal_log_terms_t t;
-	float s;
 	float c2;
 	float lq2;
 	bool stable;
 
-	squeal_model_log_terms(p, point, &t);
-	s = t.s;
-	c2 = t.c2;
-	lq2 = c2 + s;
+	squeal_model_log_terms(p, point, t);
+	c2 = t->c2;
+	lq2 = c2 + t->s;
 	out->ln_q = lq2 - SQ_LN2F;
 	out->flags |= SQUEAL_HAS_LNQ;
 
@@ -306,16 +333,8 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 		out->state = SQUEAL_STATE_UNSTABLE;
 		return;
 	}
-	if (criterion == SQUEAL_CRITERION_CUBIC) {
-		stable = lq2 >= sq_log1pf(0.125f * s * s);
-	} else {
-		float g;
-		float dg;
-		float h;
-
-		squeal_model_bessel_g(s, &g, &dg, &h);
-		stable = c2 >= h;
-	}
+	squeal_model_stable_border(t, criterion);
+	stable = t->stable_lhs >= t->stable_rhs;
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
 	fill_cycle(p, point, lq2, criterion, out);
 

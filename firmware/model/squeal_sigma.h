@@ -2,10 +2,12 @@
 /*
  * squeal_sigma: how sure is a classification? First-order propagation of the
  * calibration's standard deviations to the two border functions of the
- * exact criterion (shared/model.md sections 2-4; docs/uncertainty.md):
+ * classification's criterion (model.md sections 2-4; docs/uncertainty.md):
  *
  *   g_H = ln 2Q = ln(2 D w0 m / (a N dmu)) + a v0        Hopf border: g_H = 0
- *   g_S = ln 2Q - G(s),  G(s) = ln(2 I1(s)/s), s = a v0  stable border: g_S = 0
+ *   g_S = ln 2Q - G(s),  s = a v0                         stable border: g_S = 0
+ *     exact criterion  G(s) = ln(2 I1(s)/s)
+ *     cubic criterion  G(s) = ln(1 + s^2/8)   (Q = 1/2 + s^2/16)
  *
  *   unstable  g_H <= 0;   bistable  g_H > 0 and g_S < 0;   stable  g_S >= 0
  *
@@ -15,9 +17,10 @@
  *   dg/dm m = 1,  dg/dw0 w0 = 1,  dg/dD D = 1,  dg/ddmu dmu = -1  (both g)
  *   dg_H/da a = a v0 - 1 = s - 1
  *   dg_S/da a = s - 1 - s G'(s)          (s depends on a: ds/da = v0)
- *     G'(s) = I1'(s)/I1(s) - 1/s = I0(s)/I1(s) - 2/s
- *     (I1'/I1 = I0/I1 - 1/s), so with H(s) = G(s) - s:
- *     dg_S/da a = -s H'(s) - 1
+ *     exact: G'(s) = I1'(s)/I1(s) - 1/s = I0(s)/I1(s) - 2/s
+ *            (I1'/I1 = I0/I1 - 1/s)
+ *     cubic: G'(s) = (s/4) / (1 + s^2/8), so s G'(s) = 2 s^2 / (8 + s^2)
+ *     and with H(s) = G(s) - s:  dg_S/da a = -s H'(s) - 1
  *
  *   sigma_g^2 = r_m^2 + r_w0^2 + r_D^2 + r_dmu^2 + e_a^2 - 2 rho e_a r_dmu
  *   e_a = r_a (dg/da a),  rho = corr(a, dmu)  (mu_inf enters no border)
@@ -32,8 +35,9 @@
  *
  * Both numeric builds, one API (squeal_num_t as in squeal_model.h; the
  * fixed build's formats are the SQUEAL_Q_* named per field). Pure functions,
- * no heap, no libm, bounded time. The class used here is the exact
- * criterion's (the cubic criterion's border is not propagated).
+ * no heap, no libm, bounded time. squeal_sigma_classify() classifies and
+ * propagates in one pass for the criterion given (the monitor's step);
+ * squeal_sigma_eval() is the same for the exact criterion.
  */
 #ifndef SQUEAL_SIGMA_H
 #define SQUEAL_SIGMA_H
@@ -74,7 +78,7 @@ typedef struct {
 #define SQUEAL_SIGMA_SAT         (1U << 1) /* a sigma clamped to its field's maximum  */
 
 /*
- *   state         exact-criterion class of the point (squeal_model_classify's)
+ *   state         class of the point (squeal_model_classify's, same criterion)
  *   g_hopf        g_H = ln 2Q                           SQUEAL_Q_LNQ
  *   g_stable      g_S = ln 2Q - ln(2 I1(s)/s)           SQUEAL_Q_LNQ
  *   sigma_hopf    first-order sigma of g_H              SQUEAL_Q_SIGMA
@@ -100,11 +104,31 @@ int squeal_sigma_sd_check(const squeal_params_t *params,
 			  const squeal_param_sd_t *sd);
 
 /*
- * Border functions, their sigmas and the margin of the point's own class.
- * SQ_OK with out filled (state NOT_SLIDING or no falling friction: no
- * flags, margin SQUEAL_SIGMA_MARGIN_MAX); SQ_EINVAL with out->state INVALID
- * and every value 0 when params, sd or point is outside its domain;
- * SQ_EINVAL without touching anything when a pointer is NULL.
+ * One classification and its uncertainty, from one evaluation of the
+ * domain rules and of the log-domain terms: squeal_model_classify(params,
+ * point, criterion, out), and with sd the deviations propagated to the
+ * borders of the same criterion into sig (sig->state is out->state):
+ * SQUEAL_SIGMA_HAS_BORDERS with g_*, sigma_* and the margin of the class
+ * when sliding with falling friction; no flags and margin
+ * SQUEAL_SIGMA_MARGIN_MAX when not sliding or without a border; state
+ * INVALID and every value 0 when the classification is invalid or sd is
+ * outside its domain (the classification itself does not depend on sd).
+ * sd and sig both NULL: the classification alone. Returns
+ * squeal_model_classify's code. NULL params, point or out, or only one of
+ * sd and sig, is a programming error.
+ */
+int squeal_sigma_classify(const squeal_params_t *params,
+			  const squeal_param_sd_t *sd,
+			  const squeal_point_t *point,
+			  squeal_criterion_t criterion,
+			  squeal_result_t *out,
+			  squeal_sigma_result_t *sig);
+
+/*
+ * The same for the exact criterion, uncertainty only: SQ_OK with out
+ * filled, SQ_EINVAL with out->state INVALID and every value 0 when params,
+ * sd or point is outside its domain. A NULL pointer is a programming error
+ * (nothing touched).
  */
 int squeal_sigma_eval(const squeal_params_t *params,
 		      const squeal_param_sd_t *sd,

@@ -96,37 +96,46 @@ int squeal_sigma_margin(const squeal_sigma_result_t *r, squeal_state_t state,
 	return SQ_OK;
 }
 
+int squeal_sigma_classify(const squeal_params_t *params,
+			  const squeal_param_sd_t *sd,
+			  const squeal_point_t *point,
+			  squeal_criterion_t criterion,
+			  squeal_result_t *out,
+			  squeal_sigma_result_t *sig)
+{
+	squeal_log_terms_t t;
+	squeal_case_t c;
+
+	HAL_REQUIRE((params != NULL) && (point != NULL) && (out != NULL));
+	HAL_REQUIRE((sd == NULL) == (sig == NULL));
+	c = squeal_model_classify_case(params, point, criterion, out, &t);
+	if (sd != NULL) {
+		if ((c == SQUEAL_CASE_INVALID) || (squeal_sigma_sd_check(params, sd) != SQ_OK)) {
+			result_clear(sig, SQUEAL_STATE_INVALID);
+		} else {
+			/* the class is the classification's; NOT_SLIDING and
+			 * NO_BORDER have no border to be near */
+			result_clear(sig, out->state);
+			if (c == SQUEAL_CASE_SLIDING) {
+				/* an unstable point's classification stopped
+				 * before the stable border: computed here, once */
+				squeal_model_stable_border(&t, criterion);
+				squeal_sigma_borders(params, sd, &t, sig);
+				(void)squeal_sigma_margin(sig, sig->state, &sig->margin_sigma);
+			}
+		}
+	}
+	return (c == SQUEAL_CASE_INVALID) ? SQ_EINVAL : SQ_OK;
+}
+
 int squeal_sigma_eval(const squeal_params_t *params,
 		      const squeal_param_sd_t *sd,
 		      const squeal_point_t *point,
 		      squeal_sigma_result_t *out)
 {
-	squeal_case_t c;
-	bool unstable;
-	bool stable;
+	squeal_result_t model;
 
 	HAL_REQUIRE((params != NULL) && (sd != NULL) && (point != NULL) && (out != NULL));
-	c = squeal_model_case(params, point);
-	if ((c == SQUEAL_CASE_INVALID) || (squeal_sigma_sd_check(params, sd) != SQ_OK)) {
-		result_clear(out, SQUEAL_STATE_INVALID);
-		return SQ_EINVAL;
-	}
-	if (c == SQUEAL_CASE_NOT_SLIDING) {
-		result_clear(out, SQUEAL_STATE_NOT_SLIDING);
-		return SQ_OK;
-	}
-	result_clear(out, SQUEAL_STATE_STABLE);
-	if (c == SQUEAL_CASE_NO_BORDER) {
-		return SQ_OK;
-	}
-	/* the same decisions as squeal_model_classify_sliding (exact) */
-	squeal_sigma_borders(params, sd, point, out, &unstable, &stable);
-	if (unstable) {
-		out->state = SQUEAL_STATE_UNSTABLE;
-	} else if (stable) {
-		out->state = SQUEAL_STATE_STABLE;
-	} else {
-		out->state = SQUEAL_STATE_BISTABLE;
-	}
-	return squeal_sigma_margin(out, out->state, &out->margin_sigma);
+	(void)squeal_sigma_classify(params, sd, point, SQUEAL_CRITERION_EXACT, &model, out);
+	return (out->state == SQUEAL_STATE_INVALID) ? SQ_EINVAL : SQ_OK;
 }

@@ -102,50 +102,29 @@ static int32_t combine_q32(const int64_t r[4], int64_t e, int32_t rho, int64_t r
 }
 
 void squeal_sigma_borders(const squeal_params_t *p, const squeal_param_sd_t *sd,
-			  const squeal_point_t *point, squeal_sigma_result_t *out,
-			  bool *unstable, bool *stable)
+			  const squeal_log_terms_t *t, squeal_sigma_result_t *out)
 {
-	squeal_log_terms_t t;
-	int64_t h;
-	int64_t dh;
 	int64_t r[4];
 	int64_t r_a;
-	int64_t g_hopf;
-	int64_t g_stable;
 	bool sat = false;
 	bool sat_g;
 
-	squeal_model_log_terms(p, point, &t);
-	squeal_model_bessel_h(t.s, &h, &dh);
-	/* H' lies in [-1, 0]; keep the interpolated value there */
-	if (dh < -Q32_ONE) {
-		dh = -Q32_ONE;
-	} else if (dh > 0) {
-		dh = 0;
-	} else {
-		/* in range */
-	}
-	g_hopf = t.c2 + t.s;
-	g_stable = t.c2 - h;
 	r[0] = rel_q32(sd->mass_kg_sd, p->mass_kg);
 	r[1] = rel_q32(sd->omega0_radps_sd, p->omega0_radps);
 	r[2] = rel_q32(sd->damping_sd, p->damping);
 	r[3] = rel_q32(sd->delta_mu_sd, p->delta_mu);
 	r_a = rel_q32(sd->slope_spm_sd, p->slope_spm);
-	/* a dg_H/da = s - 1;  a dg_S/da = -s H'(s) - 1 */
-	out->sigma_hopf = combine_q32(r, mul_q32(t.s - Q32_ONE, r_a),
+	/* a dg_H/da = s - 1;  a dg_S/da = -s H'(s) - 1 (H of the criterion) */
+	out->sigma_hopf = combine_q32(r, mul_q32(t->s - Q32_ONE, r_a),
 				  sd->slope_delta_mu_corr, r[3], &sat);
-	out->sigma_stable = combine_q32(r, mul_q32(-mul_q32(t.s, dh) - Q32_ONE, r_a),
+	out->sigma_stable = combine_q32(r, mul_q32(-mul_q32(t->s, t->stable_dh) - Q32_ONE, r_a),
 				    sd->slope_delta_mu_corr, r[3], &sat);
-	out->g_hopf = fx_q32_to_i32(g_hopf, SQUEAL_Q_LNQ, &sat_g);
-	out->g_stable = fx_q32_to_i32(g_stable, SQUEAL_Q_LNQ, &sat_g);
+	out->g_hopf = fx_q32_to_i32(t->c2 + t->s, SQUEAL_Q_LNQ, &sat_g);
+	out->g_stable = fx_q32_to_i32(t->stable_lhs - t->stable_rhs, SQUEAL_Q_LNQ, &sat_g);
 	out->flags = SQUEAL_SIGMA_HAS_BORDERS;
 	if (sat) {
 		out->flags |= SQUEAL_SIGMA_SAT;
 	}
-	/* the same comparisons as squeal_model_classify_sliding (exact) */
-	*unstable = !(g_hopf > 0);
-	*stable = t.c2 >= h;
 }
 
 squeal_num_t squeal_sigma_distance(squeal_num_t g, squeal_num_t sigma)

@@ -21,13 +21,8 @@ static float combine_f(float base, float e, float rho, float r_dmu)
 }
 
 void squeal_sigma_borders(const squeal_params_t *p, const squeal_param_sd_t *sd,
-			  const squeal_point_t *point, squeal_sigma_result_t *out,
-			  bool *unstable, bool *stable)
+			  const squeal_log_terms_t *t, squeal_sigma_result_t *out)
 {
-	squeal_log_terms_t t;
-	float g;
-	float dg;
-	float h;
 	const float r_m = sd->mass_kg_sd / p->mass_kg;
 	const float r_w0 = sd->omega0_radps_sd / p->omega0_radps;
 	const float r_d = sd->damping_sd / p->damping;
@@ -36,18 +31,13 @@ void squeal_sigma_borders(const squeal_params_t *p, const squeal_param_sd_t *sd,
 	const float rho = sd->slope_delta_mu_corr;
 	float base;
 
-	squeal_model_log_terms(p, point, &t);
-	squeal_model_bessel_g(t.s, &g, &dg, &h);
-	out->g_hopf = t.c2 + t.s;
-	out->g_stable = t.c2 - h;
+	out->g_hopf = t->c2 + t->s;
+	out->g_stable = t->stable_lhs - t->stable_rhs;
 	base = r_m * r_m + r_w0 * r_w0 + r_d * r_d + r_dmu * r_dmu;
-	/* a dg_H/da = s - 1;  a dg_S/da = -s H'(s) - 1, H' = G' - 1 */
-	out->sigma_hopf = combine_f(base, r_a * (t.s - 1.0f), rho, r_dmu);
-	out->sigma_stable = combine_f(base, r_a * (-t.s * (dg - 1.0f) - 1.0f), rho, r_dmu);
+	/* a dg_H/da = s - 1;  a dg_S/da = -s H'(s) - 1 (H of the criterion) */
+	out->sigma_hopf = combine_f(base, r_a * (t->s - 1.0f), rho, r_dmu);
+	out->sigma_stable = combine_f(base, r_a * (-t->s * t->stable_dh - 1.0f), rho, r_dmu);
 	out->flags = SQUEAL_SIGMA_HAS_BORDERS;
-	/* the same comparisons as squeal_model_classify_sliding (exact) */
-	*unstable = !(out->g_hopf > 0.0f);
-	*stable = t.c2 >= h;
 }
 
 squeal_num_t squeal_sigma_distance(squeal_num_t g, squeal_num_t sigma)

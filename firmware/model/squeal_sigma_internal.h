@@ -5,6 +5,7 @@
 
 #include <stdbool.h>
 
+#include "squeal_model_internal.h"
 #include "squeal_sigma.h"
 
 /* correlation 1 in the build's format */
@@ -16,13 +17,12 @@
 
 /*
  * The sliding case with falling friction (v0, N, a, dmu > 0; every input
- * checked): fills g_*, sigma_*, flags, and says which side of each border
- * the point is on with the model's own comparisons (unstable: g_H <= 0;
- * stable: g_S >= 0). State and margin are left to the caller.
+ * checked): fills g_*, sigma_*, flags from the classification's own terms
+ * (t, its stable border set: has_border). State and margin are left to
+ * the caller.
  */
 void squeal_sigma_borders(const squeal_params_t *p, const squeal_param_sd_t *sd,
-			  const squeal_point_t *point, squeal_sigma_result_t *out,
-			  bool *unstable, bool *stable);
+			  const squeal_log_terms_t *t, squeal_sigma_result_t *out);
 
 /* |g| / sigma in SQUEAL_Q_MARGIN, capped at SQUEAL_SIGMA_MARGIN_MAX; the
  * cap when sigma is 0. */

@@ -9,7 +9,7 @@
 #include "sq_status.h"
 
 static const char *const reason_names[INPUT_RX_REASON_COUNT] = {
-	"ok", "dlc", "na", "qualifier", "crc", "counter", "repeated", "implausible"
+	"ok", "dlc", "crc", "counter", "repeated", "na", "qualifier", "range", "step"
 };
 
 const char *input_rx_reason_name(input_rx_reason_t r)
@@ -138,61 +138,88 @@ static input_rx_reason_t protection(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e
 	}
 }
 
-input_rx_result_t input_rx_frame(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e,
+/* "Not available", then the qualifier bit: OK when the value is usable. */
+static input_rx_reason_t availability(const calib_input_t *in, const hal_can_frame_t *f,
+				      uint32_t raw)
+{
+	input_rx_reason_t why = INPUT_RX_OK;
+
+	if ((((in->flags & CALIB_IN_NA) != 0U) && (raw == in->na_raw)) ||
+	    (((in->flags & CALIB_IN_NA2) != 0U) && (raw == in->na_raw2))) {
+		why = INPUT_RX_NA;
+	} else if (((in->flags & CALIB_IN_QUALIFIER) != 0U) &&
+		   ((uint32_t)((f->data[in->qualifier_bit / 8U] >> (in->qualifier_bit % 8U)) & 1U) ==
+		    in->qualifier_invalid)) {
+		why = INPUT_RX_QUALIFIER;
+	} else {
+		/* available */
+	}
+	return why;
+}
+
+/* Range, then step against the previous value; the value becomes the
+ * previous one either way (as the monitor always did: a real step costs one
+ * frame, a spike two). */
+static input_rx_reason_t plausibility(const input_rx_cfg_t *cfg, input_rx_state_t *st,
+				      int64_t value)
+{
+	input_rx_reason_t why = INPUT_RX_RANGE;
+	bool ok;
+
+	ok = (value >= cfg->raw_min) && (value <= cfg->raw_max);
+	if (ok) {
+		why = INPUT_RX_OK;
+		if (st->has_prev) {
+			const int64_t d = (value > st->prev) ? (value - st->prev) : (st->prev - value);
+
+			ok = d <= cfg->raw_step;
+			why = ok ? INPUT_RX_OK : INPUT_RX_STEP;
+		}
+	}
+	st->prev = value;
+	st->has_prev = true;
+	return why;
+}
+
+void input_rx_state_init(input_rx_state_t *st)
+{
+	HAL_REQUIRE(st != NULL);
+	e2e_p01_rx_init(&st->e2e);
+	st->has_prev = false;
+	st->prev = 0;
+}
+
+input_rx_result_t input_rx_judge(const input_rx_cfg_t *cfg, input_rx_state_t *st,
 				 const hal_can_frame_t *f)
 {
 	const calib_input_t *in;
 	input_rx_result_t r = { (uint8_t)INPUT_RX_OK, (uint8_t)E2E_P01_STATUS_NONEWDATA, 0U, 0U, 0 };
 	bool dlc_ok;
-	e2e_p01_status_t st = E2E_P01_STATUS_NONEWDATA;
+	e2e_p01_status_t st_e2e = E2E_P01_STATUS_NONEWDATA;
 	input_rx_reason_t why;
 
-	HAL_REQUIRE((cfg != NULL) && (e2e != NULL) && (f != NULL));
+	HAL_REQUIRE((cfg != NULL) && (st != NULL) && (f != NULL));
 	in = &cfg->desc;
 	if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
 		dlc_ok = f->dlc == in->min_dlc;
 	} else {
 		dlc_ok = (f->dlc >= in->min_dlc) && (f->dlc <= CAN_SIGNAL_FRAME_BYTES);
 	}
-	why = protection(cfg, e2e, f, dlc_ok, &st);
-
-	r.e2e_status = (uint8_t)st;
-	r.lost = (st == E2E_P01_STATUS_OKSOMELOST) ? e2e->lost_data : 0U;
+	why = protection(cfg, &st->e2e, f, dlc_ok, &st_e2e);
+	r.e2e_status = (uint8_t)st_e2e;
+	r.lost = (st_e2e == E2E_P01_STATUS_OKSOMELOST) ? st->e2e.lost_data : 0U;
 	if (!dlc_ok) {
-		r.reason = (uint8_t)INPUT_RX_DLC;
-		return r;
-	}
-	r.raw = can_signal_get(&in->sig, f->data);
-	r.value = can_signal_value(&in->sig, r.raw);
-	if (why == INPUT_RX_OK) {
-		if ((((in->flags & CALIB_IN_NA) != 0U) && (r.raw == in->na_raw)) ||
-		    (((in->flags & CALIB_IN_NA2) != 0U) && (r.raw == in->na_raw2))) {
-			why = INPUT_RX_NA;
-		} else if (((in->flags & CALIB_IN_QUALIFIER) != 0U) &&
-			   ((uint32_t)((f->data[in->qualifier_bit / 8U] >> (in->qualifier_bit % 8U)) & 1U) ==
-			    in->qualifier_invalid)) {
-			why = INPUT_RX_QUALIFIER;
-		} else {
-			/* usable so far */
+		why = INPUT_RX_DLC;
+	} else {
+		r.raw = can_signal_get(&in->sig, f->data);
+		r.value = can_signal_value(&in->sig, r.raw);
+		if (why == INPUT_RX_OK) {
+			why = availability(in, f, r.raw);
+		}
+		if (why == INPUT_RX_OK) {
+			why = plausibility(cfg, st, r.value);
 		}
 	}
 	r.reason = (uint8_t)why;
 	return r;
-}
-
-bool input_rx_plausible(const input_rx_cfg_t *cfg, bool *has_prev, int64_t *prev,
-			int64_t value)
-{
-	bool ok;
-
-	HAL_REQUIRE((cfg != NULL) && (has_prev != NULL) && (prev != NULL));
-	ok = (value >= cfg->raw_min) && (value <= cfg->raw_max);
-	if (ok && *has_prev) {
-		const int64_t d = (value > *prev) ? (value - *prev) : (*prev - value);
-
-		ok = d <= cfg->raw_step;
-	}
-	*prev = value;
-	*has_prev = true;
-	return ok;
 }

@@ -5,11 +5,15 @@
  * `squeal-sim decode --inputs-csv` uses to show what the monitor sees:
  *
  *   input_rx_matches()  identifier, 11/29-bit and every selector's range
- *   input_rx_frame()    DLC -> protection (none, P01, P02, counter) ->
- *                       raw value -> "not available" -> qualifier bit
- *   input_rx_plausible() range and rate in the raw domain (the physical
- *                       min/max/step_max of the calibration converted once)
+ *   input_rx_judge()    the frame's one verdict, decided here and nowhere
+ *                       else: DLC -> protection (none, P01, P02, counter) ->
+ *                       raw value -> "not available" -> qualifier bit ->
+ *                       range -> step (the physical min/max/step_max of the
+ *                       calibration converted once to the raw domain)
  *   input_conv_apply(&cfg->conv, value)  v0 [um/s], N [mN] or T [mNm]
+ *
+ * The caller only records a verdict (counters, staleness, faults); it never
+ * checks the frame again.
  */
 #ifndef INPUT_RX_H
 #define INPUT_RX_H
@@ -22,16 +26,19 @@
 #include "hal.h"
 #include "input_conv.h"
 
-/* The first check a frame failed (decode's `reason` column, in order). */
+/* The first check a frame failed, in the order they are made (decode's
+ * `reason` column). */
 typedef enum {
 	INPUT_RX_OK = 0,
 	INPUT_RX_DLC,          /* shorter than min_dlc (or not exactly it)   */
-	INPUT_RX_NA,           /* a "not available" raw value                */
-	INPUT_RX_QUALIFIER,    /* the qualifier bit says invalid             */
 	INPUT_RX_CRC,          /* P01/P02 CRC                                */
 	INPUT_RX_COUNTER,      /* counter jump beyond max_delta_counter      */
 	INPUT_RX_REPEATED,     /* same counter again: no new data            */
-	INPUT_RX_IMPLAUSIBLE,  /* out of range or rate                       */
+	INPUT_RX_NA,           /* a "not available" raw value                */
+	INPUT_RX_QUALIFIER,    /* the qualifier bit says invalid             */
+	INPUT_RX_RANGE,        /* outside the plausible min .. max           */
+	INPUT_RX_STEP,         /* changed by more than step_max since the
+				* previous value                             */
 	INPUT_RX_REASON_COUNT
 } input_rx_reason_t;
 
@@ -43,12 +50,20 @@ typedef struct {
 	int64_t raw_step;      /* largest plausible change between frames    */
 } input_rx_cfg_t;
 
+/* What the input stage remembers of one input between its frames. */
 typedef struct {
-	uint8_t reason;        /* input_rx_reason_t (before plausibility)    */
+	e2e_p01_rx_t e2e;      /* protection's receiver (P01, P02, counter)  */
+	bool has_prev;         /* prev holds a value (the step check applies) */
+	int64_t prev;          /* the last value the range/step checks saw   */
+} input_rx_state_t;
+
+/* The verdict on one frame: used (INPUT_RX_OK) or the reason why not. */
+typedef struct {
+	uint8_t reason;        /* input_rx_reason_t                          */
 	uint8_t e2e_status;    /* e2e_p01_status_t; NONEWDATA when unprotected */
 	uint8_t lost;          /* frames lost (OKSOMELOST)                   */
 	uint32_t raw;          /* extracted bits (not for DLC)               */
-	int64_t value;         /* raw, sign-extended when signed             */
+	int64_t value;         /* raw, sign-extended when signed (not for DLC) */
 } input_rx_result_t;
 
 /*
@@ -72,17 +87,29 @@ int input_rx_setup(const calib_input_t *desc, const input_geom_t *geom,
  * (not the frame format) matched, so the caller can count it. */
 bool input_rx_matches(const input_rx_cfg_t *cfg, const hal_can_frame_t *f, bool *id_only);
 
-/* Check and extract one matching frame, advancing the E2E/counter state. */
-input_rx_result_t input_rx_frame(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e,
+/* Start (or, after an outage, restart) an input's receive state. */
+void input_rx_state_init(input_rx_state_t *st);
+
+/*
+ * The verdict on one matching frame, every check in the order of
+ * input_rx_reason_t; the first that fails is the reason:
+ *   DLC         the frame's length (the protection still runs one receive
+ *               cycle with the configured length, which fails: a frame of
+ *               the wrong length is one cycle of the E2E state machine);
+ *   protection  CRC, counter jump, repeated counter (OKSOMELOST is used,
+ *               with `lost` frames);
+ *   NA          na_raw / na_raw2;
+ *   qualifier   the qualifier bit;
+ *   range       outside raw_min .. raw_max;
+ *   step        |value - previous| > raw_step.
+ * Advances the E2E/counter state. Every value that reaches the range check
+ * becomes the previous one (a real step costs one frame, a spike two).
+ */
+input_rx_result_t input_rx_judge(const input_rx_cfg_t *cfg, input_rx_state_t *st,
 				 const hal_can_frame_t *f);
 
-/* Range, then rate against the previous value; every value checked here
- * becomes the previous one (as the monitor always did: a real step costs
- * one frame, a spike two). */
-bool input_rx_plausible(const input_rx_cfg_t *cfg, bool *has_prev, int64_t *prev,
-			int64_t value);
-
-/* "ok", "dlc", "na", "qualifier", "crc", "counter", "repeated", "implausible" */
+/* "ok", "dlc", "crc", "counter", "repeated", "na", "qualifier", "range",
+ * "step" */
 const char *input_rx_reason_name(input_rx_reason_t r);
 
 #endif /* INPUT_RX_H */

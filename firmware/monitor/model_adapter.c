@@ -72,6 +72,13 @@ int model_adapter_eval(const squeal_params_t *params,
 		       squeal_criterion_t criterion,
 		       int32_t v0_umps, int32_t force_mn, model_eval_t *out)
 {
+	return model_adapter_eval_sd(params, NULL, criterion, v0_umps, force_mn, out, NULL);
+}
+
+int model_adapter_eval_sd(const squeal_params_t *params, const squeal_param_sd_t *sd,
+			  squeal_criterion_t criterion, int32_t v0_umps, int32_t force_mn,
+			  model_eval_t *out, squeal_sigma_result_t *sig)
+{
 	squeal_point_t pt;
 	squeal_result_t r;
 	int rc;
@@ -83,7 +90,7 @@ int model_adapter_eval(const squeal_params_t *params,
 		force_mn = -1;
 	}
 	point_from_int(v0_umps, force_mn, &pt);
-	rc = squeal_model_classify(params, &pt, criterion, &r);
+	rc = squeal_sigma_classify(params, sd, &pt, criterion, &r, sig);
 	out->state = r.state;
 	out->has = has_if(&r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0, MODEL_EVAL_HAS_HOPF_V0) |
 		   has_if(&r, SQUEAL_HAS_HOPF_FORCE, 0U, MODEL_EVAL_HAS_HOPF_FORCE) |

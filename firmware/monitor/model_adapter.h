@@ -43,8 +43,19 @@ int model_adapter_eval(const squeal_params_t *params,
 		       int32_t v0_umps, int32_t force_mn, model_eval_t *out);
 
 /*
- * The calibration's standard deviations propagated to the borders at the
- * operating point (squeal_sigma_eval; same point conversion as above).
+ * The same classification with its uncertainty in one pass
+ * (squeal_sigma_classify: the model's case and terms computed once, the
+ * borders of `criterion` propagated): sig as squeal_sigma_classify fills
+ * it. sd and sig both NULL: model_adapter_eval.
+ */
+int model_adapter_eval_sd(const squeal_params_t *params, const squeal_param_sd_t *sd,
+			  squeal_criterion_t criterion, int32_t v0_umps, int32_t force_mn,
+			  model_eval_t *out, squeal_sigma_result_t *sig);
+
+/*
+ * The calibration's standard deviations propagated to the exact
+ * criterion's borders at the operating point (squeal_sigma_eval; same point
+ * conversion as above).
  * Returns squeal_sigma_eval's code.
  */
 int model_adapter_sigma(const squeal_params_t *params, const squeal_param_sd_t *sd,

@@ -30,10 +30,8 @@ static uint16_t sat_u16(uint32_t v)
 
 static void input_init(input_t *in, uint64_t now_us)
 {
-	e2e_p01_rx_init(&in->e2e);
+	input_rx_state_init(&in->rx);
 	in->faults = INPUT_FAULT_NEVER_SEEN;
-	in->has_prev_raw = false;
-	in->prev_raw = 0U;
 	in->value = 0;
 	in->filtered_q8 = 0;
 	in->last_used_us = now_us;
@@ -140,7 +138,7 @@ int monitor_set_selftest(monitor_t *me, const monitor_selftest_t *st)
 
 /* ---- inputs --------------------------------------------------------------- */
 
-/* Accept one plausible raw value: convert, filter, mark fresh. */
+/* Filter one used value and mark it fresh. */
 static void input_accept(monitor_t *me, input_t *in, int32_t value,
 			 uint64_t t_us)
 {
@@ -158,16 +156,6 @@ static void input_accept(monitor_t *me, input_t *in, int32_t value,
 			INPUT_FAULT_NEVER_SEEN | INPUT_FAULT_E2E);
 	in->last_used_us = t_us;
 	in->fresh = true;
-	sat_inc(&in->count.used);
-}
-
-/* A value that is "not available", flagged invalid, out of range or too
- * far from the previous one makes the input implausible until a plausible
- * value arrives. */
-static void mark_implausible(input_t *in)
-{
-	in->faults |= INPUT_FAULT_IMPLAUSIBLE;
-	sat_inc(&in->count.implausible);
 }
 
 static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
@@ -178,59 +166,58 @@ static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
 		f->timestamp_us : me->now_us;
 }
 
-/* Count the protection's verdict; true when the frame may be used. */
-static bool input_protection(monitor_t *me, input_t *in, const input_rx_result_t *r,
-			     const hal_can_frame_t *f)
+/*
+ * The fault each verdict raises. A frame that fails its length or its
+ * protection is an E2E fault; one that passed the protection but carries
+ * no usable value ("not available", qualifier, range, step) makes the input
+ * implausible until a usable value arrives; a repeated counter is no new
+ * data, not an error: a frozen sender goes stale.
+ */
+static const uint8_t verdict_fault[INPUT_RX_REASON_COUNT] = {
+	0U,                            /* ok        */
+	(uint8_t)INPUT_FAULT_E2E,      /* dlc       */
+	(uint8_t)INPUT_FAULT_E2E,      /* crc       */
+	(uint8_t)INPUT_FAULT_E2E,      /* counter   */
+	0U,                            /* repeated  */
+	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* na     */
+	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* qualifier */
+	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* range  */
+	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* step   */
+};
+
+/* The counter of each verdict. */
+static uint32_t *verdict_counter(input_counters_t *c, input_rx_reason_t why)
 {
-	switch ((input_rx_reason_t)r->reason) {
+	uint32_t *n;
+
+	switch (why) {
+	case INPUT_RX_OK:
+		n = &c->used;
+		break;
 	case INPUT_RX_DLC:
-		sat_inc(&in->count.bad_dlc);
-		in->faults |= INPUT_FAULT_E2E;
-		return false;
+		n = &c->bad_dlc;
+		break;
 	case INPUT_RX_CRC:
-		sat_inc(&in->count.e2e_wrong_crc);
-		in->faults |= INPUT_FAULT_E2E;
-		return false;
+		n = &c->e2e_wrong_crc;
+		break;
 	case INPUT_RX_COUNTER:
-		sat_inc(&in->count.e2e_wrong_sequence);
-		in->faults |= INPUT_FAULT_E2E;
-		return false;
+		n = &c->e2e_wrong_sequence;
+		break;
 	case INPUT_RX_REPEATED:
-		/* no new data, not an error: a frozen sender goes stale */
-		sat_inc(&in->count.e2e_repeated);
-		in->last_seen_us = frame_time(me, f);
-		return false;
+		n = &c->e2e_repeated;
+		break;
 	default:
+		n = &c->implausible; /* na, qualifier, range, step */
 		break;
 	}
-	if (r->e2e_status != (uint8_t)E2E_P01_STATUS_NONEWDATA) {
-		sat_add(&in->count.e2e_lost, r->lost);
-		in->last_seen_us = frame_time(me, f);
-	}
-	return true;
+	return n;
 }
 
-/* One frame of one input: check, extract, convert, accept. */
-static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
-			const hal_can_frame_t *f)
+/* A used raw value in the monitor's units: v0 [um/s] or N [mN]. */
+static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64_t raw)
 {
-	input_rx_result_t r;
-	int32_t value;
+	int32_t value = input_conv_apply(&cfg->conv, raw);
 
-	sat_inc(&in->count.frames);
-	r = input_rx_frame(cfg, &in->e2e, f);
-	if (!input_protection(me, in, &r, f)) {
-		return;
-	}
-	if ((r.reason == (uint8_t)INPUT_RX_NA) || (r.reason == (uint8_t)INPUT_RX_QUALIFIER)) {
-		mark_implausible(in);
-		return;
-	}
-	if (!input_rx_plausible(cfg, &in->has_prev_raw, &in->prev_raw, r.value)) {
-		mark_implausible(in);
-		return;
-	}
-	value = input_conv_apply(&cfg->conv, r.value);
 	if (cfg->conv.qty == (uint8_t)INPUT_QTY_TORQUE) {
 		/* N = T / (n_f mu(v0) r_p) at the corner's current v0 */
 		value = input_conv_torque_to_force(value, me->speed.value,
@@ -240,7 +227,32 @@ static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 						   me->corner.delta_mu_q30,
 						   me->corner.slope_q24);
 	}
-	input_accept(me, in, value, frame_time(me, f));
+	return value;
+}
+
+/*
+ * One frame of one input: the input stage's verdict, recorded. Nothing
+ * here checks the frame again: the verdict's counter and fault, the last
+ * time a frame with a good protection was seen (staleness tells a silent
+ * sender from a frozen one), and a used value converted and filtered.
+ */
+static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
+			const hal_can_frame_t *f)
+{
+	const input_rx_result_t r = input_rx_judge(cfg, &in->rx, f);
+	const input_rx_reason_t why = (input_rx_reason_t)r.reason;
+	const uint32_t fault = verdict_fault[r.reason % (uint8_t)INPUT_RX_REASON_COUNT];
+
+	sat_inc(&in->count.frames);
+	sat_inc(verdict_counter(&in->count, why));
+	in->faults |= fault;
+	if ((fault != INPUT_FAULT_E2E) && (r.e2e_status != (uint8_t)E2E_P01_STATUS_NONEWDATA)) {
+		sat_add(&in->count.e2e_lost, r.lost);
+		in->last_seen_us = frame_time(me, f);
+	}
+	if (why == INPUT_RX_OK) {
+		input_accept(me, in, input_value(me, cfg, r.value), frame_time(me, f));
+	}
 }
 
 void monitor_on_frame(monitor_t *me, const hal_can_frame_t *frame)
@@ -312,9 +324,9 @@ static void input_tick(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg)
 		 * sender that kept sending its last frame is frozen: keep the
 		 * reference so its repeats stay REPEATED and the input FAULT */
 		if (silent > timeout_us) {
-			e2e_p01_rx_reset(&in->e2e);
+			e2e_p01_rx_reset(&in->rx.e2e);
 		}
-		in->has_prev_raw = false;
+		in->rx.has_prev = false;
 		in->fresh = false;
 	}
 }
@@ -380,25 +392,49 @@ static void debounce(monitor_t *me, uint8_t cls)
 	}
 }
 
-static uint8_t classify_pair(monitor_t *me)
+/*
+ * One classification of the fresh input pair, with its uncertainty in the
+ * same pass when deviations are calibrated (model_adapter_eval_sd: the
+ * model's case and terms once, the corner's own criterion's borders).
+ * *sig_ok: sig holds this classification's borders.
+ */
+static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig, bool *sig_ok)
 {
 	const int32_t v0 = me->speed.value;
 	const int32_t force = me->force.value;
+	uint8_t cls = (uint8_t)SQUEAL_STATE_NOT_SLIDING;
+	int rc;
 
 	sat_inc(&me->count.classifications);
+	me->speed.fresh = false;
+	me->force.fresh = false;
+	*sig_ok = false;
 	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
 		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
 		me->have_eval = true;
-		return SQUEAL_STATE_NOT_SLIDING;
+	} else {
+		if (me->sigma_on) {
+			squeal_param_sd_t sd;
+
+			calib_corner_sd(&me->corner, &sd);
+			rc = model_adapter_eval_sd(&me->params, &sd,
+						   (squeal_criterion_t)me->corner.criterion,
+						   v0, force, &me->eval, sig);
+			*sig_ok = (rc == SQ_OK) && (sig->state != SQUEAL_STATE_INVALID) &&
+				  (sig->state != SQUEAL_STATE_NOT_SLIDING);
+		} else {
+			rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
+						v0, force, &me->eval);
+		}
+		me->have_eval = rc == SQ_OK;
+		if (rc != SQ_OK) {
+			sat_inc(&me->count.model_invalid);
+			cls = MONITOR_STATE_FAULT;
+		} else {
+			cls = (uint8_t)me->eval.state;
+		}
 	}
-	if (model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
-			       v0, force, &me->eval) != SQ_OK) {
-		sat_inc(&me->count.model_invalid);
-		me->have_eval = false;
-		return MONITOR_STATE_FAULT;
-	}
-	me->have_eval = true;
-	return (uint8_t)me->eval.state;
+	return cls;
 }
 
 /*
@@ -745,10 +781,40 @@ void monitor_step(monitor_t *me, uint64_t now_us)
 	monitor_step_slot(me, now_us, true);
 }
 
+/* Warning level of the debounced state; a change is sent at once. */
+static void update_warning(monitor_t *me)
+{
+	const uint8_t warning = warning_level(me);
+
+	if (warning != me->warning) {
+		me->warning = warning;
+		me->status_now = true;
+	}
+}
+
+/* The periodic messages due now (and SquealStatus at once on a change). */
+static void encode(monitor_t *me)
+{
+	if (due(&me->next_status_us, me->now_us, me->cal->status_period_ms) || me->status_now) {
+		me->status_now = false;
+		send_status(me);
+	}
+	if (due(&me->next_detail_us, me->now_us, me->cal->detail_period_ms)) {
+		send_detail(me);
+	}
+	if (due(&me->next_diag_us, me->now_us, me->cal->diag_period_ms)) {
+		send_diag(me);
+	}
+}
+
+/*
+ * condition -> classify -> debounce -> encode, each stage once, in order:
+ * the inputs' staleness; a faulty input is FAULT at once, a new pair is
+ * classified (when this corner has the step's slot) with its uncertainty;
+ * the class debounced and its warning level; the messages due.
+ */
 void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 {
-	uint8_t warning;
-
 	HAL_REQUIRE(me != NULL);
 	if (!me->started) {
 		return;
@@ -765,39 +831,16 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 		update_uncertainty(me, NULL, false);
 	} else if (may_classify && me->speed.fresh && me->force.fresh) {
 		squeal_sigma_result_t sig = { 0 };
-		const uint8_t cls = classify_pair(me);
-		bool sig_ok = false;
+		bool sig_ok;
+		const uint8_t cls = classify_pair(me, &sig, &sig_ok);
 
-		me->speed.fresh = false;
-		me->force.fresh = false;
-		if (me->sigma_on && me->have_eval && (cls != (uint8_t)SQUEAL_STATE_NOT_SLIDING)) {
-			squeal_param_sd_t sd;
-
-			calib_corner_sd(&me->corner, &sd);
-			sig_ok = model_adapter_sigma(&me->params, &sd, me->speed.value,
-						     me->force.value, &sig) == SQ_OK;
-		}
 		debounce(me, cls);
 		update_uncertainty(me, &sig, sig_ok);
 	} else {
 		/* no fault and no new input pair: nothing to classify */
 	}
-	warning = warning_level(me);
-	if (warning != me->warning) {
-		me->warning = warning;
-		me->status_now = true;
-	}
-
-	if (due(&me->next_status_us, me->now_us, me->cal->status_period_ms) || me->status_now) {
-		me->status_now = false;
-		send_status(me);
-	}
-	if (due(&me->next_detail_us, me->now_us, me->cal->detail_period_ms)) {
-		send_detail(me);
-	}
-	if (due(&me->next_diag_us, me->now_us, me->cal->diag_period_ms)) {
-		send_diag(me);
-	}
+	update_warning(me);
+	encode(me);
 }
 
 int monitor_peek_tx(const monitor_t *me, hal_can_frame_t *frame)

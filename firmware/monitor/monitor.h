@@ -2,11 +2,15 @@
 /*
  * monitor: the brake-squeal monitor application, without any I/O.
  *
- *   frames in  -> monitor_on_frame()  (decode, E2E check, plausibility,
- *                                      conditioning; counts every rejection)
- *   every 1 ms -> monitor_step()      (staleness, classification of each new
- *                                      input pair, debounce, warning level,
- *                                      transmit scheduling)
+ *   frames in  -> monitor_on_frame()  (the input stage's verdict on the
+ *                                      frame, input_rx_judge(), recorded:
+ *                                      counters, faults, times; a used value
+ *                                      converted and filtered)
+ *   every 1 ms -> monitor_step()      condition (staleness) -> classify (each
+ *                                      new input pair, with its uncertainty
+ *                                      in the same pass) -> debounce and
+ *                                      warning level -> encode (transmit
+ *                                      scheduling)
  *   frames out <- monitor_pop_tx()    (E2E-protected, ready for hal_can_send)
  *
  * Time is passed in (microseconds, monotonic); nothing here reads a clock or
@@ -63,10 +67,8 @@ typedef struct {
 
 /* One conditioned input (speed or force). */
 typedef struct {
-	e2e_p01_rx_t e2e;
+	input_rx_state_t rx;       /* the input stage's E2E and previous value    */
 	uint32_t faults;           /* INPUT_FAULT_*                               */
-	bool has_prev_raw;
-	int64_t prev_raw;          /* last E2E-good raw value (rate limit)        */
 	int32_t value;             /* conditioned: v0 [um/s] or force [mN]        */
 	int64_t filtered_q8;       /* low-pass state, value x 256 (needs 64 bit) */
 	uint64_t last_used_us;     /* time of the last used frame                 */

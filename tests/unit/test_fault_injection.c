@@ -279,7 +279,7 @@ static void test_counter_wrap_1000_frames(void **state)
 	assert_int_equal(first_status(T0_US, ST_STABLE, true), in_time(0U));
 	for (uint32_t s = 0U; s < 2U; s++) {
 		const bool speed = s == 0U;
-		const e2e_p01_rx_t *rx = speed ? &mon()->speed.e2e : &mon()->force.e2e;
+		const e2e_p01_rx_t *rx = speed ? &mon()->speed.rx.e2e : &mon()->force.rx.e2e;
 
 		assert_int_equal(cnt(speed)->used, 1000);
 		assert_int_equal(cnt(speed)->e2e_lost, 0);

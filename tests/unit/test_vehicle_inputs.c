@@ -97,18 +97,19 @@ static void expect(const char *name, uint32_t corner, const hal_can_frame_t *f,
 		   input_rx_reason_t reason, int64_t value, int32_t converted)
 {
 	input_rx_cfg_t cfg = prepared(name, corner);
-	e2e_p01_rx_t rx;
+	input_rx_state_t rx;
 	bool id_only = false;
 	input_rx_result_t r;
 
-	e2e_p01_rx_init(&rx);
+	input_rx_state_init(&rx);
 	assert_true(input_rx_matches(&cfg, f, &id_only));
-	r = input_rx_frame(&cfg, &rx, f);
+	r = input_rx_judge(&cfg, &rx, f);
 	assert_int_equal(r.reason, reason);
 	if (reason != INPUT_RX_DLC) {
 		assert_true(r.value == value);
 	}
-	if (reason == INPUT_RX_OK) {
+	if ((reason == INPUT_RX_OK) || (reason == INPUT_RX_RANGE)) {
+		/* the conversion of a value the range refuses, too */
 		assert_int_equal(input_conv_apply(&cfg.conv, r.value), converted);
 	}
 }
@@ -190,7 +191,7 @@ static void test_b_intel14_with_counter_between(void **state)
 static void test_b_counter_repeats_and_jumps(void **state)
 {
 	input_rx_cfg_t cfg;
-	e2e_p01_rx_t rx;
+	input_rx_state_t rx;
 	uint8_t s[8] = { 0x80, 0x0C, 0x90, 0x01 };
 	hal_can_frame_t f;
 	static const uint8_t counters[] = { 3, 4, 4, 9, 10, 11 };
@@ -200,11 +201,11 @@ static void test_b_counter_repeats_and_jumps(void **state)
 	(void)state;
 	load("intel14_counter.cal");
 	cfg = prepared("WS_FL", 0);
-	e2e_p01_rx_init(&rx);
+	input_rx_state_init(&rx);
 	for (size_t i = 0; i < sizeof(counters); i++) {
 		s[3] = (uint8_t)((counters[i] << 4) | 0x01U);
 		f = frame(0x0B4, false, 8, s);
-		assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, want[i]);
+		assert_int_equal(input_rx_judge(&cfg, &rx, &f).reason, want[i]);
 	}
 }
 
@@ -284,9 +285,10 @@ static void test_f_torque_and_rpm(void **state)
 	assert_in_range(input_conv_torque_to_force(1000000, 0, c->friction_faces, c->pad_radius_um,
 						   c->mu_inf_q30, c->delta_mu_q30, c->slope_q24),
 			10416667 - 2, 10416667 + 2);
-	/* -200 Nm is below min -100: implausible for the monitor */
+	/* -200 Nm is below min -100: refused by the range check (and
+	 * still converted exactly) */
 	f = frame(0x241, false, 8, neg);
-	expect("T_BRAKE", 0, &f, INPUT_RX_OK, -200, -200000);
+	expect("T_BRAKE", 0, &f, INPUT_RX_RANGE, -200, -200000);
 }
 
 /* ---- the monitor: bad DLC, not available, fault bit ----------------------------- */
@@ -833,11 +835,9 @@ static void test_input_rx_contracts(void **state)
 	input_geom_t g;
 	input_rx_cfg_t cfg;
 	calib_input_t bad;
-	e2e_p01_rx_t rx;
+	input_rx_state_t rx;
 	hal_can_frame_t f;
 	bool id_only = false;
-	bool has_prev = false;
-	int64_t prev = 0;
 	static const uint8_t zeros[8] = { 0 };
 
 	(void)state;
@@ -846,7 +846,7 @@ static void test_input_rx_contracts(void **state)
 	g = (input_geom_t){ c->pad_radius_um, c->wheel_radius_um, c->piston_area_cmm2,
 			    c->efficiency_ppm, c->axle_factor_ppm };
 	cfg = prepared("CLAMP", 0U);
-	e2e_p01_rx_init(&rx);
+	input_rx_state_init(&rx);
 	f = frame(0x0CF00A0BU, true, 8U, zeros);
 	expect_assert_failure(input_rx_setup(NULL, &g, &cfg));
 	expect_assert_failure(input_rx_setup(&cal.inputs[0], NULL, &cfg));
@@ -859,19 +859,17 @@ static void test_input_rx_contracts(void **state)
 	expect_assert_failure(input_rx_matches(NULL, &f, &id_only));
 	expect_assert_failure(input_rx_matches(&cfg, NULL, &id_only));
 	expect_assert_failure(input_rx_matches(&cfg, &f, NULL));
-	expect_assert_failure(input_rx_frame(NULL, &rx, &f));
-	expect_assert_failure(input_rx_frame(&cfg, NULL, &f));
-	expect_assert_failure(input_rx_frame(&cfg, &rx, NULL));
-	expect_assert_failure(input_rx_plausible(NULL, &has_prev, &prev, 0));
-	expect_assert_failure(input_rx_plausible(&cfg, NULL, &prev, 0));
-	expect_assert_failure(input_rx_plausible(&cfg, &has_prev, NULL, 0));
+	expect_assert_failure(input_rx_state_init(NULL));
+	expect_assert_failure(input_rx_judge(NULL, &rx, &f));
+	expect_assert_failure(input_rx_judge(&cfg, NULL, &f));
+	expect_assert_failure(input_rx_judge(&cfg, &rx, NULL));
 	/* bad data keeps its counted reason: a short frame, a wrong CRC */
 	f = frame(0x0CF00A0BU, true, 2U, zeros);
 	assert_true(input_rx_matches(&cfg, &f, &id_only));
-	assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, INPUT_RX_DLC);
+	assert_int_equal(input_rx_judge(&cfg, &rx, &f).reason, INPUT_RX_DLC);
 	f = frame(0x0CF00A0BU, true, 8U, zeros);
 	f.data[0] = 0x5AU; /* not the P01 CRC of these bytes */
-	assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, INPUT_RX_CRC);
+	assert_int_equal(input_rx_judge(&cfg, &rx, &f).reason, INPUT_RX_CRC);
 }
 
 /* The deviations: flat keys are every corner's, a [corner] may set its own
