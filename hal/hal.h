@@ -15,6 +15,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "sq_contract.h"
 #include "sq_status.h"
 
 /* ---- CAN ---------------------------------------------------------------- */
@@ -262,19 +263,8 @@ int hal_selftest(hal_selftest_t *result);
 
 /* ---- contracts ----------------------------------------------------------- */
 
-/*
- * The one handler for programming errors (a NULL pointer, a bad bus index, a
- * bad configuration), never for bad data. It does not return: the ECU
- * records the fault (file, line) in no-init RAM and resets through the
- * watchdog path; host builds print FILE:LINE and abort. Use HAL_REQUIRE().
- */
-_Noreturn void hal_contract_failed(const char *file, uint32_t line);
-
-#define HAL_REQUIRE(cond)                                              \
-	do {                                                           \
-		if (!(cond)) {                                         \
-			hal_contract_failed(__FILE__, (uint32_t)__LINE__); \
-		}                                                      \
-	} while (0)
+/* HAL_REQUIRE() and hal_contract_failed(), the one handler for programming
+ * errors (a NULL pointer, a bad bus index, a bad configuration), never for
+ * bad data: sq_contract.h, included above. */
 
 #endif /* HAL_H */
