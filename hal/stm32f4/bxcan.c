@@ -32,7 +32,9 @@
 #include "bxcan.h"
 #include "bxcan_regs.h"
 #include "chip.h"
-#include "stm32_board.h"
+#include "hal.h"
+#include "stm32_platform_faults.h"
+#include "stm32_test.h"
 #include "stm32_time.h"
 
 #define RX_RING_LEN 32U  /* power of two; 32 frames = 3 ms of a full bus */
