@@ -28,8 +28,11 @@ HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
 HAL_INC_stm32f103 := -Ihal/stm32f103/stm32f103xb -Ihal/stm32f4
 HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c selftest.c \
 	platform_faults.c libc_min.c
-HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c can_pins.c flash.c)
-HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c))
+# the rules every backend shares (hal/common/: frame and filter checks, the
+# bus-state change)
+HAL_COMMON := $(sort $(wildcard hal/common/*.c))
+HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c can_pins.c flash.c) $(HAL_COMMON)
+HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c)) $(HAL_COMMON)
 # Test images only (-DSQ_TARGET_TEST): semihosting, the drivers' event sink
 # and the test run around the firmware; never in an ECU image.
 HAL_TEST_SRCS := $(addprefix hal/stm32f4/,semihost.c test_events.c test_run.c)
