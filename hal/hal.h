@@ -15,6 +15,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "sq_contract.h"
 #include "sq_status.h"
 
 /* ---- CAN ---------------------------------------------------------------- */
@@ -74,6 +75,7 @@ typedef struct {
 	uint8_t tx_error_count;   /* TEC */
 	uint8_t rx_error_count;   /* REC */
 	uint32_t bus_off_count;   /* bus-off events since start (cumulative)    */
+	uint32_t state_changes;   /* state transitions since start (cumulative) */
 	uint32_t rx_overruns;     /* frames lost before firmware saw them       */
 	uint32_t tx_dropped;      /* frames the backend had to give up          */
 	uint32_t tx_refused_listen_only; /* sends refused: bus is listen-only  */
@@ -102,27 +104,16 @@ static inline uint32_t hal_can_id_max(uint8_t flags)
 		(uint32_t)HAL_CAN_STD_ID_MAX;
 }
 
-/* True when every filter's id and mask fit its kind (11 or 29 bits): the
- * SQ_EINVAL check of hal_can_set_rx_filter(), the same for every backend. */
-static inline bool hal_can_filters_in_range(const hal_can_filter_t *filters, uint32_t count)
-{
-	uint32_t i;
-	bool ok = true;
-
-	for (i = 0U; i < count; i++) {
-		const uint32_t max = hal_can_id_max(filters[i].flags);
-
-		ok = ok && (filters[i].id <= max) && (filters[i].mask <= max);
-	}
-	return ok;
-}
-
 /*
  * Queue one frame for sending on bus. Never blocks.
  * Returns SQ_OK, SQ_ENOBUFS (TX queue full: nothing queued),
  * SQ_ENETUNREACH (bus-off), SQ_ENETDOWN (stopped), SQ_EPERM (the bus is
  * listen-only: nothing sent, counted in tx_refused_listen_only),
- * SQ_EINVAL (bad frame: DLC > 8, identifier out of range), SQ_ENODEV.
+ * SQ_EINVAL (bad frame: DLC > 8, identifier out of range for its kind, a
+ * flag other than EXT and RTR: error frames and undefined flag bits are
+ * refused), SQ_ENODEV. Every backend checks the frame first, with one
+ * function (hal_can_common.h), so a bad frame gets SQ_EINVAL whatever the
+ * bus's state.
  */
 int hal_can_send(uint8_t bus, const hal_can_frame_t *frame);
 
@@ -152,7 +143,8 @@ int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps);
  * Accept only frames that pass one of these filters from now on (in
  * hardware where the controller can). count 0 accepts nothing but error
  * frames. count > HAL_CAN_MAX_FILTERS is a programming error.
- * Returns SQ_OK, SQ_EINVAL (an id or mask out of range for its kind),
+ * Returns SQ_OK, SQ_EINVAL (an id or mask out of range for its kind, a
+ * flag other than EXT),
  * SQ_ENOTSUP, SQ_ENODEV.
  */
 int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters,
@@ -262,19 +254,8 @@ int hal_selftest(hal_selftest_t *result);
 
 /* ---- contracts ----------------------------------------------------------- */
 
-/*
- * The one handler for programming errors (a NULL pointer, a bad bus index, a
- * bad configuration), never for bad data. It does not return: the ECU
- * records the fault (file, line) in no-init RAM and resets through the
- * watchdog path; host builds print FILE:LINE and abort. Use HAL_REQUIRE().
- */
-_Noreturn void hal_contract_failed(const char *file, uint32_t line);
-
-#define HAL_REQUIRE(cond)                                              \
-	do {                                                           \
-		if (!(cond)) {                                         \
-			hal_contract_failed(__FILE__, (uint32_t)__LINE__); \
-		}                                                      \
-	} while (0)
+/* HAL_REQUIRE() and hal_contract_failed(), the one handler for programming
+ * errors (a NULL pointer, a bad bus index, a bad configuration), never for
+ * bad data: sq_contract.h, included above. */
 
 #endif /* HAL_H */

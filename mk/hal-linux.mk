@@ -8,9 +8,12 @@
 #                                   buses (hal/vbus/): squeal-replay, the unit
 #                                   tests (tests/support/test_hal.o on top),
 #                                   the conformance suite's vbus run
-# Both carry the host's contract handler (hal/host/).
-HAL_LINUX_SRCS := $(sort $(wildcard hal/linux/*.c)) $(HAL_CONTRACT_HOST)
-HAL_VBUS_SRCS := $(sort $(wildcard hal/vbus/*.c)) $(HAL_CONTRACT_HOST)
+# Both carry the host's contract handler (hal/host/) and the rules every
+# backend shares (hal/common/: the frame and filter checks, the bus-state
+# change).
+HAL_COMMON_SRCS := $(sort $(wildcard hal/common/*.c))
+HAL_LINUX_SRCS := $(sort $(wildcard hal/linux/*.c)) $(HAL_COMMON_SRCS) $(HAL_CONTRACT_HOST)
+HAL_VBUS_SRCS := $(sort $(wildcard hal/vbus/*.c)) $(HAL_COMMON_SRCS) $(HAL_CONTRACT_HOST)
 
 # variant, library name, sources
 define hal_host_lib

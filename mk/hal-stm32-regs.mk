@@ -13,8 +13,10 @@ TEST_PROGS += build/test/target/test_regsim_f4
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
 # answer SQ_ENODEV without touching one)
 build/test/target/test_regsim_f103: tests/target/test_regsim_f103.c hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c \
-		hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c tests/target/regsim/f103/chip.h hal/stm32f103/stm32f103xb/chip.h
+		hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c \
+		tests/target/regsim/f103/chip.h hal/stm32f103/stm32f103xb/chip.h
 	@mkdir -p $(@D)
 	$(CC) $(REGSIM_CFLAGS) -DBXCAN_SIM -Itests/target/regsim/f103 -o $@ tests/target/test_regsim_f103.c \
-		hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c -lcmocka
+		hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c \
+		hal/common/hal_can_common.c -lcmocka
 TEST_PROGS += build/test/target/test_regsim_f103

@@ -26,9 +26,16 @@ LDS_stm32f103 := linker/stm32f103xb.ld
 # #include "..." would find it first); the F103 port reuses the generic parts.
 HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
 HAL_INC_stm32f103 := -Ihal/stm32f103/stm32f103xb -Ihal/stm32f4
-HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c selftest.c semihost.c libc_min.c
-HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c can_pins.c flash.c)
-HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c))
+HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c selftest.c \
+	platform_faults.c libc_min.c
+# the rules every backend shares (hal/common/: frame and filter checks, the
+# bus-state change)
+HAL_COMMON := $(sort $(wildcard hal/common/*.c))
+HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c can_pins.c flash.c) $(HAL_COMMON)
+HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c)) $(HAL_COMMON)
+# Test images only (-DSQ_TARGET_TEST): semihosting, the drivers' event sink
+# and the test run around the firmware; never in an ECU image.
+HAL_TEST_SRCS := $(addprefix hal/stm32f4/,semihost.c test_events.c test_run.c)
 
 # The firmware's entry point; a stand-in until firmware/app/ has its C files.
 APP_SRCS := $(sort $(wildcard firmware/app/*.c))
@@ -93,7 +100,7 @@ ALL_TARGETS += build/stm32f4/squeal-monitor.elf build/stm32f4/squeal-monitor.bin
 # ---- target-in-the-loop test images ---------------------------------------
 
 # The ECU image with semihosting events (boot, faults, watchdog, summary).
-$(eval $(call arm_config,stm32f4-ecutest,stm32f4,float,-DSQ_TARGET_TEST,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,stm32f4-ecutest,stm32f4,float,-DSQ_TARGET_TEST,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 
 # The model over the golden vectors: Cortex-M4F float on netduinoplus2,
 # Cortex-M3 fixed on netduino2 (STM32F205: the F4's memory map and
@@ -108,8 +115,8 @@ build/tv/model_vectors_%.c: tests/golden/model_vectors.csv tests/target/gen_vect
 	@mkdir -p $(@D)
 	$(PYTHON) tests/target/gen_vectors.py --numeric $* $< $@
 
-$(eval $(call arm_config,tv-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(TV_SRCS) build/tv/model_vectors_float.c,$(LDS_stm32f4)))
-$(eval $(call arm_config,tv-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(TV_SRCS) build/tv/model_vectors_fixed.c,$(LDS_stm32f4)))
+$(eval $(call arm_config,tv-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS) $(TV_SRCS) build/tv/model_vectors_float.c,$(LDS_stm32f4)))
+$(eval $(call arm_config,tv-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS) $(TV_SRCS) build/tv/model_vectors_fixed.c,$(LDS_stm32f4)))
 
 build/host/tv-digest: build/host/app/tests/target/tv_run.o build/host/app/tests/target/tv_host.o \
 		build/host/app/build/tv/model_vectors_float.o build/host/libfirmware.a
@@ -144,23 +151,23 @@ TEST_PROGS += build/host/test_bxcan_timing tests/target/check-images.sh tests/ta
 
 # Bench images: the 1 ms monitor step on the M4F (float) and the M3 (fixed).
 BENCH_STEP_SRCS := $(FW_LIB_SRCS) tests/target/bench_step.c
-$(eval $(call arm_config,bench-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
-$(eval $(call arm_config,bench-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,bench-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
+$(eval $(call arm_config,bench-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 tests/target/bench-target.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
 	build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
 	build/bench-m4f/bench-step.elf build/bench-m3/bench-step.elf
 BENCH_PROGS += tests/target/bench-target.sh
 # ... and one that divides by zero once it runs, to test the fault path
-$(eval $(call arm_config,stm32f4-faulttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,stm32f4-faulttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 # ... one whose stack overflows on purpose (issue 14: fault handler on a broken stack)
-$(eval $(call arm_config,stm32f4-stacktest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_STACK_OVERFLOW,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,stm32f4-stacktest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_STACK_OVERFLOW,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 tests/target/run-ecu-stack-overflow.sh: build/stm32f4-stacktest/squeal-monitor.elf
 tests/target/run-ecu-selftest.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
 TEST_PROGS += tests/target/run-ecu-stack-overflow.sh tests/target/run-ecu-selftest.sh
 # ... and one that takes the clock security system's NMI (the crystal stops)
-$(eval $(call arm_config,stm32f4-nmitest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_NMI,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,stm32f4-nmitest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_NMI,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 tests/target/run-ecu-selftest.sh: build/stm32f4-nmitest/squeal-monitor.elf
 # ... and one with a programming error (hal_contract_failed: file and line recorded, reset)
-$(eval $(call arm_config,stm32f4-contracttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_CONTRACT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
+$(eval $(call arm_config,stm32f4-contracttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_CONTRACT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 tests/target/run-ecu-contract.sh: build/stm32f4-contracttest/squeal-monitor.elf
 TEST_PROGS += tests/target/run-ecu-contract.sh

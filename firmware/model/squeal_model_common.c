@@ -3,7 +3,7 @@
 #include "squeal_model.h"
 #include "squeal_model_internal.h"
 
-#include "hal.h"
+#include "sq_contract.h"
 
 #include <stddef.h>
 

@@ -22,7 +22,7 @@
 #include "squeal_model.h"
 #include "squeal_model_internal.h"
 
-#include "hal.h"
+#include "sq_contract.h"
 
 /* Domain limits in raw units of each field's Q-format (squeal_model.h). */
 #define MASS_MAX_RAW ((int32_t)10000 << SQUEAL_Q_MASS)

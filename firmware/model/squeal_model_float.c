@@ -23,7 +23,7 @@
 #include "squeal_model.h"
 #include "squeal_model_internal.h"
 
-#include "hal.h"
+#include "sq_contract.h"
 
 /* Domain limits (see squeal_model.h). */
 #define MASS_MAX_KG 10000.0f

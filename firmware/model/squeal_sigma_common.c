@@ -7,7 +7,7 @@
 #include "squeal_model.h"
 #include "squeal_model_internal.h"
 #include "squeal_sigma.h"
-#include "hal.h"
+#include "sq_contract.h"
 #include "squeal_sigma_internal.h"
 
 #if defined(SQUEAL_NUMERIC_FIXED)

@@ -3,7 +3,7 @@
 
 #include <stddef.h>
 
-#include "hal.h"
+#include "sq_contract.h"
 
 #define BITS_PER_FRAME 64U
 

@@ -7,7 +7,7 @@
  */
 #include "crc8_p01.h"
 
-#include "hal.h"
+#include "sq_contract.h"
 
 /* crc8_table[i] = CRC register after shifting byte i through an all-zero
  * register: i.e. the polynomial division remainder of i * x^8. */

@@ -8,7 +8,7 @@
 #include <stddef.h>
 
 #include "crc8_p01.h"
-#include "hal.h"
+#include "sq_contract.h"
 #include "sq_status.h"
 
 #define COUNTER_MODULO 15U /* counters 0..14 */

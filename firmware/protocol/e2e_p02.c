@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "e2e_p02.h"
 
-#include "hal.h"
+#include "sq_contract.h"
 #include "sq_status.h"
 
 #define CRC8_H2F_POLY 0x2FU

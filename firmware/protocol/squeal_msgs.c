@@ -8,7 +8,7 @@
  */
 #include "squeal_msgs.h"
 
-#include "hal.h"
+#include "sq_contract.h"
 
 #include <limits.h>
 

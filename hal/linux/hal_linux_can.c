@@ -8,7 +8,8 @@
  *
  * - Filters are the kernel's (CAN_RAW_FILTER): unwanted frames never reach
  *   the process. Filters set before hal_linux_open() are kept and applied.
- * - Error frames (CAN_RAW_ERR_FILTER) update hal_can_status_t and are also
+ * - Error frames (CAN_RAW_ERR_FILTER) update hal_can_status_t (every state
+ *   change through hal_can_state_change(), which counts it) and are also
  *   handed to the firmware as HAL_CAN_FLAG_ERR frames (id = error class,
  *   data = the kernel's 8 bytes) so it can count and report them:
  *     CAN_ERR_BUSOFF      state BUS_OFF, bus_off_count + 1 (on entry)
@@ -48,6 +49,7 @@
 #include <linux/can/error.h>
 #include <linux/can/raw.h>
 
+#include "hal_can_common.h"
 #include "hal_linux.h"
 
 #ifndef CAN_ERR_CNT
@@ -88,7 +90,7 @@ static lc_t can[HAL_CAN_BUSES] = { LC_CLOSED, LC_CLOSED };
 /* The bus, or NULL for a valid index that has no interface: bus 0 always
  * exists (stopped until opened), another bus once hal_linux_open() named
  * an interface for it. */
-static lc_t *bus_of(uint8_t bus)
+static lc_t *linux_can_bus_of(uint8_t bus)
 {
 	HAL_REQUIRE(bus < HAL_CAN_BUSES);
 	return ((bus == 0U) || can[bus].named) ? &can[bus] : NULL;
@@ -106,7 +108,7 @@ static void close_bus(lc_t *c)
 		(void)close(c->fd);
 	}
 	c->fd = -1;
-	c->status.state = HAL_CAN_STATE_STOPPED;
+	(void)hal_can_state_change(&c->status, HAL_CAN_STATE_STOPPED);
 }
 
 void hal_linux_close(void)
@@ -140,15 +142,15 @@ static int apply_filter(lc_t *c)
 
 int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
-	lc_t *c = bus_of(bus);
+	lc_t *c = linux_can_bus_of(bus);
+	const int rc = hal_can_filter_check(filters, count);
 	uint32_t i;
 
-	HAL_REQUIRE((count <= HAL_CAN_MAX_FILTERS) && ((filters != NULL) || (count == 0U)));
+	if (rc != SQ_OK) {
+		return rc;
+	}
 	if (c == NULL) {
 		return SQ_ENODEV;
-	}
-	if (!hal_can_filters_in_range(filters, count)) {
-		return SQ_EINVAL;
 	}
 	for (i = 0; i < count; i++) {
 		const bool ext = (filters[i].flags & HAL_CAN_FLAG_EXT) != 0U;
@@ -164,7 +166,7 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 
 int hal_linux_can_accept_all(uint8_t bus)
 {
-	lc_t *c = bus_of(bus);
+	lc_t *c = linux_can_bus_of(bus);
 
 	if (c == NULL) {
 		return SQ_ENODEV;
@@ -297,6 +299,7 @@ int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *
 		c->tx_max_tries = 16U;
 	}
 	c->tx_budget_us = opts->tx_budget_us > 0U ? opts->tx_budget_us : DEFAULT_TX_BUDGET_US;
+	/* a fresh start: every counter zero, the controller on the bus */
 	memset(&c->status, 0, sizeof(c->status));
 	memset(&c->stats, 0, sizeof(c->stats));
 	c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
@@ -315,7 +318,7 @@ int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *
  * listen-only on), which this process cannot do without a capability. */
 int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 {
-	lc_t *c = bus_of(bus);
+	lc_t *c = linux_can_bus_of(bus);
 
 	HAL_REQUIRE((mode == HAL_CAN_MODE_NORMAL) || (mode == HAL_CAN_MODE_LISTEN_ONLY));
 	if (c == NULL) {
@@ -327,7 +330,7 @@ int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 
 int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 {
-	if (bus_of(bus) == NULL) {
+	if (linux_can_bus_of(bus) == NULL) {
 		return SQ_ENODEV;
 	}
 	/* the interface's bit rate is set by its administrator (ip link) */
@@ -337,7 +340,7 @@ int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 
 int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 {
-	const lc_t *c = bus_of(bus);
+	const lc_t *c = linux_can_bus_of(bus);
 
 	HAL_REQUIRE(status != NULL);
 	if (c == NULL) {
@@ -363,10 +366,7 @@ static void count_error_frame(lc_t *c, const struct can_frame *cf)
 
 	c->status.error_frames++;
 	if ((cls & CAN_ERR_BUSOFF) != 0U) {
-		if (c->status.state != HAL_CAN_STATE_BUS_OFF) {
-			c->status.bus_off_count++;
-		}
-		c->status.state = HAL_CAN_STATE_BUS_OFF;
+		(void)hal_can_state_change(&c->status, HAL_CAN_STATE_BUS_OFF);
 	}
 	if ((cls & CAN_ERR_CRTL) != 0U) {
 		uint8_t d1 = cf->data[1];
@@ -379,15 +379,15 @@ static void count_error_frame(lc_t *c, const struct can_frame *cf)
 			c->status.tx_dropped++;
 		}
 		if ((d1 & (CAN_ERR_CRTL_RX_PASSIVE | CAN_ERR_CRTL_TX_PASSIVE)) != 0U) {
-			c->status.state = HAL_CAN_STATE_ERROR_PASSIVE;
+			(void)hal_can_state_change(&c->status, HAL_CAN_STATE_ERROR_PASSIVE);
 		} else if ((d1 & (CAN_ERR_CRTL_RX_WARNING | CAN_ERR_CRTL_TX_WARNING)) != 0U) {
-			c->status.state = HAL_CAN_STATE_ERROR_WARNING;
+			(void)hal_can_state_change(&c->status, HAL_CAN_STATE_ERROR_WARNING);
 		} else if ((d1 & CAN_ERR_CRTL_ACTIVE) != 0U) {
-			c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+			(void)hal_can_state_change(&c->status, HAL_CAN_STATE_ERROR_ACTIVE);
 		}
 	}
 	if ((cls & CAN_ERR_RESTARTED) != 0U) {
-		c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+		(void)hal_can_state_change(&c->status, HAL_CAN_STATE_ERROR_ACTIVE);
 	}
 	if ((cls & CAN_ERR_CNT) != 0U) {
 		c->status.tx_error_count = cf->data[6];
@@ -451,7 +451,7 @@ static uint64_t frame_stamp_us(lc_t *c, const struct msghdr *msg)
 
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
-	lc_t *c = bus_of(bus);
+	lc_t *c = linux_can_bus_of(bus);
 	int skipped;
 
 	HAL_REQUIRE(frame != NULL);
@@ -486,7 +486,7 @@ int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 			if (err == EAGAIN || err == EWOULDBLOCK || err == EINTR) {
 				return SQ_EAGAIN;
 			}
-			c->status.state = HAL_CAN_STATE_STOPPED;
+			(void)hal_can_state_change(&c->status, HAL_CAN_STATE_STOPPED);
 			hal_linux_set_error("%s: receive: %s", c->ifname, strerror(err));
 			return SQ_ENETDOWN;
 		}
@@ -509,7 +509,7 @@ int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 		if (c->status.state == HAL_CAN_STATE_BUS_OFF
 		    || c->status.state == HAL_CAN_STATE_STOPPED) {
 			/* Receiving again: the controller is back on the bus. */
-			c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
+			(void)hal_can_state_change(&c->status, HAL_CAN_STATE_ERROR_ACTIVE);
 		}
 		if ((buf.cf.can_id & CAN_EFF_FLAG) != 0U) {
 			frame->id = buf.cf.can_id & CAN_EFF_MASK;
@@ -557,20 +557,17 @@ static void note_tx_time(lc_t *c, uint64_t start_us)
 
 int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
-	lc_t *c = bus_of(bus);
+	lc_t *c = linux_can_bus_of(bus);
+	const int rc = hal_can_frame_check(frame);
 	struct can_frame cf;
 	uint64_t start_us;
 	uint32_t attempt;
 
-	HAL_REQUIRE(frame != NULL);
+	if (rc != SQ_OK) {
+		return rc;
+	}
 	if (c == NULL) {
 		return SQ_ENODEV;
-	}
-	if (frame->dlc > CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U) {
-		return SQ_EINVAL;
-	}
-	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U ? frame->id > CAN_EFF_MASK : frame->id > CAN_SFF_MASK) {
-		return SQ_EINVAL;
 	}
 	if (c->mode == HAL_CAN_MODE_LISTEN_ONLY) {
 		c->status.tx_refused_listen_only++;
@@ -608,7 +605,7 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 		}
 		err = n < 0 ? errno : EIO;
 		if (err == ENETDOWN || err == ENODEV || err == ENXIO) {
-			c->status.state = HAL_CAN_STATE_STOPPED;
+			(void)hal_can_state_change(&c->status, HAL_CAN_STATE_STOPPED);
 			hal_linux_set_error("%s: send: %s", c->ifname, strerror(err));
 			return SQ_ENETDOWN;
 		}

@@ -27,7 +27,7 @@ extern const uint8_t __calib_slot_size[];
 static uint32_t core_hz = CHIP_HSI_HZ;
 static uint32_t apb1_hz = CHIP_HSI_HZ;
 
-static void clock_back_to_hsi(void)
+static void f1_clock_back_to_hsi(void)
 {
 	RCC_CFGR &= ~(RCC_CFGR_SW_MSK | RCC_CFGR_HPRE_MSK | RCC_CFGR_PPRE1_MSK | RCC_CFGR_PPRE2_MSK);
 	(void)stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, 0U, SWITCH_TIMEOUT_US);
@@ -45,26 +45,26 @@ int chip_clock_init(void)
 
 	RCC_CR |= RCC_CR_HSEON;
 	if (stm32_wait_reg(&RCC_CR, RCC_CR_HSERDY, RCC_CR_HSERDY, HSE_TIMEOUT_US) != SQ_OK) {
-		clock_back_to_hsi();
+		f1_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	RCC_CFGR = (RCC_CFGR & ~(RCC_CFGR_PLLMUL_MSK | RCC_CFGR_PLLXTPRE)) |
 		   RCC_CFGR_PLLSRC_HSE | RCC_CFGR_PLLMUL9;
 	RCC_CR |= RCC_CR_PLLON;
 	if (stm32_wait_reg(&RCC_CR, RCC_CR_PLLRDY, RCC_CR_PLLRDY, PLL_TIMEOUT_US) != SQ_OK) {
-		clock_back_to_hsi();
+		f1_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	FLASH_ACR = FLASH_ACR_PRFTBE | FLASH_ACR_LATENCY_2WS;
 	if ((FLASH_ACR & FLASH_ACR_LATENCY_MSK) != FLASH_ACR_LATENCY_2WS) {
-		clock_back_to_hsi();
+		f1_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	RCC_CFGR = (RCC_CFGR & ~(RCC_CFGR_HPRE_MSK | RCC_CFGR_PPRE1_MSK | RCC_CFGR_PPRE2_MSK)) |
 		   RCC_CFGR_PPRE1_DIV2;
 	RCC_CFGR = (RCC_CFGR & ~RCC_CFGR_SW_MSK) | RCC_CFGR_SW_PLL;
 	if (stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, RCC_CFGR_SWS_PLL, SWITCH_TIMEOUT_US) != SQ_OK) {
-		clock_back_to_hsi();
+		f1_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	core_hz = CHIP_SYSCLK_HZ;
@@ -115,7 +115,7 @@ void chip_can_pins_init(uint8_t bus)
 	GPIO_ODR(GPIOB_BASE) |= 1U << 8;
 }
 
-static int flash_unlock(void)
+static int f1_flash_unlock(void)
 {
 	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, IDLE_TIMEOUT_US) != SQ_OK) {
 		return SQ_EIO;
@@ -158,7 +158,7 @@ int chip_flash_erase_slot(uint32_t slot)
 	    ((size % FLASH_PAGE_BYTES) != 0U)) {
 		return SQ_EINVAL;
 	}
-	if (flash_unlock() != SQ_OK) {
+	if (f1_flash_unlock() != SQ_OK) {
 		FLASH_CR = FLASH_CR_LOCK;
 		return SQ_EIO;
 	}
@@ -181,7 +181,7 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 	if ((addr & 1U) != 0U || data == NULL) {
 		return SQ_EINVAL;
 	}
-	if (flash_unlock() != SQ_OK) {
+	if (f1_flash_unlock() != SQ_OK) {
 		FLASH_CR = FLASH_CR_LOCK;
 		return SQ_EIO;
 	}

@@ -11,9 +11,10 @@
  *       sender and by the mailbox-empty interrupt.
  *   Errors: the status-change interrupt counts error frames (LEC), hands
  *       each on as a HAL_CAN_FLAG_ERR frame in the receive ring (as every
- *       backend does; id = SocketCAN error class), and counts
- *       bus-off events; the controller leaves bus-off by itself (ABOM), and
- *       TEC/REC are read live.
+ *       backend does; id = SocketCAN error class), and follows the state
+ *       (ESR: warning, passive, bus-off) through hal_can_state_change(),
+ *       which counts every change and each bus-off entry; the controller
+ *       leaves bus-off by itself (ABOM), and TEC/REC are read live.
  *   Filters: 32-bit mask mode, one bank per hal_can_filter_t. The banks live
  *       in CAN1 (the filter master); CAN1 owns banks 0..CAN2SB-1 and CAN2
  *       the rest (CAN2SB = half of them), so CAN2 needs CAN1's clock
@@ -32,7 +33,10 @@
 #include "bxcan.h"
 #include "bxcan_regs.h"
 #include "chip.h"
-#include "stm32_board.h"
+#include "hal.h"
+#include "hal_can_common.h"
+#include "stm32_platform_faults.h"
+#include "stm32_test.h"
 #include "stm32_time.h"
 
 #define RX_RING_LEN 32U  /* power of two; 32 frames = 3 ms of a full bus */
@@ -63,8 +67,6 @@ typedef struct {
 	volatile uint32_t rx_overruns;
 	volatile uint32_t tx_dropped;
 	volatile uint32_t error_frames;
-	volatile uint32_t bus_off_count;
-	volatile bool bus_off_seen;
 	uint32_t tx_refused_listen_only;
 } bus_state_t;
 
@@ -83,10 +85,21 @@ static const bus_hw_t bus_hw[CHIP_CAN_BUSES] = {
 };
 
 static bus_state_t can_bus[CHIP_CAN_BUSES];
+/* Each bus's state, state_changes and bus_off_count (hal_can_state_change),
+ * stopped until it starts; touched with interrupts masked or from the SCE
+ * interrupt only. Apart from can_bus so that only these few bytes are
+ * initialised data. */
+#define TRACK_STOPPED { .state = HAL_CAN_STATE_STOPPED }
+static hal_can_status_t can_track[CHIP_CAN_BUSES] = {
+	TRACK_STOPPED,
+#if CHIP_CAN_BUSES > 1
+	TRACK_STOPPED,
+#endif
+};
 
 /* A bus index out of hal.h's range is a programming error; a valid index
  * this chip lacks gives NULL (the caller answers SQ_ENODEV). */
-static bus_state_t *bus_get(uint8_t bus)
+static bus_state_t *bxcan_bus_get(uint8_t bus)
 {
 	HAL_REQUIRE(bus < HAL_CAN_BUSES);
 	return bus < CHIP_CAN_BUSES ? &can_bus[bus] : NULL;
@@ -256,6 +269,41 @@ static void irqs_enable(uint8_t bus, bool on)
 	}
 }
 
+/* Usable for traffic: started and synchronised to the bus. */
+static bool can_online(uint8_t bus)
+{
+	return can_bus[bus].started && (can_rd(bus_hw[bus].base, CAN_MSR) & CAN_MSR_INAK) == 0U;
+}
+
+/* The controller's state now: stopped until it has joined the bus, then
+ * as ESR's flags say (bus-off over passive over warning). */
+static hal_can_state_t state_now(uint8_t bus)
+{
+	hal_can_state_t state = HAL_CAN_STATE_STOPPED;
+
+	if (can_online(bus)) {
+		const uint32_t esr = can_rd(bus_hw[bus].base, CAN_ESR);
+
+		if ((esr & CAN_ESR_BOFF) != 0U) {
+			state = HAL_CAN_STATE_BUS_OFF;
+		} else if ((esr & CAN_ESR_EPVF) != 0U) {
+			state = HAL_CAN_STATE_ERROR_PASSIVE;
+		} else if ((esr & CAN_ESR_EWGF) != 0U) {
+			state = HAL_CAN_STATE_ERROR_WARNING;
+		} else {
+			state = HAL_CAN_STATE_ERROR_ACTIVE;
+		}
+	}
+	return state;
+}
+
+/* Follow the state (counted by hal_can_state_change). From the SCE
+ * interrupt, or with interrupts masked. */
+static void state_follow(uint8_t bus)
+{
+	(void)hal_can_state_change(&can_track[bus], state_now(bus));
+}
+
 /* Stop the bus (its interrupts off, TX mailboxes aborted) and wait for
  * initialisation mode. SQ_OK or SQ_EAGAIN (fault raised). */
 static int enter_init(uint8_t bus)
@@ -267,6 +315,7 @@ static int enter_init(uint8_t bus)
 	chip_can_pins_init(bus);
 	primask = cm_irq_save();
 	can_bus[bus].started = false;
+	state_follow(bus);
 	irqs_enable(bus, false);
 	can_wr(base, CAN_TSR, CAN_TSR_ABRQ(0U) | CAN_TSR_ABRQ(1U) | CAN_TSR_ABRQ(2U));
 	can_wr(base, CAN_MCR, (can_rd(base, CAN_MCR) & ~CAN_MCR_SLEEP) | CAN_MCR_INRQ);
@@ -298,7 +347,6 @@ static void configure(uint8_t bus, uint32_t btr, uint32_t ier)
 	st->rx_tail = 0U;
 	st->tx_first = 0U;
 	st->tx_count = 0U;
-	st->bus_off_seen = false;
 	can_wr(base, CAN_TSR, CAN_TSR_RQCP(0U) | CAN_TSR_RQCP(1U) | CAN_TSR_RQCP(2U));
 	can_wr(base, CAN_ESR, CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT);
 	can_wr(base, CAN_IER, ier);
@@ -317,7 +365,7 @@ static int leave_init(uint8_t bus)
 
 int bxcan_start(uint8_t bus, uint32_t bitrate_bps)
 {
-	bus_state_t *st = bus_get(bus);
+	bus_state_t *st = bxcan_bus_get(bus);
 	uint32_t btr;
 	uint32_t primask;
 	int rc;
@@ -364,7 +412,7 @@ int bxcan_selftest_loopback(uint8_t bus)
 		.id = 0x15A5C3E7U, .flags = HAL_CAN_FLAG_EXT, .dlc = 8U,
 		.data = { 0x55U, 0xAAU, 0x01U, 0x80U, 0xFFU, 0x00U, 0x3CU, 0xC3U },
 	};
-	bus_state_t *st = bus_get(bus);
+	bus_state_t *st = bxcan_bus_get(bus);
 	uintptr_t base;
 	hal_can_frame_t got;
 	uint32_t btr;
@@ -412,7 +460,7 @@ int bxcan_selftest_loopback(uint8_t bus)
 
 int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 {
-	bus_state_t *st = bus_get(bus);
+	bus_state_t *st = bxcan_bus_get(bus);
 	uint32_t btr;
 
 	if (st == NULL) {
@@ -432,7 +480,7 @@ int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 
 int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 {
-	bus_state_t *st = bus_get(bus);
+	bus_state_t *st = bxcan_bus_get(bus);
 	int rc;
 
 	HAL_REQUIRE(mode == HAL_CAN_MODE_NORMAL || mode == HAL_CAN_MODE_LISTEN_ONLY);
@@ -459,28 +507,20 @@ bool bxcan_rx_pending(void)
 	return false;
 }
 
-/* Usable for traffic: started and synchronised to the bus. */
-static bool can_online(uint8_t bus)
-{
-	return can_bus[bus].started && (can_rd(bus_hw[bus].base, CAN_MSR) & CAN_MSR_INAK) == 0U;
-}
 
 int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
-	bus_state_t *st = bus_get(bus);
+	bus_state_t *st = bxcan_bus_get(bus);
 	uint32_t primask;
 	uint32_t slot;
 
-	HAL_REQUIRE(frame != NULL);
+	const int rc = hal_can_frame_check(frame);
+
+	if (rc != SQ_OK) {
+		return rc;
+	}
 	if (st == NULL) {
 		return SQ_ENODEV;
-	}
-	if (frame->dlc > HAL_CAN_MAX_DLEN || (frame->flags & HAL_CAN_FLAG_ERR) != 0U ||
-	    (frame->flags & ~(uint8_t)(HAL_CAN_FLAG_EXT | HAL_CAN_FLAG_RTR)) != 0U) {
-		return SQ_EINVAL;
-	}
-	if (frame->id > hal_can_id_max(frame->flags)) {
-		return SQ_EINVAL;
 	}
 	if (st->mode == HAL_CAN_MODE_LISTEN_ONLY) {
 		st->tx_refused_listen_only++;
@@ -507,7 +547,7 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
-	bus_state_t *st = bus_get(bus);
+	bus_state_t *st = bxcan_bus_get(bus);
 	uint32_t tail;
 
 	HAL_REQUIRE(frame != NULL);
@@ -530,29 +570,24 @@ int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 
 int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 {
-	bus_state_t *st = bus_get(bus);
+	bus_state_t *st = bxcan_bus_get(bus);
 	uint32_t esr;
+	uint32_t primask;
 
 	HAL_REQUIRE(status != NULL);
 	if (st == NULL) {
 		return SQ_ENODEV;
 	}
 	esr = st->started ? can_rd(bus_hw[bus].base, CAN_ESR) : 0U;
-	if (!can_online(bus)) {
-		status->state = HAL_CAN_STATE_STOPPED;
-	} else if ((esr & CAN_ESR_BOFF) != 0U) {
-		status->state = HAL_CAN_STATE_BUS_OFF;
-	} else if ((esr & CAN_ESR_EPVF) != 0U) {
-		status->state = HAL_CAN_STATE_ERROR_PASSIVE;
-	} else if ((esr & CAN_ESR_EWGF) != 0U) {
-		status->state = HAL_CAN_STATE_ERROR_WARNING;
-	} else {
-		status->state = HAL_CAN_STATE_ERROR_ACTIVE;
-	}
+	primask = cm_irq_save();
+	state_follow(bus); /* a change the SCE interrupt does not signal (leaving bus-off) */
+	status->state = can_track[bus].state;
+	status->state_changes = can_track[bus].state_changes;
+	status->bus_off_count = can_track[bus].bus_off_count;
+	cm_irq_restore(primask);
 	status->mode = st->mode;
 	status->tx_error_count = (uint8_t)((esr >> CAN_ESR_TEC_SHIFT) & 0xFFU);
 	status->rx_error_count = (uint8_t)((esr >> CAN_ESR_REC_SHIFT) & 0xFFU);
-	status->bus_off_count = st->bus_off_count;
 	status->rx_overruns = st->rx_overruns;
 	status->tx_dropped = st->tx_dropped;
 	status->tx_refused_listen_only = st->tx_refused_listen_only;
@@ -562,21 +597,14 @@ int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 
 int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
-	bus_state_t *st = bus_get(bus);
-	uint32_t i;
-	bool flags_ok = true;
+	bus_state_t *st = bxcan_bus_get(bus);
+	const int rc = hal_can_filter_check(filters, count);
 
-	HAL_REQUIRE(count <= HAL_CAN_MAX_FILTERS);
-	HAL_REQUIRE(count == 0U || filters != NULL);
+	if (rc != SQ_OK) {
+		return rc;
+	}
 	if (st == NULL) {
 		return SQ_ENODEV;
-	}
-	for (i = 0; i < count; i++) {
-		/* bxCAN's banks know no other kind of frame than EXT or not */
-		flags_ok = flags_ok && ((filters[i].flags & ~(uint8_t)HAL_CAN_FLAG_EXT) == 0U);
-	}
-	if (!flags_ok || !hal_can_filters_in_range(filters, count)) {
-		return SQ_EINVAL;
 	}
 	filter_banks_write(bus, filters, count);
 	return SQ_OK;
@@ -676,17 +704,13 @@ static void sce_irq(uint8_t bus)
 	uintptr_t base = bus_hw[bus].base;
 	uint32_t esr = can_rd(base, CAN_ESR);
 	uint32_t lec = (esr & CAN_ESR_LEC_MSK) >> CAN_ESR_LEC_SHIFT;
-	bool boff = (esr & CAN_ESR_BOFF) != 0U;
 
 	if (lec != 0U && lec != CAN_ESR_LEC_USER) {
 		st->error_frames++;
 		can_wr(base, CAN_ESR, CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT);
 		rx_push_error(st, esr, lec);
 	}
-	if (boff && !st->bus_off_seen) {
-		st->bus_off_count++;
-	}
-	st->bus_off_seen = boff;
+	state_follow(bus);
 	can_wr(base, CAN_MSR, CAN_MSR_ERRI); /* write 1 to clear */
 }
 
@@ -708,6 +732,7 @@ void bxcan_sim_driver_reset(void)
 
 	for (bus = 0; bus < CHIP_CAN_BUSES; bus++) {
 		can_bus[bus] = (bus_state_t){ 0 };
+		can_track[bus] = (hal_can_status_t)TRACK_STOPPED;
 	}
 }
 #endif

@@ -18,7 +18,9 @@
 #include <stddef.h>
 
 #include "chip.h"
-#include "stm32_board.h"
+#include "hal.h"
+#include "stm32_iwdg.h"
+#include "stm32_platform_faults.h"
 
 #define CALIB_MAGIC 0x4C435153UL /* "SQCL" */
 #define CALIB_HDR_LEN 16U

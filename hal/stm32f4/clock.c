@@ -108,7 +108,7 @@ uint32_t chip_bor_level(void)
 	return 3U - ((FLASH_OPTCR & FLASH_OPTCR_BOR_LEV_MSK) >> FLASH_OPTCR_BOR_LEV_SHIFT);
 }
 
-static void clock_back_to_hsi(void)
+static void f4_clock_back_to_hsi(void)
 {
 	RCC_CFGR &= ~(RCC_CFGR_SW_MSK | RCC_CFGR_HPRE_MSK | RCC_CFGR_PPRE1_MSK | RCC_CFGR_PPRE2_MSK);
 	(void)stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, 0U, SWITCH_TIMEOUT_US);
@@ -129,12 +129,12 @@ int chip_clock_init(void)
 
 	RCC_CR |= RCC_CR_HSEON;
 	if (stm32_wait_reg(&RCC_CR, RCC_CR_HSERDY, RCC_CR_HSERDY, HSE_TIMEOUT_US) != SQ_OK) {
-		clock_back_to_hsi();
+		f4_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	hse_measured_hz = hse_measure();
 	if (!hse_is_calibrated(hse_measured_hz)) {
-		clock_back_to_hsi();
+		f4_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	/* Regulator scale 1: needed above 144 MHz. */
@@ -147,21 +147,21 @@ int chip_clock_init(void)
 		      (7U << RCC_PLLCFGR_PLLQ_SHIFT);
 	RCC_CR |= RCC_CR_PLLON;
 	if (stm32_wait_reg(&RCC_CR, RCC_CR_PLLRDY, RCC_CR_PLLRDY, PLL_TIMEOUT_US) != SQ_OK) {
-		clock_back_to_hsi();
+		f4_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	/* Wait states first, checked by reading back (RM0090 3.5.1). */
 	acr = FLASH_ACR_LATENCY_5WS | FLASH_ACR_PRFTEN | FLASH_ACR_ICEN | FLASH_ACR_DCEN;
 	FLASH_ACR = acr;
 	if ((FLASH_ACR & FLASH_ACR_LATENCY_MSK) != FLASH_ACR_LATENCY_5WS) {
-		clock_back_to_hsi();
+		f4_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	RCC_CFGR = (RCC_CFGR & ~(RCC_CFGR_HPRE_MSK | RCC_CFGR_PPRE1_MSK | RCC_CFGR_PPRE2_MSK)) |
 		   RCC_CFGR_PPRE1_DIV4 | RCC_CFGR_PPRE2_DIV2;
 	RCC_CFGR = (RCC_CFGR & ~RCC_CFGR_SW_MSK) | RCC_CFGR_SW_PLL;
 	if (stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, RCC_CFGR_SWS_PLL, SWITCH_TIMEOUT_US) != SQ_OK) {
-		clock_back_to_hsi();
+		f4_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
 	/* A crystal that stops from now on: NMI (startup.c records it). */

@@ -23,7 +23,7 @@ static uint32_t saved_acr;
 
 /* Also turns the data cache off for the operation, so that verify reads
  * come from the array, not from lines cached before. */
-static int flash_unlock(void)
+static int f4_flash_unlock(void)
 {
 	saved_acr = FLASH_ACR;
 	FLASH_ACR = saved_acr & ~FLASH_ACR_DCEN;
@@ -60,7 +60,7 @@ int chip_flash_erase_slot(uint32_t slot)
 	if (slot > 1U || sector > 11U) {
 		return SQ_EINVAL;
 	}
-	if (flash_unlock() != SQ_OK) {
+	if (f4_flash_unlock() != SQ_OK) {
 		flash_lock_and_flush();
 		return SQ_EIO;
 	}
@@ -83,7 +83,7 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 	if ((addr & 3U) != 0U || data == NULL) {
 		return SQ_EINVAL;
 	}
-	if (flash_unlock() != SQ_OK) {
+	if (f4_flash_unlock() != SQ_OK) {
 		flash_lock_and_flush();
 		return SQ_EIO;
 	}

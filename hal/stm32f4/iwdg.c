@@ -15,9 +15,11 @@
 #include <stddef.h>
 
 #include "chip.h"
+#include "hal.h"
 #include "sq_status.h"
-#include "stm32_board.h"
 #include "stm32_fault.h"
+#include "stm32_iwdg.h"
+#include "stm32_test.h"
 #include "stm32_time.h"
 
 #define IWDG_KR  REG32(IWDG_BASE + 0x00U)
@@ -90,7 +92,7 @@ void hal_watchdog_kick(void)
 	IWDG_KR = IWDG_KR_RELOAD;
 #if defined(SQ_TARGET_TEST)
 	kicks++;
-	stm32_test_event("wdg_kick", kicks);
+	STM32_TEST_EVENT("wdg_kick", kicks);
 #endif
 }
 

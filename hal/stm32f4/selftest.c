@@ -13,8 +13,9 @@
 #include "bxcan.h"
 #include "chip.h"
 #include "sq_status.h"
-#include "stm32_board.h"
 #include "stm32_fault.h"
+#include "stm32_platform_faults.h"
+#include "stm32_test.h"
 
 static stm32_selftest_t result;
 

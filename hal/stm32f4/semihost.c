@@ -6,7 +6,7 @@
  */
 #include <stddef.h>
 
-#include "stm32_board.h"
+#include "stm32_test.h"
 
 #if defined(SQ_TARGET_TEST)
 

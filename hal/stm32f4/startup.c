@@ -15,8 +15,9 @@
 
 #include "bxcan.h"
 #include "chip.h"
-#include "stm32_board.h"
+#include "hal.h"
 #include "stm32_fault.h"
+#include "stm32_test.h"
 #include "stm32_time.h"
 
 /* Linker symbols (linker/stm32f405xg.ld, linker/stm32f103xb.ld) */

@@ -27,7 +27,8 @@
  *    stopped SQ_ENETDOWN, listen-only SQ_EPERM (counted in
  *    tx_refused_listen_only); every refusal counts in the stats.
  *  - Status: state and counters as the bus's other nodes make them
- *    (hal_vbus_set_status); the mode is the firmware's (hal_can_set_mode).
+ *    (hal_vbus_set_status); the mode is the firmware's (hal_can_set_mode)
+ *    and survives every injected status.
  *  - Clock: virtual microseconds; hal_idle_until() moves it to the deadline
  *    or to the next queued frame's arrival, whichever is first. hal_cycles()
  *    is HAL_VBUS_CYCLES_PER_US per virtual microsecond plus a fixed amount
@@ -85,9 +86,13 @@ int hal_vbus_tx_pop(uint8_t bus, hal_can_frame_t *frame);
 typedef int (*hal_vbus_sink_t)(uint8_t bus, const hal_can_frame_t *frame);
 void hal_vbus_set_sink(uint8_t bus, hal_vbus_sink_t sink);
 
-/* Controller state and counters as the bus made them (bus-off, error
- * counters, overruns ...). The mode and tx_refused_listen_only stay the
- * firmware's. */
+/* Controller state and counters as the bus made them: the state, TEC,
+ * REC, rx_overruns, tx_dropped and error_frames are taken from *status.
+ * The mode and tx_refused_listen_only stay the firmware's (a bus-off or a
+ * recovery never turns listen-only off), and bus_off_count and
+ * state_changes are counted from the state change, as on every backend
+ * (hal_can_state_change): an injected bus-off counts once, whatever count
+ * *status carries. */
 void hal_vbus_set_status(uint8_t bus, const hal_can_status_t *status);
 
 /* Whether the bus's filters are applied (default on). Off models a

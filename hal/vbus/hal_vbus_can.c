@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "hal_can_common.h"
 #include "hal_vbus.h"
 #include "hal_vbus_internal.h"
 
@@ -48,7 +49,7 @@ void hal_vbus_set_bus_count(uint32_t count)
 }
 
 /* The bus, or NULL for a valid index this backend does not have. */
-static vbus_t *bus_of(uint8_t bus)
+static vbus_t *vbus_can_bus_of(uint8_t bus)
 {
 	HAL_REQUIRE(bus < HAL_CAN_BUSES);
 	return (bus < bus_count) ? &buses[bus] : NULL;
@@ -76,7 +77,7 @@ static bool filter_pass(const vbus_t *b, const hal_can_frame_t *f)
 
 int hal_vbus_rx_push(uint8_t bus, const hal_can_frame_t *frame)
 {
-	vbus_t *b = bus_of(bus);
+	vbus_t *b = vbus_can_bus_of(bus);
 	uint32_t i;
 
 	HAL_REQUIRE((frame != NULL) && (frame->dlc <= HAL_CAN_MAX_DLEN));
@@ -109,7 +110,7 @@ int hal_vbus_rx_push(uint8_t bus, const hal_can_frame_t *frame)
 
 uint32_t hal_vbus_rx_pending(uint8_t bus)
 {
-	const vbus_t *b = bus_of(bus);
+	const vbus_t *b = vbus_can_bus_of(bus);
 
 	return (b != NULL) ? b->rx_count : 0U;
 }
@@ -132,7 +133,7 @@ bool hal_vbus_next_arrival_us(uint64_t *t_us)
 
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
-	vbus_t *b = bus_of(bus);
+	vbus_t *b = vbus_can_bus_of(bus);
 
 	HAL_REQUIRE(frame != NULL);
 	if (b == NULL) {
@@ -155,15 +156,15 @@ int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 
 int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t count)
 {
-	vbus_t *b = bus_of(bus);
+	vbus_t *b = vbus_can_bus_of(bus);
+	const int rc = hal_can_filter_check(filters, count);
 	uint32_t i;
 
-	HAL_REQUIRE((count <= HAL_CAN_MAX_FILTERS) && ((filters != NULL) || (count == 0U)));
+	if (rc != SQ_OK) {
+		return rc;
+	}
 	if (b == NULL) {
 		return SQ_ENODEV;
-	}
-	if (!hal_can_filters_in_range(filters, count)) {
-		return SQ_EINVAL;
 	}
 	for (i = 0U; i < count; i++) {
 		b->filters[i] = filters[i];
@@ -180,7 +181,7 @@ void hal_vbus_enforce_filters(bool on)
 
 uint32_t hal_vbus_rx_filters(uint8_t bus, hal_can_filter_t *filters, uint32_t max)
 {
-	const vbus_t *b = bus_of(bus);
+	const vbus_t *b = vbus_can_bus_of(bus);
 	uint32_t i;
 
 	if ((b == NULL) || !b->filter_set) {
@@ -209,17 +210,15 @@ static int wire_put(vbus_t *b, uint8_t bus, const hal_can_frame_t *f)
 
 int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
-	vbus_t *b = bus_of(bus);
+	vbus_t *b = vbus_can_bus_of(bus);
 	hal_can_frame_t f;
-	int rc;
+	int rc = hal_can_frame_check(frame);
 
-	HAL_REQUIRE(frame != NULL);
+	if (rc != SQ_OK) {
+		return rc;
+	}
 	if (b == NULL) {
 		return SQ_ENODEV;
-	}
-	if ((frame->dlc > HAL_CAN_MAX_DLEN) || ((frame->flags & HAL_CAN_FLAG_ERR) != 0U) ||
-	    (frame->id > hal_can_id_max(frame->flags))) {
-		return SQ_EINVAL;
 	}
 	if (b->status.mode == HAL_CAN_MODE_LISTEN_ONLY) {
 		b->status.tx_refused_listen_only++;
@@ -243,7 +242,7 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 
 int hal_vbus_tx_pop(uint8_t bus, hal_can_frame_t *frame)
 {
-	vbus_t *b = bus_of(bus);
+	vbus_t *b = vbus_can_bus_of(bus);
 
 	HAL_REQUIRE(frame != NULL);
 	if ((b == NULL) || (b->tx_count == 0U)) {
@@ -257,7 +256,7 @@ int hal_vbus_tx_pop(uint8_t bus, hal_can_frame_t *frame)
 
 void hal_vbus_set_sink(uint8_t bus, hal_vbus_sink_t sink)
 {
-	vbus_t *b = bus_of(bus);
+	vbus_t *b = vbus_can_bus_of(bus);
 
 	if (b != NULL) {
 		b->sink = sink;
@@ -268,7 +267,7 @@ void hal_vbus_set_sink(uint8_t bus, hal_vbus_sink_t sink)
 
 int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 {
-	const vbus_t *b = bus_of(bus);
+	const vbus_t *b = vbus_can_bus_of(bus);
 
 	HAL_REQUIRE(status != NULL);
 	if (b == NULL) {
@@ -280,22 +279,26 @@ int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 
 void hal_vbus_set_status(uint8_t bus, const hal_can_status_t *status)
 {
-	vbus_t *b = bus_of(bus);
+	vbus_t *b = vbus_can_bus_of(bus);
 
 	HAL_REQUIRE(status != NULL);
 	if (b != NULL) {
-		const hal_can_mode_t mode = b->status.mode;
-		const uint32_t refused = b->status.tx_refused_listen_only;
-
-		b->status = *status;
-		b->status.mode = mode;
-		b->status.tx_refused_listen_only = refused;
+		/* the bus makes the error counters and losses; the firmware's
+		 * mode and refusals stay, and the state changes (with
+		 * bus_off_count and state_changes) are counted here, as every
+		 * backend counts them */
+		b->status.tx_error_count = status->tx_error_count;
+		b->status.rx_error_count = status->rx_error_count;
+		b->status.rx_overruns = status->rx_overruns;
+		b->status.tx_dropped = status->tx_dropped;
+		b->status.error_frames = status->error_frames;
+		(void)hal_can_state_change(&b->status, status->state);
 	}
 }
 
 int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 {
-	vbus_t *b = bus_of(bus);
+	vbus_t *b = vbus_can_bus_of(bus);
 
 	HAL_REQUIRE((mode == HAL_CAN_MODE_NORMAL) || (mode == HAL_CAN_MODE_LISTEN_ONLY));
 	if (b == NULL) {
@@ -307,7 +310,7 @@ int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 
 int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 {
-	if (bus_of(bus) == NULL) {
+	if (vbus_can_bus_of(bus) == NULL) {
 		return SQ_ENODEV;
 	}
 	return ((bitrate_kbps == 0U) || (bitrate_kbps > 1000U)) ? SQ_EINVAL : SQ_OK;
@@ -315,7 +318,7 @@ int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps)
 
 void hal_vbus_get_stats(uint8_t bus, hal_vbus_stats_t *stats)
 {
-	const vbus_t *b = bus_of(bus);
+	const vbus_t *b = vbus_can_bus_of(bus);
 
 	HAL_REQUIRE(stats != NULL);
 	if (b != NULL) {

@@ -30,7 +30,7 @@
 #include "bxcan_regs.h"
 #include "chip.h"
 #include "sq_status.h"
-#include "stm32_board.h"
+#include "stm32_platform_faults.h"
 #include "stm32_time.h"
 
 uint32_t bxcan_sim_rcc[64];

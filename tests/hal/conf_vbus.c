@@ -71,9 +71,13 @@ int conf_force_bus_off(uint8_t bus, bool on)
 	if (rc != SQ_OK) {
 		return rc;
 	}
-	if (on && (st.state != HAL_CAN_STATE_BUS_OFF)) {
-		st.bus_off_count++;
-	}
+	/* What the bus hands in knows nothing of the firmware: mode NORMAL,
+	 * no refusals, no bus-off count (the backend's own: it counts the
+	 * entry). The backend must keep its mode and counts. */
+	st.mode = HAL_CAN_MODE_NORMAL;
+	st.tx_refused_listen_only = 0U;
+	st.bus_off_count = 0U;
+	st.state_changes = 0U;
 	st.state = on ? HAL_CAN_STATE_BUS_OFF : HAL_CAN_STATE_ERROR_ACTIVE;
 	st.tx_error_count = on ? 255U : 0U;
 	hal_vbus_set_status(bus, &st);

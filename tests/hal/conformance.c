@@ -9,9 +9,11 @@
  * It talks to the backend only through hal/hal.h; the harness is the other
  * side of the wire. Per bus it checks: filter semantics (standard, extended,
  * masks, none), receive order, monotonic timestamps, error frames reported,
- * TX queue-full error and recovery, bus-off reported, sending, listen-only
- * (nothing sent, refusals counted, receiving goes on, the other bus keeps
- * working), that no frame of one bus appears on the other, SQ_ENODEV for a
+ * TX queue-full error and recovery, bus-off reported, sending, the one
+ * frame rule (an undefined or error flag, DLC > 8, an id out of range:
+ * SQ_EINVAL everywhere, also in listen-only), listen-only (nothing sent,
+ * refusals counted, receiving goes on, the other bus keeps working, the
+ * mode survives a bus-off), that no frame of one bus appears on the other, SQ_ENODEV for a
  * bus the backend lacks, and that a bad bus index or NULL goes to the
  * contract handler. Every check prints one line:
  *   PASS  hal-conformance [vbus] bus 0: ...
@@ -214,9 +216,12 @@ static void check_filter_range(uint8_t bus)
 	const hal_can_filter_t bad_std = { 0x800U, HAL_CAN_STD_ID_MAX, 0U };
 	const hal_can_filter_t bad_ext = { 0x20000000U, HAL_CAN_EXT_ID_MAX, HAL_CAN_FLAG_EXT };
 	const hal_can_filter_t bad_mask = { 0x100U, 0xFFFU, 0U };
+	/* a filter's kind is EXT or not: any other flag is refused */
+	const hal_can_filter_t bad_flag = { 0x100U, HAL_CAN_STD_ID_MAX, HAL_CAN_FLAG_RTR };
 	int r1;
 	int r2;
 	int r3;
+	int r4;
 
 	if (!set_up(bus, "filter: ids and masks out of range refused")) {
 		return;
@@ -224,11 +229,14 @@ static void check_filter_range(uint8_t bus)
 	r1 = hal_can_set_rx_filter(bus, &bad_std, 1U);
 	r2 = hal_can_set_rx_filter(bus, &bad_ext, 1U);
 	r3 = hal_can_set_rx_filter(bus, &bad_mask, 1U);
+	r4 = hal_can_set_rx_filter(bus, &bad_flag, 1U);
 	if ((r1 == SQ_ENOTSUP) && (r2 == SQ_ENOTSUP)) {
 		skip(bus, "filter: ids and masks out of range refused", "SQ_ENOTSUP");
 	} else {
 		report((r1 == SQ_EINVAL) && (r2 == SQ_EINVAL) && (r3 == SQ_EINVAL), bus,
 		       "filter: ids and masks out of range refused (SQ_EINVAL)", "%d %d %d", r1, r2, r3);
+		report(r4 == SQ_EINVAL, bus, "filter: a flag other than EXT refused (SQ_EINVAL)", "%d",
+		       r4);
 	}
 	conf_backend_teardown();
 }
@@ -338,6 +346,73 @@ static void check_send(uint8_t bus)
 	report((rc == SQ_EINVAL) && (hal_can_send(bus, &bad) == SQ_EINVAL), bus,
 	       "send: id 0x800 (standard) and DLC 9 refused (SQ_EINVAL)", "rc %d", rc);
 	conf_backend_teardown();
+}
+
+/*
+ * One frame rule for every backend (hal_can_common.h): a bad frame is
+ * SQ_EINVAL before the backend looks at its bus, nothing reaches the wire
+ * and no counter moves; the same in listen-only mode (a bad frame is not a
+ * listen-only refusal).
+ */
+typedef struct {
+	const char *what;
+	hal_can_frame_t f;
+} bad_frame_t;
+
+static void check_frame_validity(uint8_t bus)
+{
+	const bad_frame_t cases[] = {
+		{ "an undefined flag bit (0x08)", frame(0x100U, 0x08U, 1U, 1U) },
+		{ "the top flag bit (0x80) on an extended frame",
+		  frame(0x100U, (uint8_t)(HAL_CAN_FLAG_EXT | 0x80U), 1U, 2U) },
+		{ "an error frame (HAL_CAN_FLAG_ERR)", frame(0x08U, HAL_CAN_FLAG_ERR, 8U, 3U) },
+		{ "DLC 9", frame(0x100U, 0U, 9U, 4U) },
+		{ "DLC 15 (remote frame)", frame(0x100U, HAL_CAN_FLAG_RTR, 15U, 5U) },
+		{ "standard id 0x800", frame(0x800U, 0U, 1U, 6U) },
+		{ "extended id 0x20000000", frame(0x20000000U, HAL_CAN_FLAG_EXT, 1U, 7U) },
+	};
+	uint32_t c;
+	uint32_t m;
+
+	for (m = 0U; m < 2U; m++) {
+		const bool lo = (m == 1U);
+
+		for (c = 0U; c < sizeof(cases) / sizeof(cases[0]); c++) {
+			char what[128];
+			hal_can_status_t st0;
+			hal_can_status_t st1;
+			hal_can_frame_t got[4];
+			uint32_t on_wire;
+			int rc_mode = SQ_OK;
+			int rc;
+
+			(void)snprintf(what, sizeof(what), "send%s: %s refused (SQ_EINVAL), nothing sent",
+				       lo ? " in listen-only" : "", cases[c].what);
+			if (!set_up(bus, what)) {
+				continue;
+			}
+			if (lo) {
+				rc_mode = hal_can_set_mode(bus, HAL_CAN_MODE_LISTEN_ONLY);
+				if (rc_mode == SQ_ENOTSUP) {
+					skip(bus, what, "hal_can_set_mode: SQ_ENOTSUP");
+					conf_backend_teardown();
+					continue;
+				}
+			}
+			(void)hal_can_get_status(bus, &st0);
+			rc = hal_can_send(bus, &cases[c].f);
+			conf_let_time_pass(SETTLE_US);
+			on_wire = wire(bus, got, 4U);
+			(void)hal_can_get_status(bus, &st1);
+			report((rc_mode == SQ_OK) && (rc == SQ_EINVAL) && (on_wire == 0U) &&
+				       (st1.tx_refused_listen_only == st0.tx_refused_listen_only) &&
+				       (st1.tx_dropped == st0.tx_dropped),
+			       bus, what, "rc %d, %u on the wire, refused %u -> %u", rc, (unsigned int)on_wire,
+			       (unsigned int)st0.tx_refused_listen_only,
+			       (unsigned int)st1.tx_refused_listen_only);
+			conf_backend_teardown();
+		}
+	}
 }
 
 static void check_tx_full(uint8_t bus)
@@ -464,6 +539,54 @@ static void check_listen_only(uint8_t bus)
 	conf_backend_teardown();
 }
 
+/* The mode is the firmware's: a bus-off and the recovery the bus makes
+ * (on the in-memory bus: an injected status) leave listen-only on, and a
+ * send is still refused with SQ_EPERM and counted. */
+static void check_listen_only_kept(uint8_t bus)
+{
+	const char *what = "listen-only kept across bus-off and recovery: send still SQ_EPERM, counted";
+	const hal_can_frame_t f = frame(0x304U, 0U, 2U, 6U);
+	hal_can_status_t st0;
+	hal_can_status_t st1;
+	hal_can_frame_t got[4];
+	uint32_t on_wire;
+	int rc_mode;
+	int rc;
+
+	if (!set_up(bus, what)) {
+		return;
+	}
+	rc_mode = hal_can_set_mode(bus, HAL_CAN_MODE_LISTEN_ONLY);
+	if (rc_mode == SQ_ENOTSUP) {
+		skip(bus, what, "hal_can_set_mode: SQ_ENOTSUP");
+		conf_backend_teardown();
+		return;
+	}
+	rc = conf_force_bus_off(bus, true);
+	if (rc == SQ_ENOTSUP) {
+		skip(bus, what, "the harness cannot make the controller go bus-off");
+		conf_backend_teardown();
+		return;
+	}
+	conf_let_time_pass(SETTLE_US);
+	(void)drain(bus, got, 4U); /* the backend may learn it from an error frame */
+	(void)conf_force_bus_off(bus, false);
+	conf_let_time_pass(SETTLE_US);
+	(void)drain(bus, got, 4U);
+	(void)hal_can_get_status(bus, &st0);
+	rc = hal_can_send(bus, &f);
+	conf_let_time_pass(SETTLE_US);
+	on_wire = wire(bus, got, 4U);
+	(void)hal_can_get_status(bus, &st1);
+	report((rc_mode == SQ_OK) && (st0.mode == HAL_CAN_MODE_LISTEN_ONLY) &&
+		       (st0.state != HAL_CAN_STATE_BUS_OFF) && (rc == SQ_EPERM) && (on_wire == 0U) &&
+		       (st1.tx_refused_listen_only == st0.tx_refused_listen_only + 1U),
+	       bus, what, "mode %d state %d, send rc %d, %u on the wire, refused %u -> %u", (int)st0.mode,
+	       (int)st0.state, rc, (unsigned int)on_wire, (unsigned int)st0.tx_refused_listen_only,
+	       (unsigned int)st1.tx_refused_listen_only);
+	conf_backend_teardown();
+}
+
 static void check_isolation(uint8_t bus)
 {
 	const uint8_t other = (uint8_t)(1U - bus);
@@ -551,9 +674,11 @@ int main(void)
 		check_receive_order_and_time(bus);
 		check_error_frame(bus);
 		check_send(bus);
+		check_frame_validity(bus);
 		check_tx_full(bus);
 		check_bus_off(bus);
 		check_listen_only(bus);
+		check_listen_only_kept(bus);
 		if (buses > 1U) {
 			check_isolation(bus);
 		}
