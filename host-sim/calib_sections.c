@@ -498,7 +498,7 @@ static const char *const input_keys[] = {
 	"mux_value", "na_raw", "na_raw2", "qualifier_bit", "qualifier_invalid", "protection",
 	"data_id", "data_id_list", "counter_start_bit", "counter_length",
 	"counter_byte_order", "counter_modulus", "max_delta_counter", "period_ms",
-	"stale_cycles", "max", "min", "step_max", NULL
+	"stale_cycles", "max", "min", "step_max", "signal", NULL
 };
 
 /* the brake's standard deviations: flat keys a corner may override */
@@ -880,7 +880,12 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 				return -1;
 			}
 			if (names != NULL) {
+				const calib_section_kv_t *sg = kv_of(c.sec, "signal");
+
 				snprintf(names->input[ni], sizeof(names->input[ni]), "%s", c.sec->name);
+				if (sg != NULL) {
+					snprintf(names->signal[ni], sizeof(names->signal[ni]), "%.63s", sg->value);
+				}
 			}
 			ni++;
 		}

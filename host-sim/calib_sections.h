@@ -46,9 +46,14 @@ typedef struct {
 	calib_section_t sec[CALIB_SECTIONS_MAX];
 } calib_sections_t;
 
-/* The names of a parsed map's inputs, by index in calib_t.inputs. */
+/* The names of a parsed map's inputs, by index in calib_t.inputs; the
+ * host-only keys (not stored in the ECU block): input_iface (the log or
+ * SocketCAN interface the inputs come from, "" when absent) and each
+ * input's DBC signal name `MSG.SIG` ("" when absent). */
 typedef struct {
 	char input[CALIB_MAX_INPUTS][CALIB_SECTION_NAME_LEN];
+	char input_iface[16];
+	char signal[CALIB_MAX_INPUTS][64];
 } calib_names_t;
 
 void calib_sections_init(calib_sections_t *s);

@@ -528,6 +528,7 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 	unsigned int lineno = 0;
 	static calib_sections_t sections; /* large: not on the stack */
 	unsigned int legacy_line = 0;
+	unsigned int iface_line = 0;
 	const char *legacy_key = "";
 
 	if ((f == NULL) || (out == NULL)) {
@@ -595,6 +596,21 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 			if (calib_sections_key(&sections, key, value, lineno, msg, sizeof(msg)) != 0) {
 				calib_text_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
 				return SQ_EBADMSG;
+			}
+			continue;
+		}
+		if (strcmp(key, "input_iface") == 0) {
+			/* host-only: the interface the inputs come from */
+			if ((iface_line != 0U) || (strlen(value) == 0U) || (strlen(value) > 15U) ||
+			    (strspn(value, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") !=
+			     strlen(value))) {
+				calib_text_errf(err, errlen, "%s:%u: input_iface: 1..15 characters A-Z a-z 0-9 _ . - (once)",
+					name, lineno);
+				return SQ_EBADMSG;
+			}
+			iface_line = lineno;
+			if (names != NULL) {
+				snprintf(names->input_iface, sizeof(names->input_iface), "%s", value);
 			}
 			continue;
 		}
