@@ -59,7 +59,7 @@
 #define TICK_US 1000U
 #define SEGMENT_BACK_US 1000000U /* a jump back beyond this starts a segment */
 #define SEGMENT_POINTS_MAX 64U /* rebase points kept for the JSON (memory stays constant) */
-#define N_STATES 5U /* stable, bistable, unstable, not sliding, fault */
+#define N_STATES MSG_SQUEAL_STATE_SLOTS /* stable, bistable, unstable, not sliding, fault */
 #define N_LEVELS 4U
 
 static const char *const level_names[N_LEVELS] = {
@@ -128,11 +128,6 @@ typedef struct {
 	bool no_output;
 	replay_summary_t *summary; /* NULL without --summary-json */
 } replay_t;
-
-static unsigned state_index(uint8_t s)
-{
-	return (s < 4U) ? s : 4U;
-}
 
 static void replay_usage(FILE *f)
 {
@@ -317,8 +312,8 @@ static void after_poll(replay_t *r)
 			emit(r, bus, &f);
 		}
 	}
-	from = state_index(r->state);
-	to = state_index(m->state);
+	from = msg_squeal_state_slot(r->state);
+	to = msg_squeal_state_slot(m->state);
 	if (from != to) {
 		r->transitions[from][to]++;
 	}
@@ -334,7 +329,7 @@ static void after_poll(replay_t *r)
 static void set_time(replay_t *r, uint64_t t_us)
 {
 	if (t_us > r->now_us) {
-		r->state_us[state_index(r->state)] += t_us - r->now_us;
+		r->state_us[msg_squeal_state_slot(r->state)] += t_us - r->now_us;
 		r->now_us = t_us;
 		hal_vbus_set_time_us(t_us);
 	}
@@ -564,7 +559,7 @@ static void summary(const replay_t *r, const replay_args_t *a)
 		fprintf(o, "  corner %s              inputs used speed %u force %u, implausible %u/%u, final %s\n",
 			pos[c->corner.pos & 3U], c->speed.count.used, c->force.count.used,
 			c->speed.count.implausible, c->force.count.implausible,
-			rs_state_name(state_index(c->state)));
+			rs_state_name(msg_squeal_state_slot(c->state)));
 	}
 	fprintf(o, "  rejected:\n");
 	fprintf(o, "    malformed_lines     %llu\n", (unsigned long long)r->malformed);
@@ -630,7 +625,7 @@ static void summary(const replay_t *r, const replay_args_t *a)
 		}
 	}
 	fprintf(o, "\n  final_state           %s, warning %s\n",
-		rs_state_name(state_index(m->state)),
+		rs_state_name(msg_squeal_state_slot(m->state)),
 		(m->warning < N_LEVELS) ? level_names[m->warning] : "?");
 	fprintf(o, "  output_frames         %llu (", (unsigned long long)r->out_frames);
 	for (i = 0U; i < MSG_COUNT; i++) {
@@ -775,7 +770,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_kv_u64(w, "total", changes);
 	json_end_object(w);
 	json_key(w, "final_state");
-	json_string(w, r->started ? rs_state_name(state_index(m->state)) : NULL);
+	json_string(w, r->started ? rs_state_name(msg_squeal_state_slot(m->state)) : NULL);
 	json_key(w, "final_warning");
 	json_string(w, (r->started && (m->warning < N_LEVELS)) ? level_names[m->warning] : NULL);
 	json_key(w, "output_frames");
