@@ -475,6 +475,7 @@ static int decode_iface(decoder_t *d, const char *iface)
 static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 {
 	static candump_reader_t reader;
+	static candump_pending_t pending;
 	const char *name = path;
 	candump_frame_t f;
 	const char *line;
@@ -494,17 +495,19 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 		}
 	}
 	candump_reader_init(&reader, in);
+	candump_pending_init(&pending, stderr, name);
 	while ((rc = candump_reader_next(&reader, &line, &len, &too_long)) > 0) {
 		candump_err_t err = CANDUMP_OK;
 		size_t col = 0U;
 
 		if (too_long) {
-			fprintf(stderr, "%s:%" PRIu64 ": %s\n", name, reader.line_no,
-				candump_strerror(CANDUMP_ERR_TOO_LONG));
+			candump_pending_report(&pending, "%s:%" PRIu64 ": %s", name, reader.line_no,
+					       candump_strerror(CANDUMP_ERR_TOO_LONG));
 			continue;
 		}
 		switch (candump_parse_line(line, len, &f, &err, &col)) {
 		case CANDUMP_LINE_FRAME:
+			candump_pending_frame(&pending);
 			if ((bus_name != NULL) && (strcmp(f.iface, bus_name) != 0)) {
 				break; /* another bus of the log */
 			}
@@ -513,8 +516,8 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 			}
 			break;
 		case CANDUMP_LINE_MALFORMED:
-			fprintf(stderr, "%s:%" PRIu64 ": %s (column %zu)\n", name, reader.line_no,
-				candump_strerror(err), col + 1U);
+			candump_pending_report(&pending, "%s:%" PRIu64 ": %s (column %zu)", name,
+					       reader.line_no, candump_strerror(err), col + 1U);
 			break;
 		default:
 			break;
@@ -522,6 +525,8 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 	}
 	if (rc < 0) {
 		fprintf(stderr, "squeal-sim decode: %s: read error\n", name);
+		status = 1;
+	} else if (candump_pending_no_frames(&pending)) {
 		status = 1;
 	}
 	if (in != stdin) {
