@@ -3,7 +3,8 @@
  * squeal-sim decode [LOG|-|--iface IF] [--bus NAME] [--csv]: the frames of
  * squeal.dbc as physical values, from a candump -L log, stdin, or a CAN
  * interface. --bus NAME takes only the log's frames of interface NAME (the
- * firmware's input bus 0 in a multi-bus log); default every interface.
+ * interface the inputs come from in a multi-bus log); default: the
+ * calibration's input_iface with --calib, else every interface.
  *
  * Values come from the firmware's descriptor tables (msg_table,
  * msg_sig_table, checked against the DBC by tests/protocol/): physical =
@@ -419,7 +420,8 @@ static void decode_usage(FILE *f)
 		"              NA if not available),raw\n"
 		"  --iface IF  read from a CAN interface (vcan0, can0, ...)\n"
 		"  --bus NAME  of a log, only the frames of interface NAME (one bus of a\n"
-		"              multi-bus log; default: every interface)\n"
+		"              multi-bus log; default: the calibration's input_iface, else\n"
+		"              every interface)\n"
 		"  --calib FILE  calibration text with an input map (docs/calib-input-map.md):\n"
 		"              after each frame, every input it carries as the monitor sees\n"
 		"              it: raw, physical, valid/reason, and per corner v0 [m/s] or\n"
@@ -612,6 +614,9 @@ int cmd_decode(int argc, char **argv)
 			return 1;
 		}
 		d.inputs = &inputs;
+		if ((bus_name == NULL) && (iface == NULL) && (inputs.names.input_iface[0] != '\0')) {
+			bus_name = inputs.names.input_iface; /* the calibration's input interface */
+		}
 	}
 	for (i = 0U; i < MSG_SIG_COUNT; i++) {
 		d.decimals[i] = sig_decimals(&msg_sig_table[i]);
