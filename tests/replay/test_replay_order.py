@@ -22,7 +22,8 @@ loggers write:
     calibration's input_iface choose;
   - the summary names each input by corner, quantity and DBC signal, and
     counts the rejected frames by the input stage's reasons as the log was
-    made (bad DLC, not available, implausible), text and JSON.
+    made (bad DLC, not available, implausible), text and JSON;
+  - decode --calib names every corner's output messages.
 Prints "RESULT: N passed, M failed".
 """
 import io
@@ -421,6 +422,43 @@ def test_names(tmp):
             "names: the JSON's existing keys stay (frames_used.DiscSpeed is corner 0's speed)")
 
 
+def test_decode_corners(tmp):
+    """decode --calib names each corner's output messages: FL sends the DBC's
+    identifiers (0x300..0x303), FR the default next block (0x310..0x313);
+    each corner's E2E counters are followed on their own."""
+    import canmatrix.formats
+    db = canmatrix.formats.loads_flat(OWN_DBC, "dbc")
+    abs1 = db.frame_by_name("ABS_1")
+    brk = db.frame_by_name("BRAKE_2")
+    lines = []
+    for k in range(100):
+        t = 30 * 1000000 + k * 10000
+        lines.append(stamp(t, "can0", 0x1A0, bytes(abs1.encode({"WHEEL_SPEED_FL": 4000, "WHEEL_SPEED_FR": 4000}))))
+        lines.append(stamp(t + 5000, "can0", 0x1B0, bytes(brk.encode({"BRAKE_PRESSURE": 200}))))
+    p = os.path.join(tmp, "corners-in.log")
+    write(p, lines)
+    cal = os.path.join(tmp, "corners.cal")
+    with open(cal, "w") as f:
+        f.write(OWN_CAL + "[corner FR]\nspeed = wheel_fl\nforce = brake\npiston_area_mm2 = 2000\n")
+    rc, so, _ = run(["replay", "--calib", cal, p])
+    out = os.path.join(tmp, "corners-out.log")
+    with open(out, "w") as f:
+        f.write(so)
+    rc2, txt, _ = run(["decode", "--calib", cal, out])
+    want = {0x300: "SquealStatus[FL]", 0x301: "SquealDetail[FL]", 0x302: "SquealDiag[FL]",
+            0x303: "SquealDetail2[FL]", 0x310: "SquealStatus[FR]", 0x311: "SquealDetail[FR]",
+            0x312: "SquealDiag[FR]", 0x313: "SquealDetail2[FR]"}
+    frames = out_frames(so)
+    names = [ln.split(" ")[1] for ln in txt.splitlines() if not ln.startswith(" ")]
+    R.check(rc == 0 and rc2 == 0 and len(names) == len(frames) and
+            all(want.get(f[2]) == n for f, n in zip(frames, names)) and
+            {f[2] for f in frames} == set(want),
+            "decode --calib: every output frame named by message and corner (%s)" % sorted(set(names)))
+    e2e = [ln.rsplit("e2e=", 1)[1] for ln in txt.splitlines() if "e2e=" in ln]
+    R.check(len(e2e) == len(frames) and set(e2e) <= {"initial", "ok"} and e2e.count("initial") == 8,
+            "decode --calib: each corner's counters followed on their own (%s)" % sorted(set(e2e)))
+
+
 def main():
     db = gen_inputs.load_dbc()
     with tempfile.TemporaryDirectory() as tmp:
@@ -430,6 +468,7 @@ def main():
         test_gaps(tmp, db)
         test_buses(tmp, db)
         test_names(tmp)
+        test_decode_corners(tmp)
     print("RESULT: %d passed, %d failed" % (R.passed, R.failed))
     return 0 if R.failed == 0 else 1
 
