@@ -7,6 +7,7 @@
  */
 #include "candump_log.h"
 
+#include <stdarg.h>
 #include <string.h>
 
 typedef struct {
@@ -725,4 +726,56 @@ int candump_reader_next(candump_reader_t *r, const char **line, size_t *len,
 		*too_long = longer;
 	}
 	return 1;
+}
+
+/* ---- messages held back until the first frame -------------------------------- */
+
+void candump_pending_init(candump_pending_t *p, FILE *out, const char *log_name)
+{
+	memset(p, 0, sizeof(*p));
+	p->out = out;
+	p->log_name = log_name;
+}
+
+void candump_pending_report(candump_pending_t *p, const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	if (p->frames_seen) {
+		(void)vfprintf(p->out, fmt, ap);
+		(void)fputc('\n', p->out);
+	} else if (p->n < CANDUMP_PENDING_MAX) {
+		(void)vsnprintf(p->msg[p->n], sizeof(p->msg[0]), fmt, ap);
+		p->n++;
+	} else {
+		p->more++;
+	}
+	va_end(ap);
+}
+
+void candump_pending_frame(candump_pending_t *p)
+{
+	uint32_t i;
+
+	if (p->frames_seen) {
+		return;
+	}
+	p->frames_seen = true;
+	for (i = 0U; i < p->n; i++) {
+		(void)fprintf(p->out, "%s\n", p->msg[i]);
+	}
+	if (p->more != 0U) {
+		(void)fprintf(p->out, "%s: %llu more malformed lines before the first frame\n",
+			      p->log_name, (unsigned long long)p->more);
+	}
+}
+
+bool candump_pending_no_frames(candump_pending_t *p)
+{
+	if (p->frames_seen) {
+		return false;
+	}
+	(void)fprintf(p->out, "no CAN frames in %s\n", p->log_name);
+	return true;
 }

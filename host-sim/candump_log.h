@@ -176,4 +176,33 @@ void candump_reader_init(candump_reader_t *r, FILE *f);
 int candump_reader_next(candump_reader_t *r, const char **line, size_t *len,
 			bool *too_long);
 
+/*
+ * Messages about malformed lines are held back until the log's first frame:
+ * a file without a single CAN frame is one error ("no CAN frames in FILE"),
+ * not a message per line of some other text. The first
+ * CANDUMP_PENDING_MAX messages are kept and written when the first frame
+ * arrives (the others are counted in one line); after it, each message is
+ * written at once.
+ */
+#define CANDUMP_PENDING_MAX 16U
+#define CANDUMP_PENDING_LEN 160U
+
+typedef struct {
+	FILE *out;
+	const char *log_name;
+	bool frames_seen;
+	uint32_t n;
+	uint64_t more;      /* messages beyond CANDUMP_PENDING_MAX */
+	char msg[CANDUMP_PENDING_MAX][CANDUMP_PENDING_LEN];
+} candump_pending_t;
+
+void candump_pending_init(candump_pending_t *p, FILE *out, const char *log_name);
+/* One message (printf format, a newline is added). */
+void candump_pending_report(candump_pending_t *p, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+/* A frame was read: write what was held back (once). */
+void candump_pending_frame(candump_pending_t *p);
+/* After the log: the one line for a log without a frame; true then. */
+bool candump_pending_no_frames(candump_pending_t *p);
+
 #endif /* CANDUMP_LOG_H */

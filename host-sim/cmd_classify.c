@@ -18,8 +18,10 @@
 #include "squeal_model.h"
 #include "squeal_sigma.h"
 
-/* Vehicle speed for display: v_car = (r_w / r_p) v0 with the default wheel
- * (0.30 m) and effective pad radius (0.12 m) of model.md section 8. */
+/* Vehicle speed for display: v_car = (r_w / r_p) v0, with the wheel and
+ * effective pad radius of --calib's corner (its own keys, else the flat
+ * ones), without --calib the defaults (0.30 m, 0.12 m) of model.md
+ * section 8. */
 #define WHEEL_OVER_PAD_RADIUS (0.30 / 0.12)
 
 typedef struct {
@@ -34,6 +36,7 @@ typedef struct {
 	const char *calib_path;      /* --calib: brake and deviations from it */
 	const char *corner;          /* --corner POS: that corner's brake     */
 	bool json;
+	double wheel_over_pad;       /* r_w / r_p for the vehicle speed       */
 } classify_args_t;
 
 static int parse_double(const char *flag, const char *text, double *out)
@@ -75,6 +78,8 @@ static void classify_usage(FILE *f)
 		"                   to the class in sigmas (docs/uncertainty.md)\n"
 		"  --corner POS     with --calib: the brake of [corner POS] (FL, FR, RL, RR)\n"
 		"  --json           one JSON object on stdout\n\n"
+		"The vehicle speed shown is v0 x wheel radius / pad radius (--calib: its\n"
+		"corner's radii; else 0.30 m / 0.12 m).\n"
 		"Exit status: 0 classified, 1 input outside the model's domain\n"
 		"(state \"invalid\") or a --calib file that does not load and set up\n"
 		"(one line FILE:LINE: reason), 2 bad usage. Numeric build: %s.\n",
@@ -107,6 +112,7 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 	int opt;
 
 	memset(a, 0, sizeof(*a));
+	a->wheel_over_pad = WHEEL_OVER_PAD_RADIUS;
 	sim_params_default(&a->params);
 	a->criterion = SQUEAL_CRITERION_EXACT;
 	optind = 1;
@@ -201,8 +207,9 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 	return 0;
 }
 
-/* The brake and its deviations from --calib (criterion too, unless given):
- * 0, or the exit code (1 the file does not load, 2 no such --corner). */
+/* The brake and its deviations from --calib (criterion too, unless given),
+ * and its corner's wheel over pad radius. 0; 1 the file is refused; 2
+ * --corner is not one of its corners. */
 static int load_brake(classify_args_t *a, squeal_params_t *params, squeal_param_sd_t *sd)
 {
 	calib_t cal;
@@ -219,6 +226,9 @@ static int load_brake(classify_args_t *a, squeal_params_t *params, squeal_param_
 	}
 	calib_corner_params(&brake, params);
 	calib_corner_sd(&brake, sd);
+	if (brake.pad_radius_um != 0U) { /* calib_validate keeps it > 0; no division by 0 */
+		a->wheel_over_pad = (double)brake.wheel_radius_um / (double)brake.pad_radius_um;
+	}
 	if (!a->have_criterion) {
 		a->criterion = (squeal_criterion_t)brake.criterion;
 	}
@@ -285,6 +295,7 @@ static void print_json(const classify_args_t *a, const squeal_result_t *r, doubl
 	printf("  \"numeric\": \"%s\",\n", SQUEAL_NUMERIC_NAME);
 	printf("  \"v0_mps\": %.9g,\n", a->v0_mps);
 	printf("  \"force_n\": %.9g,\n", a->force_n);
+	printf("  \"vehicle_kmh\": %.9g,\n", a->v0_mps * a->wheel_over_pad * 3.6);
 	json_field("q", lnq, exp(d.ln_q), false);
 	json_field("ln_q", lnq, d.ln_q, false);
 	json_field("hopf_v0_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0),
@@ -328,7 +339,7 @@ static void print_text(const classify_args_t *a, const squeal_result_t *r, doubl
 
 	result_to_double(r, &d);
 	printf("operating point  v0 = %.4g m/s (vehicle %.1f km/h), N = %.6g N\n",
-	       a->v0_mps, a->v0_mps * WHEEL_OVER_PAD_RADIUS * 3.6, a->force_n);
+	       a->v0_mps, a->v0_mps * a->wheel_over_pad * 3.6, a->force_n);
 	printf("state            %s: %s\n", squeal_model_state_name(r->state),
 	       state_explanation(r->state));
 	if (has(r, SQUEAL_HAS_LNQ, 0U)) {

@@ -3,7 +3,8 @@
  * squeal-sim decode [LOG|-|--iface IF] [--bus NAME] [--csv]: the frames of
  * squeal.dbc as physical values, from a candump -L log, stdin, or a CAN
  * interface. --bus NAME takes only the log's frames of interface NAME (the
- * firmware's input bus 0 in a multi-bus log); default every interface.
+ * interface the inputs come from in a multi-bus log); default: the
+ * calibration's input_iface with --calib, else every interface.
  *
  * Values come from the firmware's descriptor tables (msg_table,
  * msg_sig_table, checked against the DBC by tests/protocol/): physical =
@@ -21,6 +22,10 @@
  *   wrong_crc      CRC wrong (values printed anyway, as received)
  *   bad_counter    counter 15 (never sent by a P01 sender)
  *   bad_dlc        length is not the message's DLC (no values)
+ *
+ * With --calib, each [corner POS] of the calibration's input map sends its
+ * own identifiers: its frames are named NAME[POS] ("SquealStatus[FR]"), in
+ * text and CSV, and each corner's E2E counters are followed on their own.
  *
  * Text: one line per frame, "TIME NAME signal=value ... ctr=N e2e=STATUS";
  * SquealState, WarningLevel and SquealDiag_Page print as state=NAME,
@@ -61,11 +66,23 @@ typedef struct {
 	uint8_t last_counter;
 } e2e_track_t;
 
+/* With --calib: each corner's output messages, by their identifiers. */
+typedef struct {
+	uint16_t id;
+	uint8_t mi;                /* index in msg_table */
+	uint8_t corner;            /* index in the calibration's corners */
+	const char *pos;
+} corner_msg_t;
+
+#define CORNER_MSGS_MAX (CALIB_MAX_CORNERS * 4U)
+
 typedef struct {
 	bool csv;
 	decode_inputs_t *inputs;   /* --calib: the input map's inputs          */
 	bool inputs_csv;           /* --inputs-csv: only those, as CSV         */
-	e2e_track_t e2e[MSG_COUNT];
+	e2e_track_t e2e[CALIB_MAX_CORNERS][MSG_COUNT]; /* per corner (0 without --calib) */
+	corner_msg_t cmsg[CORNER_MSGS_MAX];
+	uint32_t n_cmsg;
 	uint8_t decimals[MSG_SIG_COUNT];
 	char *out;      /* line being built */
 	size_t out_len;
@@ -150,11 +167,11 @@ static bool is_fault_bit(const msg_sig_desc_t *s)
 }
 
 /* E2E state of one frame of a known message (dlc already checked). */
-static const char *e2e_status(decoder_t *d, size_t mi, const uint8_t *data, uint8_t dlc,
-			      uint8_t *lost)
+static const char *e2e_status(decoder_t *d, size_t corner, size_t mi, const uint8_t *data,
+			      uint8_t dlc, uint8_t *lost)
 {
 	const msg_desc_t *m = &msg_table[mi];
-	e2e_track_t *t = &d->e2e[mi];
+	e2e_track_t *t = &d->e2e[corner][mi];
 	const uint8_t id[2] = { (uint8_t)(m->data_id & 0xFFU), (uint8_t)(m->data_id >> 8) };
 	const uint8_t counter = data[1] & 0x0FU;
 	uint8_t crc;
@@ -242,6 +259,8 @@ static void csv_header(decoder_t *d)
 static void decode_frame(decoder_t *d, const candump_frame_t *f)
 {
 	const msg_desc_t *m = NULL;
+	const corner_msg_t *cm = NULL;
+	char name[48];
 	size_t mi = 0U;
 	const char *e2e = "";
 	uint8_t lost = 0U;
@@ -249,18 +268,32 @@ static void decode_frame(decoder_t *d, const candump_frame_t *f)
 	size_t i;
 
 	if ((f->kind == CANDUMP_KIND_CLASSIC) && !f->ext) {
-		m = msg_desc_find((uint16_t)f->id);
+		for (i = 0U; (i < d->n_cmsg) && (cm == NULL); i++) {
+			if (d->cmsg[i].id == f->id) {
+				cm = &d->cmsg[i];
+				m = &msg_table[cm->mi];
+			}
+		}
+		if (cm == NULL) {
+			m = msg_desc_find((uint16_t)f->id);
+		}
 	}
 	if (m != NULL) {
 		mi = (size_t)(m - msg_table);
 		dlc_ok = (f->len == m->dlc);
-		e2e = dlc_ok ? e2e_status(d, mi, f->data, f->len, &lost) : "bad_dlc";
+		e2e = dlc_ok ? e2e_status(d, (cm != NULL) ? cm->corner : 0U, mi, f->data, f->len, &lost) :
+			       "bad_dlc";
+		if (cm != NULL) {
+			(void)snprintf(name, sizeof(name), "%s[%s]", m->name, cm->pos);
+		} else {
+			(void)snprintf(name, sizeof(name), "%s", m->name);
+		}
 	}
 	put_time(d, f->t_ns);
 	if (d->csv) {
 		put(d, ",");
 		put_id(d, f);
-		put(d, ",%s,", (m != NULL) ? m->name : kind_name(f));
+		put(d, ",%s,", (m != NULL) ? name : kind_name(f));
 		if (dlc_ok) {
 			put(d, "%u", f->data[1] & 0x0FU);
 		}
@@ -291,7 +324,7 @@ static void decode_frame(decoder_t *d, const candump_frame_t *f)
 	put(d, " ");
 	if ((m == NULL) || !dlc_ok) {
 		if (m != NULL) {
-			put(d, "%s bad_dlc ", m->name);
+			put(d, "%s bad_dlc ", name);
 		} else {
 			put_id(d, f);
 			put(d, " %s ", kind_name(f));
@@ -311,7 +344,7 @@ static void decode_frame(decoder_t *d, const candump_frame_t *f)
 		put(d, "\n");
 		return;
 	}
-	put(d, "%s", m->name);
+	put(d, "%s", name);
 	{
 		bool any_fault_sig = false;
 		bool any_fault = false;
@@ -419,15 +452,48 @@ static void decode_usage(FILE *f)
 		"              NA if not available),raw\n"
 		"  --iface IF  read from a CAN interface (vcan0, can0, ...)\n"
 		"  --bus NAME  of a log, only the frames of interface NAME (one bus of a\n"
-		"              multi-bus log; default: every interface)\n"
+		"              multi-bus log; default: the calibration's input_iface, else\n"
+		"              every interface)\n"
 		"  --calib FILE  calibration text with an input map (docs/calib-input-map.md):\n"
 		"              after each frame, every input it carries as the monitor sees\n"
 		"              it: raw, physical, valid/reason, and per corner v0 [m/s] or\n"
-		"              the clamp force [N]\n"
+		"              the clamp force [N]; each corner's messages by their\n"
+		"              identifiers, named NAME[POS] (SquealStatus[FR])\n"
 		"  --inputs-csv  with --calib: only the inputs, one CSV row each:\n"
 		"              t_s,iface,id,input,raw,physical,unit,valid,reason\n\n"
 		"Malformed log lines are reported on stderr as LOG:LINE: message.\n"
 		"Exit status: 0 done, 1 input error, 2 bad usage.\n");
+}
+
+/* The output messages of every [corner] of the calibration (none for the
+ * legacy form, whose one corner sends the DBC's identifiers). */
+static void corner_msgs(decoder_t *d, const decode_inputs_t *in)
+{
+	static const char *const pos[4] = { "FL", "FR", "RL", "RR" };
+	uint32_t k;
+
+	d->n_cmsg = 0U;
+	if (in->cal.n_corners == 0U) {
+		return;
+	}
+	for (k = 0U; (k < in->n_corners) && (k < CALIB_MAX_CORNERS); k++) {
+		const calib_corner_t *c = &in->corner[k];
+		const uint16_t ids[4][2] = {
+			{ c->status_id, MSG_SQUEAL_STATUS_ID }, { c->detail_id, MSG_SQUEAL_DETAIL_ID },
+			{ c->detail2_id, MSG_SQUEAL_DETAIL2_ID }, { c->diag_id, MSG_SQUEAL_DIAG_ID },
+		};
+		unsigned j;
+
+		for (j = 0U; j < 4U; j++) {
+			const msg_desc_t *m = msg_desc_find(ids[j][1]);
+
+			if ((m != NULL) && (d->n_cmsg < CORNER_MSGS_MAX)) {
+				d->cmsg[d->n_cmsg] = (corner_msg_t){ ids[j][0], (uint8_t)(m - msg_table),
+								     (uint8_t)k, pos[c->pos & 3U] };
+				d->n_cmsg++;
+			}
+		}
+	}
 }
 
 static volatile bool stop_flag;
@@ -475,6 +541,7 @@ static int decode_iface(decoder_t *d, const char *iface)
 static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 {
 	static candump_reader_t reader;
+	static candump_pending_t pending;
 	const char *name = path;
 	candump_frame_t f;
 	const char *line;
@@ -494,17 +561,19 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 		}
 	}
 	candump_reader_init(&reader, in);
+	candump_pending_init(&pending, stderr, name);
 	while ((rc = candump_reader_next(&reader, &line, &len, &too_long)) > 0) {
 		candump_err_t err = CANDUMP_OK;
 		size_t col = 0U;
 
 		if (too_long) {
-			fprintf(stderr, "%s:%" PRIu64 ": %s\n", name, reader.line_no,
-				candump_strerror(CANDUMP_ERR_TOO_LONG));
+			candump_pending_report(&pending, "%s:%" PRIu64 ": %s", name, reader.line_no,
+					       candump_strerror(CANDUMP_ERR_TOO_LONG));
 			continue;
 		}
 		switch (candump_parse_line(line, len, &f, &err, &col)) {
 		case CANDUMP_LINE_FRAME:
+			candump_pending_frame(&pending);
 			if ((bus_name != NULL) && (strcmp(f.iface, bus_name) != 0)) {
 				break; /* another bus of the log */
 			}
@@ -513,8 +582,8 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 			}
 			break;
 		case CANDUMP_LINE_MALFORMED:
-			fprintf(stderr, "%s:%" PRIu64 ": %s (column %zu)\n", name, reader.line_no,
-				candump_strerror(err), col + 1U);
+			candump_pending_report(&pending, "%s:%" PRIu64 ": %s (column %zu)", name,
+					       reader.line_no, candump_strerror(err), col + 1U);
 			break;
 		default:
 			break;
@@ -522,6 +591,8 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 	}
 	if (rc < 0) {
 		fprintf(stderr, "squeal-sim decode: %s: read error\n", name);
+		status = 1;
+	} else if (candump_pending_no_frames(&pending)) {
 		status = 1;
 	}
 	if (in != stdin) {
@@ -607,6 +678,10 @@ int cmd_decode(int argc, char **argv)
 			return 1;
 		}
 		d.inputs = &inputs;
+		corner_msgs(&d, &inputs);
+		if ((bus_name == NULL) && (iface == NULL) && (inputs.names.input_iface[0] != '\0')) {
+			bus_name = inputs.names.input_iface; /* the calibration's input interface */
+		}
 	}
 	for (i = 0U; i < MSG_SIG_COUNT; i++) {
 		d.decimals[i] = sig_decimals(&msg_sig_table[i]);

@@ -229,12 +229,6 @@ static const char *state_name(uint8_t state)
 	return (n != NULL) ? n : "?";
 }
 
-/* index into the per-state time table: 0..3, 4 = fault */
-static unsigned int state_slot(uint8_t state)
-{
-	return (state <= 3U) ? state : 4U;
-}
-
 static void print_input(const char *name, const input_t *in)
 {
 	const input_counters_t *c = &in->count;
@@ -248,7 +242,7 @@ static void print_input(const char *name, const input_t *in)
 		name, c->implausible, name, c->stale_events);
 }
 
-static void ecu_summary(const uint64_t state_us[5], uint64_t run_us)
+static void ecu_summary(const uint64_t state_us[MSG_SQUEAL_STATE_SLOTS], uint64_t run_us)
 {
 	const monitor_t *m = squeal_app_monitor();
 	hal_linux_can_stats_t st;
@@ -265,8 +259,9 @@ static void ecu_summary(const uint64_t state_us[5], uint64_t run_us)
 		monitor_fault_bits(m), m->calib_invalid ? 1 : 0,
 		squeal_app_init_status());
 	fprintf(stderr, "time_s:");
-	for (i = 0U; i < 5U; i++) {
-		fprintf(stderr, " %s=%.3f", state_name((uint8_t)(i < 4U ? i : 15U)),
+	for (i = 0U; i < MSG_SQUEAL_STATE_SLOTS; i++) {
+		fprintf(stderr, " %s=%.3f",
+			state_name((uint8_t)((i < MSG_SQUEAL_STATE_SLOT_FAULT) ? i : MSG_SQUEAL_STATE_FAULT)),
 			(double)state_us[i] / 1e6);
 	}
 	fprintf(stderr, "\n");
@@ -308,7 +303,7 @@ int cmd_ecu(int argc, char **argv)
 {
 	ecu_args_t a;
 	hal_linux_can_opts_t opts;
-	uint64_t state_us[5] = { 0U, 0U, 0U, 0U, 0U };
+	uint64_t state_us[MSG_SQUEAL_STATE_SLOTS] = { 0U, 0U, 0U, 0U, 0U };
 	uint64_t t_start;
 	uint64_t t_prev;
 	uint64_t t_end = UINT64_MAX;
@@ -363,7 +358,7 @@ int cmd_ecu(int argc, char **argv)
 		const monitor_t *m = squeal_app_monitor();
 		const uint64_t now = hal_time_us();
 
-		state_us[state_slot(state)] += now - t_prev;
+		state_us[msg_squeal_state_slot(state)] += now - t_prev;
 		t_prev = now;
 		if ((m->state != state) || (m->warning != warning)) {
 			if (a.verbose) {

@@ -4,38 +4,60 @@
  * fed from a candump -L log in virtual time (hal_vbus), offline and
  * deterministic.
  *
- * Time: the first frame's timestamp (microseconds; a 9-digit log is
+ * Time: the earliest frame's timestamp (microseconds; a 9-digit log is
  * truncated to us, the firmware's resolution) starts the firmware. Before
  * each frame, every 1 ms tick up to the frame's time is run (set the virtual
  * clock, poll, take what the ECU sent); then the clock is set to the frame's
  * time, the frame is offered to the CAN controller and the firmware polls
- * once more. After the last frame the ticks go on for --tail-ms (default
- * 100 ms: ten SquealStatus periods, enough for the status after the last
- * input and for the staleness timeout of 30 ms to show). Nothing depends on
- * the wall clock, so the same log gives the same bytes.
+ * once more. The replay ends with the first tick after the last frame (the
+ * one that takes that frame in), so the final state is the one the last
+ * inputs gave; --tail-ms MS runs on for MS more (default 0). Nothing depends
+ * on the wall clock, so the same log gives the same bytes.
  *
- * A timestamp earlier than the current virtual time is reported and the
- * frame is given at the current time (time never goes back). A jump back of
- * more than SEGMENT_BACK_US (1 s: a logger that restarted) starts a new
- * segment instead: the log's time from there on is re-based onto the
- * current virtual time, so the frames that follow keep their spacing;
- * segments are counted and reported. A gap longer
- * than --max-gap seconds (default 3600) is reported and skipped: the clock
- * jumps, without the ticks in between (a mix of relative and absolute
- * timestamps would otherwise tick for decades).
+ * Order: frames are held in a reorder window of REORDER_WINDOW_US (5 s of
+ * log time) and at most REORDER_FRAMES (32768) frames, and given in time
+ * order (file order among equal times). So
+ *   - a frame up to 1 s earlier than the latest one (interleaved
+ *     interfaces, a logger's jitter) is put in its place;
+ *   - a block written out of order (time jumps back by more than 1 s and
+ *     returns to where it was: a forward jump of more than
+ *     DETOUR_RETURN_STEP_US, 100 ms, that lands no more than 1 s before the
+ *     time it left) is put back in its place;
+ *   - a logger that restarted (time jumps back by more than 1 s and goes on
+ *     from there: beyond the window, past the time it left without such a
+ *     jump, or still running when the log or the window ends) starts a new
+ *     segment: the log's time from there on is re-based onto the latest
+ *     time seen, so the frames that follow keep their spacing.
+ * Frames put back in order and out-of-order blocks are counted
+ * (`reordered`), segments are counted and reported with their line. A frame
+ * the window could not place (the window was full) is reported, counted
+ * (time_backwards) and given at the current time: time never goes back.
+ * A gap up to --max-gap seconds (default 3600) is simulated: time passes,
+ * inputs go stale, the ECU goes on sending. A longer gap is reported and
+ * skipped: the clock jumps, without the ticks in between (a mix of relative
+ * and absolute timestamps would otherwise tick for decades).
  *
- * Buses: without --bus every frame of the log is on the firmware's bus 0 (as
- * on a single-bus ECU); with --bus NAME the frames of interface NAME are
- * bus 0 and those of every other interface bus 1, so a two-bus log replays
- * with the calibration's input_bus/output_bus. Frames of a bus the firmware
- * uses neither for input nor output are counted (other_bus), not offered.
+ * Buses: the inputs come from one interface of the log: --bus NAME, else
+ * the calibration's input_iface. Its frames are the firmware's input_bus,
+ * every other interface's the other bus (so a two-bus log replays with the
+ * calibration's input_bus/output_bus); frames of a bus the firmware uses
+ * neither for input nor output are counted (other_bus), not offered. With
+ * neither, every frame is on bus 0 (a single-bus ECU), but when the input
+ * map's identifiers arrive on more than one interface, the first interface
+ * on which one arrived is the input interface: the replay says so once and
+ * counts the input-identifier frames of the other interfaces it ignores
+ * (other_iface_inputs).
  *
  * Output: every frame the ECU sends, as candump -L lines on stdout, named
- * after the bus it was sent on: bus 0 is --bus NAME (or the log's first
- * interface), bus 1 the first other interface of the log ("bus1" until one
- * is seen); --iface-out NAME names every output line instead. The summary
- * goes to stderr.
- * Memory is constant: the log is streamed line by line.
+ * after the bus it was sent on: the input interface (or the log's first
+ * interface) for the input bus, the first other interface of the log for
+ * the other ("bus1" until one is seen); --iface-out NAME names every output
+ * line instead. The summary goes to stderr: per corner, each input by its
+ * position, quantity and DBC signal (`FL speed WHEEL_SPEEDS.WHEEL_SPEED_FL`;
+ * the [input] section's name without a signal; DiscSpeed and PadForce for
+ * the legacy calibration), frames used and rejected by the input stage's
+ * reasons, the share of time in each state and the time in FAULT by reason.
+ * Memory is constant: the log is streamed line by line through the window.
  */
 #include <errno.h>
 #include <getopt.h>
@@ -47,6 +69,7 @@
 
 #include "calib.h"
 #include "calib_text.h"
+#include "input_rx.h"
 #include "candump_log.h"
 #include "hal_vbus.h"
 #include "json_writer.h"
@@ -57,9 +80,13 @@
 #include "squeal_msgs.h"
 
 #define TICK_US 1000U
-#define SEGMENT_BACK_US 1000000U /* a jump back beyond this starts a segment */
+#define SEGMENT_BACK_US 1000000U /* a jump back beyond this: a block or a restart */
+#define REORDER_WINDOW_US 5000000U /* log time a frame may arrive late by */
+#define REORDER_FRAMES 32768U      /* frames held at most (5 s at 6500 frames/s) */
+#define DETOUR_RETURN_STEP_US 100000U /* a forward jump that ends a late block */
+#define IFACES_MAX 16U             /* interfaces told apart (more share the last) */
 #define SEGMENT_POINTS_MAX 64U /* rebase points kept for the JSON (memory stays constant) */
-#define N_STATES 5U /* stable, bistable, unstable, not sliding, fault */
+#define N_STATES MSG_SQUEAL_STATE_SLOTS /* stable, bistable, unstable, not sliding, fault */
 #define N_LEVELS 4U
 
 static const char *const level_names[N_LEVELS] = {
@@ -70,9 +97,10 @@ typedef struct {
 	const char *log_name;
 	const char *calib_path;
 	const char *iface_out;
-	const char *bus_name; /* the log interface that is bus 0; NULL: all */
 	uint64_t tail_us;
 	uint64_t max_gap_us;
+	const char *input_iface;  /* --bus NAME, else the calibration's, else NULL */
+	bool input_iface_from_bus; /* chosen by --bus */
 	bool rss;
 	const char *summary_json; /* --summary-json FILE|- (replay_summary.h) */
 	bool no_output;           /* --no-output: no frame lines, only counts */
@@ -85,6 +113,34 @@ typedef struct {
 	uint64_t back_us;
 	uint64_t at_us;
 } segment_point_t;
+
+/* A frame waiting in the reorder window (classic, RTR, error; FD and XL
+ * frames keep only their kind: they are counted, not given). */
+typedef struct {
+	uint64_t t_us;       /* log time, re-based                            */
+	uint64_t seq;        /* read order: ties keep the file's order        */
+	uint64_t line_no;
+	uint32_t id;
+	uint8_t iface;       /* index in replay_t.ifaces                      */
+	uint8_t kind;        /* candump_kind_t                                */
+	uint8_t len;
+	bool ext;
+	bool detour;         /* read after a jump back not yet decided        */
+	uint8_t data[HAL_CAN_MAX_DLEN];
+} held_t;
+
+/* Per corner: reasons by the input stage's own names, time per state and
+ * the time in FAULT with each input fault (INPUT_FAULT_* bit b). */
+#define N_FAULT_BITS 4U
+static const char *const fault_bit_names[N_FAULT_BITS] = {
+	"stale", "e2e", "implausible", "never_seen"
+};
+typedef struct {
+	uint64_t reason[2][INPUT_RX_REASON_COUNT]; /* [speed, force][reason] */
+	uint64_t state_us[N_STATES];
+	uint64_t fault_us[2][N_FAULT_BITS];
+	uint64_t fault_other_us;   /* FAULT without an input fault (calibration, platform) */
+} corner_stats_t;
 
 typedef struct {
 	/* lines */
@@ -119,6 +175,33 @@ typedef struct {
 	uint8_t warning;
 	uint64_t into_level[N_LEVELS];
 	uint64_t transitions[N_STATES][N_STATES];
+	/* the reorder window: a binary min-heap on (t_us, seq) */
+	held_t held[REORDER_FRAMES];
+	uint32_t n_held;
+	uint64_t seq;
+	bool have_max;
+	uint64_t max_seen_us;      /* latest time read (not counting a detour)  */
+	uint64_t prev_t_us;        /* time of the frame read before             */
+	bool detour;               /* a jump back > 1 s, not yet decided        */
+	uint64_t jump_from_us;     /* the time it left                          */
+	uint64_t detour_first_us;  /* the first frame after the jump            */
+	uint64_t detour_line;
+	uint64_t detour_frames;
+	uint64_t reordered;        /* frames given earlier than read            */
+	uint64_t reordered_blocks; /* blocks written out of order, put back     */
+	bool init_failed;          /* firmware_init refused the given calibration */
+	/* interfaces of the log, by first appearance */
+	char ifaces[IFACES_MAX][CANDUMP_IFACE_MAX + 1U];
+	uint32_t n_ifaces;
+	bool iface_has_inputs[IFACES_MAX];
+	bool auto_input;           /* an input interface was taken (no choice given) */
+	uint8_t auto_iface;
+	bool multi_reported;
+	uint64_t other_iface_inputs; /* input-identifier frames of other interfaces */
+	/* names of the inputs (calib_names_t), per corner statistics */
+	calib_names_t names;
+	bool map_form;             /* [input]/[corner] sections: names apply */
+	corner_stats_t cs[CALIB_MAX_CORNERS];
 	/* output: the name of each bus in the output log */
 	char iface[HAL_CAN_BUSES][CANDUMP_IFACE_MAX + 1U];
 	bool bus1_named;
@@ -128,11 +211,6 @@ typedef struct {
 	bool no_output;
 	replay_summary_t *summary; /* NULL without --summary-json */
 } replay_t;
-
-static unsigned state_index(uint8_t s)
-{
-	return (s < 4U) ? s : 4U;
-}
 
 static void replay_usage(FILE *f)
 {
@@ -147,15 +225,22 @@ static void replay_usage(FILE *f)
 		"raised, state changes. Malformed lines are reported as LOG:LINE: message\n"
 		"and skipped. The same log gives the same output, byte for byte.\n\n"
 		"  --calib FILE     calibration text file (docs/calib-example.txt)\n"
-		"  --bus NAME       the log's interface NAME is the firmware's bus 0, every\n"
-		"                   other interface bus 1 (calibration input_bus and\n"
-		"                   output_bus pick); default: all frames on bus 0\n"
+		"  --bus NAME       the inputs come from the log's interface NAME (the\n"
+		"                   calibration's input_bus), every other interface is\n"
+		"                   the other bus; default: the calibration's input_iface,\n"
+		"                   else all frames on bus 0 with the inputs from the first\n"
+		"                   interface that carries one (said so when several do)\n"
 		"  --iface-out NAME interface name of the output lines (default: the\n"
-		"                   output bus's: --bus NAME or the log's first\n"
-		"                   interface for bus 0, another of its interfaces for 1)\n"
-		"  --tail-ms MS     run on after the last frame (default 100)\n"
-		"  --max-gap S      a gap between frames longer than S seconds is\n"
-		"                   skipped instead of simulated (default 3600)\n"
+		"                   output bus's: the input interface or the log's first\n"
+		"                   for the input bus, another of its interfaces for the other)\n"
+		"  --tail-ms MS     run on after the last frame (default 0: the replay\n"
+		"                   ends with the tick that takes the last frame in)\n"
+		"  --max-gap S      a gap between frames up to S seconds is simulated\n"
+		"                   (time passes, inputs go stale); a longer one is\n"
+		"                   skipped (default 3600)\n\n"
+		"Frames out of time order are put back in order within a window of 5 s of\n"
+		"log time (32768 frames); a jump back of more than 1 s that does not return\n"
+		"to where it left is a logger restart: a new segment, re-based.\n"
 		"  --rss            add the peak resident memory (VmHWM) to the summary\n"
 		"  --summary-json FILE  also write the summary as one JSON document, with\n"
 		"                   the episodes (time spans in one state per corner) and\n"
@@ -164,7 +249,7 @@ static void replay_usage(FILE *f)
 		"  --no-output      do not write the ECU's frames (only count them)\n\n"
 		"CAN FD and XL frames are counted as unsupported (classic controller).\n"
 		"Exit status: 0 done (also with malformed lines), 1 input/calibration\n"
-		"error, 2 bad usage.\n");
+		"error or no CAN frame in the log, 2 bad usage.\n");
 }
 
 static int parse_u64(const char *flag, const char *text, uint64_t max, uint64_t *out)
@@ -202,7 +287,7 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 	uint64_t v;
 	int c;
 
-	a->tail_us = 100000U;
+	a->tail_us = 0U;
 	a->max_gap_us = 3600ULL * 1000000ULL;
 	optind = 1;
 	while ((c = getopt_long(argc, argv, "h", options, NULL)) != -1) {
@@ -219,7 +304,8 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 				return 2;
 			}
 			if (c == OPT_BUS) {
-				a->bus_name = optarg;
+				a->input_iface = optarg;
+				a->input_iface_from_bus = true;
 			} else {
 				a->iface_out = optarg;
 			}
@@ -317,8 +403,8 @@ static void after_poll(replay_t *r)
 			emit(r, bus, &f);
 		}
 	}
-	from = state_index(r->state);
-	to = state_index(m->state);
+	from = msg_squeal_state_slot(r->state);
+	to = msg_squeal_state_slot(m->state);
 	if (from != to) {
 		r->transitions[from][to]++;
 	}
@@ -329,12 +415,44 @@ static void after_poll(replay_t *r)
 	r->warning = m->warning;
 }
 
+/* The time from now to t_us counts, per corner, for the state that held and,
+ * in FAULT, for each input fault that caused it. */
+static void account_corners(replay_t *r, uint64_t dt)
+{
+	uint32_t k;
+
+	for (k = 0U; (k < squeal_app_corner_count()) && (k < CALIB_MAX_CORNERS); k++) {
+		const monitor_t *c = squeal_app_corner(k);
+		corner_stats_t *cs = &r->cs[k];
+		const uint32_t slot = msg_squeal_state_slot(c->state);
+		const uint32_t faults[2] = { c->speed.faults, c->force.faults };
+		unsigned j;
+		unsigned b;
+
+		cs->state_us[slot] += dt;
+		if (slot != MSG_SQUEAL_STATE_SLOT_FAULT) {
+			continue;
+		}
+		if ((faults[0] | faults[1]) == 0U) {
+			cs->fault_other_us += dt;
+		}
+		for (j = 0U; j < 2U; j++) {
+			for (b = 0U; b < N_FAULT_BITS; b++) {
+				if ((faults[j] & (1U << b)) != 0U) {
+					cs->fault_us[j][b] += dt;
+				}
+			}
+		}
+	}
+}
+
 /* Move the virtual clock to t_us (never back); the time in between counts
  * for the state that held during it. */
 static void set_time(replay_t *r, uint64_t t_us)
 {
 	if (t_us > r->now_us) {
-		r->state_us[state_index(r->state)] += t_us - r->now_us;
+		r->state_us[msg_squeal_state_slot(r->state)] += t_us - r->now_us;
+		account_corners(r, t_us - r->now_us);
 		r->now_us = t_us;
 		hal_vbus_set_time_us(t_us);
 	}
@@ -352,26 +470,56 @@ static void run_until(replay_t *r, uint64_t t_us)
 	set_time(r, t_us);
 }
 
-static void start(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
+/* The calibration's input bus, and the bus of every other interface. */
+static uint8_t input_bus(void)
+{
+	return squeal_app_monitor()->cal->input_bus;
+}
+
+static uint8_t other_bus_of(uint8_t in_bus)
+{
+	return (in_bus == 0U) ? 1U : 0U;
+}
+
+static void start(replay_t *r, const held_t *h, const replay_args_t *a)
 {
 	const monitor_t *m;
+	const char *first = r->ifaces[h->iface];
 
 	r->started = true;
-	r->t0_us = f->t_ns / 1000U;
+	r->t0_us = h->t_us;
 	r->now_us = r->t0_us;
 	r->next_tick_us = r->t0_us;
 	hal_vbus_set_time_us(r->t0_us);
+	if ((squeal_app_init() != SQ_OK) && (a->calib_path != NULL)) {
+		/* the loader accepted the file, the firmware did not: never run
+		 * a given calibration's log on the defaults */
+		r->init_failed = true;
+		return;
+	}
+	m = squeal_app_monitor();
 	if (a->iface_out != NULL) {
 		(void)snprintf(r->iface[0], sizeof(r->iface[0]), "%s", a->iface_out);
 		(void)snprintf(r->iface[1], sizeof(r->iface[1]), "%s", a->iface_out);
 		r->bus1_named = true;
+	} else if (a->input_iface != NULL) {
+		const uint8_t in = input_bus();
+
+		uint32_t i;
+
+		(void)snprintf(r->iface[in], sizeof(r->iface[in]), "%s", a->input_iface);
+		(void)snprintf(r->iface[other_bus_of(in)], sizeof(r->iface[0]), "%s", "bus1");
+		/* the window has read ahead: the first other interface of the log */
+		for (i = 0U; (i < r->n_ifaces) && !r->bus1_named; i++) {
+			if (strcmp(r->ifaces[i], a->input_iface) != 0) {
+				memcpy(r->iface[other_bus_of(in)], r->ifaces[i], sizeof(r->iface[0]));
+				r->bus1_named = true;
+			}
+		}
 	} else {
-		(void)snprintf(r->iface[0], sizeof(r->iface[0]), "%s",
-			       (a->bus_name != NULL) ? a->bus_name : f->iface);
+		(void)snprintf(r->iface[0], sizeof(r->iface[0]), "%s", first);
 		(void)snprintf(r->iface[1], sizeof(r->iface[1]), "%s", "bus1");
 	}
-	(void)squeal_app_init();
-	m = squeal_app_monitor();
 	if (r->summary != NULL) {
 		uint32_t k;
 
@@ -389,32 +537,123 @@ static void start(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
 	r->warning = m->warning;
 }
 
-/* The firmware bus of a log frame (see the top of this file). */
-static uint8_t bus_of_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
+static bool carries_id(const input_rx_cfg_t *cfg, const hal_can_frame_t *f)
 {
-	if ((a->bus_name == NULL) || (strcmp(f->iface, a->bus_name) == 0)) {
-		return 0U;
-	}
-	if (!r->bus1_named) {
-		(void)snprintf(r->iface[1], sizeof(r->iface[1]), "%s", f->iface);
-		r->bus1_named = true;
-	}
-	return 1U;
+	return (cfg->desc.id == f->id) &&
+	       (((cfg->desc.flags & CALIB_IN_EXTENDED) != 0U) ==
+		((f->flags & HAL_CAN_FLAG_EXT) != 0U)) &&
+	       ((f->flags & (HAL_CAN_FLAG_ERR | HAL_CAN_FLAG_RTR)) == 0U);
 }
 
-static void give_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a)
+/* Does the frame have the identifier of an input of any corner? */
+static bool is_input_frame(const hal_can_frame_t *f)
 {
-	const calib_t *cal = squeal_app_monitor()->cal;
-	const uint8_t bus = bus_of_frame(r, f, a);
-	hal_can_frame_t hf;
-	int rc;
+	uint32_t k;
 
-	if ((bus != cal->input_bus) && (bus != cal->output_bus)) {
-		r->other_bus++; /* a bus the firmware does not use */
+	for (k = 0U; k < squeal_app_corner_count(); k++) {
+		const monitor_t *c = squeal_app_corner(k);
+
+		if (carries_id(&c->speed_rx, f) || carries_id(&c->force_rx, f)) {
+			return true;
+		}
+	}
+	return false;
+}
+
+/* The firmware bus of a log frame (see the top of this file); false: the
+ * frame is ignored (an input identifier of an interface that is not the
+ * input interface, counted). */
+static bool bus_of_frame(replay_t *r, const held_t *h, const hal_can_frame_t *hf,
+			 const replay_args_t *a, uint8_t *bus)
+{
+	const char *name = r->ifaces[h->iface];
+
+	if (a->input_iface != NULL) {
+		const uint8_t in = input_bus();
+
+		if (strcmp(name, a->input_iface) == 0) {
+			*bus = in;
+			return true;
+		}
+		*bus = other_bus_of(in);
+		if (!r->bus1_named) {
+			memcpy(r->iface[*bus], name, sizeof(r->iface[0]));
+			r->bus1_named = true;
+		}
+		return true;
+	}
+	*bus = 0U;
+	if (!is_input_frame(hf)) {
+		return true;
+	}
+	if (!r->iface_has_inputs[h->iface]) {
+		r->iface_has_inputs[h->iface] = true;
+		if (!r->auto_input) {
+			r->auto_input = true;
+			r->auto_iface = h->iface;
+		} else if (!r->multi_reported) {
+			r->multi_reported = true;
+			fprintf(stderr, "%s:%llu: the input identifiers arrive on %s and %s: the inputs are taken from %s (the first that carried one), the other's are ignored; --bus NAME or input_iface chooses\n",
+				a->log_name, (unsigned long long)h->line_no, r->ifaces[r->auto_iface],
+				name, r->ifaces[r->auto_iface]);
+		}
+	}
+	if (h->iface != r->auto_iface) {
+		r->other_iface_inputs++;
+		return false;
+	}
+	return true;
+}
+
+/* What the input stage makes of a frame for one input of corner c, from
+ * the monitor's own E2E and rate state before it takes the frame (the
+ * same functions in the same order as monitor.c's input_frame). */
+static void count_reason(corner_stats_t *cs, unsigned j, const input_rx_cfg_t *cfg,
+			 const input_t *in, const hal_can_frame_t *f)
+{
+	e2e_p01_rx_t e2e = in->e2e;
+	bool has_prev = in->has_prev_raw;
+	int64_t prev = in->prev_raw;
+	bool id_only = false;
+	input_rx_result_t res;
+	input_rx_reason_t why;
+
+	if (!input_rx_matches(cfg, f, &id_only)) {
 		return;
 	}
+	res = input_rx_frame(cfg, &e2e, f);
+	why = (input_rx_reason_t)res.reason;
+	if ((why == INPUT_RX_OK) && !input_rx_plausible(cfg, &has_prev, &prev, res.value)) {
+		why = INPUT_RX_IMPLAUSIBLE;
+	}
+	if ((uint32_t)why < (uint32_t)INPUT_RX_REASON_COUNT) {
+		cs->reason[j][why]++;
+	}
+}
 
-	switch (f->kind) {
+static void count_reasons(replay_t *r, const hal_can_frame_t *f)
+{
+	uint32_t k;
+
+	if ((f->flags & HAL_CAN_FLAG_ERR) != 0U) {
+		return;
+	}
+	for (k = 0U; (k < squeal_app_corner_count()) && (k < CALIB_MAX_CORNERS); k++) {
+		const monitor_t *c = squeal_app_corner(k);
+
+		count_reason(&r->cs[k], 0U, &c->speed_rx, &c->speed, f);
+		count_reason(&r->cs[k], 1U, &c->force_rx, &c->force, f);
+	}
+}
+
+static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
+{
+	const calib_t *cal = squeal_app_monitor()->cal;
+	hal_can_frame_t hf;
+	uint8_t bus = 0U;
+	int rc;
+
+	switch ((candump_kind_t)h->kind) {
 	case CANDUMP_KIND_FD:
 		r->unsupported_fd++;
 		return;
@@ -425,17 +664,24 @@ static void give_frame(replay_t *r, const candump_frame_t *f, const replay_args_
 		break;
 	}
 	memset(&hf, 0, sizeof(hf));
-	hf.id = f->id;
-	hf.dlc = (f->len > HAL_CAN_MAX_DLEN) ? (uint8_t)HAL_CAN_MAX_DLEN : f->len;
-	if (f->kind == CANDUMP_KIND_RTR) {
+	hf.id = h->id;
+	hf.dlc = (h->len > HAL_CAN_MAX_DLEN) ? (uint8_t)HAL_CAN_MAX_DLEN : h->len;
+	if (h->kind == (uint8_t)CANDUMP_KIND_RTR) {
 		hf.flags |= HAL_CAN_FLAG_RTR;
 	} else {
-		memcpy(hf.data, f->data, hf.dlc);
+		memcpy(hf.data, h->data, hf.dlc);
 	}
-	if (f->kind == CANDUMP_KIND_ERROR) {
+	if (h->kind == (uint8_t)CANDUMP_KIND_ERROR) {
 		hf.flags |= HAL_CAN_FLAG_ERR;
-	} else if (f->ext) {
+	} else if (h->ext) {
 		hf.flags |= HAL_CAN_FLAG_EXT;
+	}
+	if (!bus_of_frame(r, h, &hf, a, &bus)) {
+		return;
+	}
+	if ((bus != cal->input_bus) && (bus != cal->output_bus)) {
+		r->other_bus++; /* a bus the firmware does not use */
+		return;
 	}
 	hf.timestamp_us = r->now_us; /* arrives now */
 	rc = hal_vbus_rx_push(bus, &hf);
@@ -454,38 +700,33 @@ static void give_frame(replay_t *r, const candump_frame_t *f, const replay_args_
 		return;
 	}
 	r->pushed++;
+	if (bus == cal->input_bus) {
+		count_reasons(r, &hf);
+	}
 	(void)squeal_app_poll();
 	after_poll(r);
 }
 
-static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a,
-		     uint64_t line_no)
+/* A frame leaves the window, in time order: the clock goes to its time. */
+static void release(replay_t *r, const held_t *h, const replay_args_t *a)
 {
-	uint64_t t_us;
+	uint64_t t_us = h->t_us;
 
-	if (!r->started) {
-		start(r, f, a);
+	if (r->init_failed) {
+		return;
 	}
-	t_us = (uint64_t)((int64_t)(f->t_ns / 1000U) + r->rebase_us);
-	if ((t_us < r->now_us) && (r->now_us - t_us > SEGMENT_BACK_US)) {
-		const uint64_t back = r->now_us - t_us;
-
-		if (r->segments < SEGMENT_POINTS_MAX) {
-			r->segment_at[r->segments] = (segment_point_t){ line_no, back, r->now_us };
+	if (!r->started) {
+		start(r, h, a);
+		if (r->init_failed) {
+			return;
 		}
-		r->segments++;
-		r->rebase_us += (int64_t)back;
-		fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s: new segment %llu, log time re-based\n",
-			a->log_name, (unsigned long long)line_no,
-			(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U),
-			(unsigned long long)(r->segments + 1U));
-		t_us = r->now_us;
-	} else if (t_us < r->now_us) {
+	}
+	if (t_us < r->now_us) {
 		const uint64_t back = r->now_us - t_us;
 
 		r->backwards++;
-		fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s: frame given at the current time\n",
-			a->log_name, (unsigned long long)line_no,
+		fprintf(stderr, "%s:%llu: timestamp %llu.%06llu s behind, beyond the reorder window: frame given at the current time\n",
+			a->log_name, (unsigned long long)h->line_no,
 			(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U));
 		t_us = r->now_us;
 	} else if (t_us - r->now_us > a->max_gap_us) {
@@ -493,14 +734,277 @@ static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t 
 
 		r->gaps++;
 		fprintf(stderr, "%s:%llu: gap of %llu.%06llu s > --max-gap: skipped, not simulated\n",
-			a->log_name, (unsigned long long)line_no,
+			a->log_name, (unsigned long long)h->line_no,
 			(unsigned long long)(gap / 1000000U), (unsigned long long)(gap % 1000000U));
 		/* keep the tick grid's phase */
 		r->next_tick_us += ((t_us - r->next_tick_us) / TICK_US) * TICK_US;
 		set_time(r, t_us);
 	}
 	run_until(r, t_us);
-	give_frame(r, f, a);
+	give_frame(r, h, a);
+}
+
+/* ---- the reorder window ------------------------------------------------------ */
+
+static bool held_before(const held_t *x, const held_t *y)
+{
+	return (x->t_us < y->t_us) || ((x->t_us == y->t_us) && (x->seq < y->seq));
+}
+
+static void heap_down(replay_t *r, uint32_t i)
+{
+	for (;;) {
+		const uint32_t left = (2U * i) + 1U;
+		uint32_t best = i;
+		held_t tmp;
+
+		if ((left < r->n_held) && held_before(&r->held[left], &r->held[best])) {
+			best = left;
+		}
+		if ((left + 1U < r->n_held) && held_before(&r->held[left + 1U], &r->held[best])) {
+			best = left + 1U;
+		}
+		if (best == i) {
+			return;
+		}
+		tmp = r->held[i];
+		r->held[i] = r->held[best];
+		r->held[best] = tmp;
+		i = best;
+	}
+}
+
+static void heap_push(replay_t *r, const held_t *h)
+{
+	uint32_t i = r->n_held++;
+
+	r->held[i] = *h;
+	while (i > 0U) {
+		const uint32_t up = (i - 1U) / 2U;
+		held_t tmp;
+
+		if (!held_before(&r->held[i], &r->held[up])) {
+			break;
+		}
+		tmp = r->held[i];
+		r->held[i] = r->held[up];
+		r->held[up] = tmp;
+		i = up;
+	}
+}
+
+static void heap_pop(replay_t *r, held_t *out)
+{
+	*out = r->held[0];
+	r->n_held--;
+	r->held[0] = r->held[r->n_held];
+	heap_down(r, 0U);
+}
+
+/* The frames read after the jump back were a restart: they move, with the
+ * rest of the log, onto the time the log left (a new segment). */
+static void detour_restart(replay_t *r, const replay_args_t *a)
+{
+	const uint64_t back = r->jump_from_us - r->detour_first_us;
+	uint32_t i;
+
+	for (i = 0U; i < r->n_held; i++) {
+		if (r->held[i].detour) {
+			r->held[i].t_us += back;
+			r->held[i].detour = false;
+		}
+	}
+	for (i = r->n_held / 2U; i > 0U; i--) {
+		heap_down(r, i - 1U);
+	}
+	if (r->segments < SEGMENT_POINTS_MAX) {
+		r->segment_at[r->segments] = (segment_point_t){ r->detour_line, back, r->jump_from_us };
+	}
+	r->segments++;
+	r->rebase_us += (int64_t)back;
+	r->prev_t_us += back;
+	if (r->prev_t_us > r->max_seen_us) {
+		r->max_seen_us = r->prev_t_us;
+	}
+	r->detour = false;
+	fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s: new segment %llu, log time re-based\n",
+		a->log_name, (unsigned long long)r->detour_line,
+		(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U),
+		(unsigned long long)(r->segments + 1U));
+}
+
+/* The frames read after the jump back were a block written out of order:
+ * they stay where their times put them. */
+static void detour_reordered(replay_t *r, const replay_args_t *a, uint64_t line_no)
+{
+	const uint64_t back = r->jump_from_us - r->detour_first_us;
+	uint32_t i;
+
+	for (i = 0U; i < r->n_held; i++) {
+		r->held[i].detour = false;
+	}
+	r->reordered += r->detour_frames;
+	r->reordered_blocks++;
+	r->detour = false;
+	fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s and returns at line %llu: a block of %llu frames written out of order, put back in order\n",
+		a->log_name, (unsigned long long)r->detour_line,
+		(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U),
+		(unsigned long long)line_no, (unsigned long long)r->detour_frames);
+}
+
+/* Give every frame the window need not hold any longer (all with force). */
+static void release_due(replay_t *r, const replay_args_t *a, bool all)
+{
+	held_t h;
+
+	while (r->n_held > 0U) {
+		if (!all && (r->n_held < REORDER_FRAMES) &&
+		    (r->held[0].t_us + REORDER_WINDOW_US > r->max_seen_us)) {
+			return;
+		}
+		if (r->detour) {
+			/* full while a late block is open: take it as a restart */
+			detour_restart(r, a);
+		}
+		heap_pop(r, &h);
+		release(r, &h, a);
+	}
+}
+
+static uint8_t iface_index(replay_t *r, const char *name)
+{
+	uint32_t i;
+
+	for (i = 0U; i < r->n_ifaces; i++) {
+		if (strcmp(r->ifaces[i], name) == 0) {
+			return (uint8_t)i;
+		}
+	}
+	if (r->n_ifaces < IFACES_MAX) {
+		(void)snprintf(r->ifaces[r->n_ifaces], sizeof(r->ifaces[0]), "%s", name);
+		r->n_ifaces++;
+	}
+	return (uint8_t)(r->n_ifaces - 1U);
+}
+
+/* One frame read from the log: into the window (see the top of the file). */
+static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a,
+		     uint64_t line_no)
+{
+	held_t h;
+	uint64_t t_us;
+
+	memset(&h, 0, sizeof(h));
+	h.seq = r->seq++;
+	h.line_no = line_no;
+	h.id = f->id;
+	h.iface = iface_index(r, f->iface);
+	h.kind = (uint8_t)f->kind;
+	h.len = f->len;
+	h.ext = f->ext;
+	memcpy(h.data, f->data, HAL_CAN_MAX_DLEN);
+	t_us = (uint64_t)((int64_t)(f->t_ns / 1000U) + r->rebase_us);
+	if (r->detour) {
+		if (t_us + SEGMENT_BACK_US < r->prev_t_us) {
+			detour_restart(r, a); /* back again: the first was a restart */
+			t_us = (uint64_t)((int64_t)(f->t_ns / 1000U) + r->rebase_us);
+		} else if ((t_us + SEGMENT_BACK_US >= r->jump_from_us) &&
+			   (t_us > r->prev_t_us + DETOUR_RETURN_STEP_US)) {
+			detour_reordered(r, a, line_no); /* it returned */
+		} else if (t_us > r->jump_from_us) {
+			detour_restart(r, a); /* it went on past where it left */
+			t_us = (uint64_t)((int64_t)(f->t_ns / 1000U) + r->rebase_us);
+		} else {
+			h.t_us = t_us;
+			h.detour = true;
+			r->detour_frames++;
+			r->prev_t_us = t_us;
+			heap_push(r, &h);
+			release_due(r, a, false);
+			return;
+		}
+	}
+	if (r->have_max && (t_us + SEGMENT_BACK_US < r->max_seen_us)) {
+		if (t_us + REORDER_WINDOW_US < r->max_seen_us) {
+			/* beyond the window: a restart at once */
+			r->detour_first_us = t_us;
+			r->jump_from_us = r->max_seen_us;
+			r->detour_line = line_no;
+			r->detour_frames = 0U;
+			r->prev_t_us = t_us;
+			r->detour = true;
+			detour_restart(r, a);
+			t_us = r->max_seen_us;
+		} else {
+			r->detour = true;
+			r->jump_from_us = r->max_seen_us;
+			r->detour_first_us = t_us;
+			r->detour_line = line_no;
+			r->detour_frames = 1U;
+			h.t_us = t_us;
+			h.detour = true;
+			r->prev_t_us = t_us;
+			heap_push(r, &h);
+			release_due(r, a, false);
+			return;
+		}
+	} else if (r->have_max && (t_us < r->max_seen_us)) {
+		r->reordered++; /* a little late: put in its place */
+	}
+	h.t_us = t_us;
+	r->prev_t_us = t_us;
+	if (!r->have_max || (t_us > r->max_seen_us)) {
+		r->max_seen_us = t_us;
+		r->have_max = true;
+	}
+	heap_push(r, &h);
+	release_due(r, a, false);
+}
+
+/* After the last line: an open late block went on to the end (a restart);
+ * every frame held is given. */
+static void end_of_log(replay_t *r, const replay_args_t *a)
+{
+	if (r->detour) {
+		detour_restart(r, a);
+	}
+	release_due(r, a, true);
+}
+
+/* ---- names ------------------------------------------------------------------- */
+
+static const char *const pos_names[4] = { "FL", "FR", "RL", "RR" };
+static const char *const qty_names[2] = { "speed", "force" };
+
+/* Input j (0 speed, 1 force) of corner k in the vehicle's words:
+ * "FL speed WHEEL_SPEEDS.WHEEL_SPEED_FL" (the input's DBC signal, else its
+ * [input] section's name); DiscSpeed / PadForce for the legacy form. */
+static void input_label(const replay_t *r, uint32_t k, unsigned j, char *buf, size_t len)
+{
+	const monitor_t *c = squeal_app_corner(k);
+	const calib_t *cal = c->cal;
+	uint32_t idx;
+	const char *what;
+
+	if (!r->map_form || (cal->n_corners == 0U) || (c->corner_index >= cal->n_corners)) {
+		(void)snprintf(buf, len, "%s", (j == 0U) ? "DiscSpeed" : "PadForce");
+		return;
+	}
+	idx = (j == 0U) ? cal->corners[c->corner_index].speed_input :
+			  cal->corners[c->corner_index].force_input;
+	what = "?";
+	if (idx < CALIB_MAX_INPUTS) {
+		what = (r->names.signal[idx][0] != '\0') ? r->names.signal[idx] : r->names.input[idx];
+	}
+	(void)snprintf(buf, len, "%s %s %s", pos_names[c->corner.pos & 3U], qty_names[j], what);
+}
+
+/* share of total in percent, one decimal */
+static void print_share(FILE *o, uint64_t part, uint64_t total)
+{
+	const uint64_t pm = (total == 0U) ? 0U : ((part * 1000U) + (total / 2U)) / total;
+
+	fprintf(o, "%llu.%llu %%", (unsigned long long)(pm / 10U), (unsigned long long)(pm % 10U));
 }
 
 /* ---- summary ------------------------------------------------------------------- */
@@ -530,6 +1034,55 @@ static long vm_hwm_kb(void)
 	return kb;
 }
 
+/* One corner: final state, share of time per state, each input's frames
+ * used and rejected by the input stage's reasons, the time in FAULT by
+ * reason. */
+static void corner_summary(FILE *o, const replay_t *r, uint32_t k)
+{
+	const monitor_t *c = squeal_app_corner(k);
+	const corner_stats_t *cs = &r->cs[k];
+	const input_counters_t *cnt[2] = { &c->speed.count, &c->force.count };
+	uint64_t total = 0U;
+	char label[96];
+	unsigned s;
+	unsigned j;
+	unsigned q;
+
+	for (s = 0U; s < N_STATES; s++) {
+		total += cs->state_us[s];
+	}
+	fprintf(o, "  corner %s              final %s, time", pos_names[c->corner.pos & 3U],
+		rs_state_name(msg_squeal_state_slot(c->state)));
+	for (s = 0U; s < N_STATES; s++) {
+		fprintf(o, " %s ", rs_state_name(s));
+		print_share(o, cs->state_us[s], total);
+	}
+	fprintf(o, "\n");
+	for (j = 0U; j < 2U; j++) {
+		input_label(r, k, j, label, sizeof(label));
+		fprintf(o, "    %s: frames %u, used %u, rejected", label, cnt[j]->frames, cnt[j]->used);
+		for (q = 1U; q < (unsigned)INPUT_RX_REASON_COUNT; q++) {
+			fprintf(o, " %s %llu", input_rx_reason_name((input_rx_reason_t)q),
+				(unsigned long long)cs->reason[j][q]);
+		}
+		fprintf(o, ", stale events %u\n", cnt[j]->stale_events);
+	}
+	fprintf(o, "    fault time:");
+	for (j = 0U; j < 2U; j++) {
+		input_label(r, k, j, label, sizeof(label));
+		for (q = 0U; q < N_FAULT_BITS; q++) {
+			if (cs->fault_us[j][q] != 0U) {
+				fprintf(o, " %s %s ", label, fault_bit_names[q]);
+				print_us(o, cs->fault_us[j][q]);
+				fprintf(o, " s,");
+			}
+		}
+	}
+	fprintf(o, " without an input fault ");
+	print_us(o, cs->fault_other_us);
+	fprintf(o, " s\n");
+}
+
 static void summary(const replay_t *r, const replay_args_t *a)
 {
 	FILE *o = stderr;
@@ -539,6 +1092,8 @@ static void summary(const replay_t *r, const replay_args_t *a)
 	unsigned i;
 	unsigned j;
 	uint64_t changes = 0U;
+	char l0[96];
+	char l1[96];
 
 	fprintf(o, "replay summary: %s\n", a->log_name);
 	fprintf(o, "  lines                 %llu (frames %llu, comments %llu, blank %llu, dropcount %llu, malformed %llu)\n",
@@ -549,22 +1104,18 @@ static void summary(const replay_t *r, const replay_args_t *a)
 		fprintf(o, "  no frames: the firmware was not started\n");
 		return;
 	}
+	input_label(r, 0U, 0U, l0, sizeof(l0));
+	input_label(r, 0U, 1U, l1, sizeof(l1));
 	fprintf(o, "  virtual_time_s        ");
 	print_us(o, r->now_us - r->t0_us);
 	fprintf(o, " (from ");
 	print_us(o, r->t0_us);
 	fprintf(o, ", tail %llu ms)\n", (unsigned long long)(a->tail_us / 1000U));
 	fprintf(o, "  frames_read           %llu\n", (unsigned long long)r->frames);
-	fprintf(o, "  frames_used           %llu (DiscSpeed %u, PadForce %u)\n",
-		(unsigned long long)sp->used + fo->used, sp->used, fo->used);
-	for (i = 0U; i < squeal_app_corner_count(); i++) {
-		const monitor_t *c = squeal_app_corner(i);
-		static const char *const pos[4] = { "FL", "FR", "RL", "RR" };
-
-		fprintf(o, "  corner %s              inputs used speed %u force %u, implausible %u/%u, final %s\n",
-			pos[c->corner.pos & 3U], c->speed.count.used, c->force.count.used,
-			c->speed.count.implausible, c->force.count.implausible,
-			rs_state_name(state_index(c->state)));
+	fprintf(o, "  frames_used           %llu (%s %u, %s %u)\n",
+		(unsigned long long)sp->used + fo->used, l0, sp->used, l1, fo->used);
+	for (i = 0U; (i < squeal_app_corner_count()) && (i < CALIB_MAX_CORNERS); i++) {
+		corner_summary(o, r, i);
 	}
 	fprintf(o, "  rejected:\n");
 	fprintf(o, "    malformed_lines     %llu\n", (unsigned long long)r->malformed);
@@ -575,33 +1126,39 @@ static void summary(const replay_t *r, const replay_args_t *a)
 	fprintf(o, "    unsupported_fd_xl   %llu (FD %llu, XL %llu)\n",
 		(unsigned long long)(r->unsupported_fd + r->unsupported_xl),
 		(unsigned long long)r->unsupported_fd, (unsigned long long)r->unsupported_xl);
-	fprintf(o, "    e2e_wrong_crc       %llu (DiscSpeed %u, PadForce %u)\n",
-		(unsigned long long)sp->e2e_wrong_crc + fo->e2e_wrong_crc, sp->e2e_wrong_crc,
-		fo->e2e_wrong_crc);
-	fprintf(o, "    e2e_wrong_sequence  %llu (DiscSpeed %u, PadForce %u)\n",
+	fprintf(o, "    e2e_wrong_crc       %llu (%s %u, %s %u)\n",
+		(unsigned long long)sp->e2e_wrong_crc + fo->e2e_wrong_crc, l0, sp->e2e_wrong_crc,
+		l1, fo->e2e_wrong_crc);
+	fprintf(o, "    e2e_wrong_sequence  %llu (%s %u, %s %u)\n",
 		(unsigned long long)sp->e2e_wrong_sequence + fo->e2e_wrong_sequence,
-		sp->e2e_wrong_sequence, fo->e2e_wrong_sequence);
-	fprintf(o, "    repeated            %llu (DiscSpeed %u, PadForce %u)\n",
-		(unsigned long long)sp->e2e_repeated + fo->e2e_repeated, sp->e2e_repeated,
-		fo->e2e_repeated);
-	fprintf(o, "    implausible         %llu (DiscSpeed %u, PadForce %u)\n",
-		(unsigned long long)sp->implausible + fo->implausible, sp->implausible,
-		fo->implausible);
-	fprintf(o, "    bad_dlc             %llu (DiscSpeed %u, PadForce %u)\n",
-		(unsigned long long)sp->bad_dlc + fo->bad_dlc, sp->bad_dlc, fo->bad_dlc);
+		l0, sp->e2e_wrong_sequence, l1, fo->e2e_wrong_sequence);
+	fprintf(o, "    repeated            %llu (%s %u, %s %u)\n",
+		(unsigned long long)sp->e2e_repeated + fo->e2e_repeated, l0, sp->e2e_repeated,
+		l1, fo->e2e_repeated);
+	fprintf(o, "    implausible         %llu (%s %u, %s %u)\n",
+		(unsigned long long)sp->implausible + fo->implausible, l0, sp->implausible,
+		l1, fo->implausible);
+	fprintf(o, "    bad_dlc             %llu (%s %u, %s %u)\n",
+		(unsigned long long)sp->bad_dlc + fo->bad_dlc, l0, sp->bad_dlc, l1, fo->bad_dlc);
 	fprintf(o, "    error_frames        %u\n", m->count.error_frames);
 	fprintf(o, "    remote_or_extended  %u\n", m->count.rtr_or_ext);
 	fprintf(o, "    rx_overflow         %llu\n", (unsigned long long)r->rx_overflow);
-	if (a->bus_name != NULL) {
+	if (a->input_iface != NULL) {
 		fprintf(o, "    other_bus           %llu\n", (unsigned long long)r->other_bus);
+	} else if (r->multi_reported) {
+		fprintf(o, "    other_iface_inputs  %llu (input identifiers not on %s)\n",
+			(unsigned long long)r->other_iface_inputs, r->ifaces[r->auto_iface]);
 	}
-	fprintf(o, "  e2e_frames_lost       %llu (counter gaps: DiscSpeed %u, PadForce %u)\n",
-		(unsigned long long)sp->e2e_lost + fo->e2e_lost, sp->e2e_lost, fo->e2e_lost);
-	fprintf(o, "  stale_events          %llu (DiscSpeed %u, PadForce %u)\n",
-		(unsigned long long)sp->stale_events + fo->stale_events, sp->stale_events,
-		fo->stale_events);
+	fprintf(o, "  e2e_frames_lost       %llu (counter gaps: %s %u, %s %u)\n",
+		(unsigned long long)sp->e2e_lost + fo->e2e_lost, l0, sp->e2e_lost, l1, fo->e2e_lost);
+	fprintf(o, "  stale_events          %llu (%s %u, %s %u)\n",
+		(unsigned long long)sp->stale_events + fo->stale_events, l0, sp->stale_events,
+		l1, fo->stale_events);
 	fprintf(o, "  candump_dropped       %llu\n", (unsigned long long)r->dropped);
 	fprintf(o, "  time_backwards        %llu\n", (unsigned long long)r->backwards);
+	fprintf(o, "  reordered             %llu (frames put back in time order; blocks written out of order: %llu; window %u s, %u frames)\n",
+		(unsigned long long)r->reordered, (unsigned long long)r->reordered_blocks,
+		REORDER_WINDOW_US / 1000000U, REORDER_FRAMES);
 	fprintf(o, "  segments              %llu (new after a jump back of more than 1 s: %llu)\n",
 		(unsigned long long)(r->segments + 1U), (unsigned long long)r->segments);
 	fprintf(o, "  gaps_skipped          %llu\n", (unsigned long long)r->gaps);
@@ -630,7 +1187,7 @@ static void summary(const replay_t *r, const replay_args_t *a)
 		}
 	}
 	fprintf(o, "\n  final_state           %s, warning %s\n",
-		rs_state_name(state_index(m->state)),
+		rs_state_name(msg_squeal_state_slot(m->state)),
 		(m->warning < N_LEVELS) ? level_names[m->warning] : "?");
 	fprintf(o, "  output_frames         %llu (", (unsigned long long)r->out_frames);
 	for (i = 0U; i < MSG_COUNT; i++) {
@@ -638,6 +1195,13 @@ static void summary(const replay_t *r, const replay_args_t *a)
 			(unsigned long long)r->out_by_msg[i]);
 	}
 	fprintf(o, ", other %llu)\n", (unsigned long long)r->out_by_msg[MSG_COUNT]);
+	if (a->input_iface != NULL) {
+		fprintf(o, "  input_iface           %s (%s)\n", a->input_iface,
+			a->input_iface_from_bus ? "--bus" : "calibration");
+	} else if (r->auto_input) {
+		fprintf(o, "  input_iface           %s (the first interface with an input identifier)\n",
+			r->ifaces[r->auto_iface]);
+	}
 	if (squeal_app_init_status() != SQ_OK) {
 		fprintf(o, "  firmware_init         error %d (running with defaults)\n",
 			squeal_app_init_status());
@@ -685,6 +1249,106 @@ static void json_segments(json_writer_t *w, const replay_t *r)
 	json_end_array(w);
 	json_kv_u64(w, "points_not_listed", r->segments - listed);
 	json_end_object(w);
+}
+
+/* "buses": where the inputs came from and what was ignored. */
+static void json_buses(json_writer_t *w, const replay_t *r, const replay_args_t *a)
+{
+	uint32_t i;
+
+	json_key(w, "buses");
+	json_begin_object(w);
+	json_key(w, "input_iface");
+	if (a->input_iface != NULL) {
+		json_string(w, a->input_iface);
+	} else {
+		json_string(w, r->auto_input ? r->ifaces[r->auto_iface] : NULL);
+	}
+	json_kv_string(w, "chosen_by", (a->input_iface == NULL) ?
+		       (r->auto_input ? "first_input_frame" : "none") :
+		       (a->input_iface_from_bus ? "bus_option" : "calibration"));
+	json_key(w, "interfaces");
+	json_begin_array(w);
+	for (i = 0U; i < r->n_ifaces; i++) {
+		json_string(w, r->ifaces[i]);
+	}
+	json_end_array(w);
+	json_key(w, "interfaces_with_inputs");
+	json_begin_array(w);
+	for (i = 0U; i < r->n_ifaces; i++) {
+		if (r->iface_has_inputs[i]) {
+			json_string(w, r->ifaces[i]);
+		}
+	}
+	json_end_array(w);
+	json_kv_u64(w, "other_iface_inputs", r->other_iface_inputs);
+	json_kv_u64(w, "other_bus", r->other_bus);
+	json_end_object(w);
+}
+
+/* "inputs_by_corner": the text summary's corner blocks. */
+static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
+{
+	uint32_t k;
+
+	json_key(w, "inputs_by_corner");
+	json_begin_array(w);
+	for (k = 0U; r->started && (k < squeal_app_corner_count()) && (k < CALIB_MAX_CORNERS); k++) {
+		const monitor_t *c = squeal_app_corner(k);
+		const corner_stats_t *cs = &r->cs[k];
+		const input_counters_t *cnt[2] = { &c->speed.count, &c->force.count };
+		uint64_t total = 0U;
+		char label[96];
+		unsigned s;
+		unsigned j;
+		unsigned q;
+
+		for (s = 0U; s < N_STATES; s++) {
+			total += cs->state_us[s];
+		}
+		json_begin_object(w);
+		json_kv_string(w, "corner", pos_names[c->corner.pos & 3U]);
+		json_kv_string(w, "final_state", rs_state_name(msg_squeal_state_slot(c->state)));
+		json_key(w, "state_time_s");
+		json_begin_object(w);
+		for (s = 0U; s < N_STATES; s++) {
+			json_kv_seconds(w, rs_state_name(s), cs->state_us[s]);
+		}
+		json_end_object(w);
+		json_key(w, "state_share");
+		json_begin_object(w);
+		for (s = 0U; s < N_STATES; s++) {
+			json_key(w, rs_state_name(s));
+			json_fixed(w, (total == 0U) ? 0 :
+				   (int64_t)(((cs->state_us[s] * 1000000U) + (total / 2U)) / total), 6U);
+		}
+		json_end_object(w);
+		for (j = 0U; j < 2U; j++) {
+			input_label(r, k, j, label, sizeof(label));
+			json_key(w, qty_names[j]);
+			json_begin_object(w);
+			json_kv_string(w, "label", label);
+			json_kv_u64(w, "frames", cnt[j]->frames);
+			json_kv_u64(w, "used", cnt[j]->used);
+			json_key(w, "rejected");
+			json_begin_object(w);
+			for (q = 1U; q < (unsigned)INPUT_RX_REASON_COUNT; q++) {
+				json_kv_u64(w, input_rx_reason_name((input_rx_reason_t)q), cs->reason[j][q]);
+			}
+			json_end_object(w);
+			json_kv_u64(w, "stale_events", cnt[j]->stale_events);
+			json_key(w, "fault_time_s");
+			json_begin_object(w);
+			for (q = 0U; q < N_FAULT_BITS; q++) {
+				json_kv_seconds(w, fault_bit_names[q], cs->fault_us[j][q]);
+			}
+			json_end_object(w);
+			json_end_object(w);
+		}
+		json_kv_seconds(w, "fault_without_input_fault_s", cs->fault_other_us);
+		json_end_object(w);
+	}
+	json_end_array(w);
 }
 
 /* Everything after the episodes: the caller began the object with "log"
@@ -745,6 +1409,14 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_kv_u64(w, "candump_dropped", r->dropped);
 	json_kv_u64(w, "time_backwards", r->backwards);
 	json_segments(w, r);
+	json_key(w, "reordered");
+	json_begin_object(w);
+	json_kv_u64(w, "frames", r->reordered);
+	json_kv_u64(w, "blocks", r->reordered_blocks);
+	json_kv_seconds(w, "window_s", REORDER_WINDOW_US);
+	json_kv_u64(w, "window_frames", REORDER_FRAMES);
+	json_end_object(w);
+	json_buses(w, r, a);
 	json_kv_u64(w, "gaps_skipped", r->gaps);
 	json_key(w, "state_time_s");
 	json_begin_object(w);
@@ -775,7 +1447,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_kv_u64(w, "total", changes);
 	json_end_object(w);
 	json_key(w, "final_state");
-	json_string(w, r->started ? rs_state_name(state_index(m->state)) : NULL);
+	json_string(w, r->started ? rs_state_name(msg_squeal_state_slot(m->state)) : NULL);
 	json_key(w, "final_warning");
 	json_string(w, (r->started && (m->warning < N_LEVELS)) ? level_names[m->warning] : NULL);
 	json_key(w, "output_frames");
@@ -786,6 +1458,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	}
 	json_kv_u64(w, "other", r->out_by_msg[MSG_COUNT]);
 	json_end_object(w);
+	json_inputs_by_corner(w, r);
 	json_key(w, "output_written");
 	json_bool(w, !a->no_output);
 	json_key(w, "firmware_init_status");
@@ -836,16 +1509,17 @@ static int summary_json_close(json_writer_t *w, FILE *f, const replay_t *r, cons
 
 /* ---- main ------------------------------------------------------------------------ */
 
-static int load_calib(const char *path)
+static int load_calib(replay_t *r, const char *path)
 {
 	calib_t cal;
 	uint8_t block[CALIB_BLOCK_LEN];
 	char err[256];
 
-	if (calib_text_load(path, &cal, err, sizeof(err)) != SQ_OK) {
+	if (calib_text_load_map(path, &cal, &r->names, err, sizeof(err)) != SQ_OK) {
 		fprintf(stderr, "squeal-sim replay: %s\n", err);
 		return -1;
 	}
+	r->map_form = cal.n_corners != 0U;
 	if ((calib_encode(&cal, block, sizeof(block)) != SQ_OK) ||
 	    (hal_vbus_calib_store(block, sizeof(block)) != SQ_OK)) {
 		fprintf(stderr, "squeal-sim replay: %s: cannot store the calibration\n", path);
@@ -860,6 +1534,7 @@ int cmd_replay(int argc, char **argv)
 	static char outbuf[1U << 16];
 	static replay_t r;
 	static replay_summary_t rs; /* 820 kB of occupancy cells: not on the stack */
+	static candump_pending_t pending;
 	json_writer_t jw;
 	FILE *json_f = NULL;
 	int json_rc = 0;
@@ -890,11 +1565,14 @@ int cmd_replay(int argc, char **argv)
 	}
 	(void)setvbuf(stdout, outbuf, _IOFBF, sizeof(outbuf));
 	hal_vbus_reset();
-	if ((a.calib_path != NULL) && (load_calib(a.calib_path) != 0)) {
+	if ((a.calib_path != NULL) && (load_calib(&r, a.calib_path) != 0)) {
 		if (in != stdin) {
 			(void)fclose(in);
 		}
 		return 1;
+	}
+	if ((a.input_iface == NULL) && (r.names.input_iface[0] != '\0')) {
+		a.input_iface = r.names.input_iface;
 	}
 	r.no_output = a.no_output;
 	if (a.summary_json != NULL) {
@@ -908,7 +1586,8 @@ int cmd_replay(int argc, char **argv)
 		r.summary = &rs;
 	}
 	candump_reader_init(&reader, in);
-	for (;;) {
+	candump_pending_init(&pending, stderr, a.log_name);
+	while (!r.init_failed) {
 		candump_err_t err = CANDUMP_OK;
 		size_t col = 0U;
 
@@ -919,14 +1598,15 @@ int cmd_replay(int argc, char **argv)
 		r.lines++;
 		if (too_long) {
 			r.malformed++;
-			fprintf(stderr, "%s:%llu: %s\n", a.log_name,
-				(unsigned long long)reader.line_no,
-				candump_strerror(CANDUMP_ERR_TOO_LONG));
+			candump_pending_report(&pending, "%s:%llu: %s", a.log_name,
+					       (unsigned long long)reader.line_no,
+					       candump_strerror(CANDUMP_ERR_TOO_LONG));
 			continue;
 		}
 		switch (candump_parse_line(line, len, &f, &err, &col)) {
 		case CANDUMP_LINE_FRAME:
 			r.frames++;
+			candump_pending_frame(&pending);
 			on_frame(&r, &f, &a, reader.line_no);
 			break;
 		case CANDUMP_LINE_BLANK:
@@ -941,8 +1621,9 @@ int cmd_replay(int argc, char **argv)
 			break;
 		default:
 			r.malformed++;
-			fprintf(stderr, "%s:%llu: %s (column %zu)\n", a.log_name,
-				(unsigned long long)reader.line_no, candump_strerror(err), col + 1U);
+			candump_pending_report(&pending, "%s:%llu: %s (column %zu)", a.log_name,
+					       (unsigned long long)reader.line_no, candump_strerror(err),
+					       col + 1U);
 			break;
 		}
 	}
@@ -952,8 +1633,20 @@ int cmd_replay(int argc, char **argv)
 	if (in != stdin) {
 		(void)fclose(in);
 	}
+	if (!r.init_failed) {
+		end_of_log(&r, &a);
+	}
+	if (r.init_failed) {
+		fprintf(stderr, "squeal-sim replay: %s: the firmware refused the calibration (firmware_init error %d)\n",
+			a.calib_path, squeal_app_init_status());
+		if (json_f != NULL) {
+			(void)summary_json_close(&jw, json_f, &r, &a);
+		}
+		return 1;
+	}
 	if (r.started) {
-		run_until(&r, r.now_us + a.tail_us);
+		/* the tick that takes the last frame in, then the tail */
+		run_until(&r, r.next_tick_us + a.tail_us);
 	}
 	if (json_f != NULL) {
 		json_rc = summary_json_close(&jw, json_f, &r, &a);
@@ -961,6 +1654,9 @@ int cmd_replay(int argc, char **argv)
 	if ((fflush(stdout) != 0) || r.out_error) {
 		fprintf(stderr, "squeal-sim replay: error writing the output\n");
 		summary(&r, &a);
+		return 1;
+	}
+	if ((rc >= 0) && candump_pending_no_frames(&pending)) {
 		return 1;
 	}
 	summary(&r, &a);

@@ -10,7 +10,8 @@
 
 const char *rs_state_name(unsigned i)
 {
-	const char *n = msg_squeal_state_name((uint8_t)((i < 4U) ? i : MSG_SQUEAL_STATE_FAULT));
+	const char *n = msg_squeal_state_name(
+		(uint8_t)((i < MSG_SQUEAL_STATE_SLOT_FAULT) ? i : MSG_SQUEAL_STATE_FAULT));
 
 	return (n != NULL) ? n : "?";
 }
@@ -37,11 +38,6 @@ static const msg_sig_desc_t *sig_find(uint16_t msg_id, const char *name)
 		}
 	}
 	return NULL;
-}
-
-unsigned rs_state_index(uint32_t squeal_state)
-{
-	return (squeal_state < 4U) ? squeal_state : 4U;
 }
 
 /* Raw value of sig in f; false when the frame does not carry it, or it is
@@ -184,7 +180,7 @@ static void on_status(replay_summary_t *rs, unsigned k, const hal_can_frame_t *f
 		return; /* wrong DLC: not a status frame of ours */
 	}
 	have_margin = raw_of(sigs.margin, f, &margin);
-	s = rs_state_index((uint32_t)st);
+	s = msg_squeal_state_slot((uint32_t)st);
 	if (!c->seen) {
 		c->seen = true;
 		c->first_us = f->timestamp_us;

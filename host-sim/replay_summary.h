@@ -32,10 +32,11 @@
 
 #include "hal.h"
 #include "json_writer.h"
+#include "squeal_msgs.h"
 
 #define RS_CORNERS_MAX    4U
 #define RS_CORNER_ID_STEP 0x10U
-#define RS_N_STATES       5U   /* stable, bistable, unstable, not_sliding, fault */
+#define RS_N_STATES       MSG_SQUEAL_STATE_SLOTS /* stable, bistable, unstable, not_sliding, fault */
 /* The occupancy grid covers a car's pad speeds and forces (30 m/s on the
  * road is v0 = 12 m/s at the default radii); values beyond count in the
  * last cell. 5 states x 80 x 64 cells x 8 bytes = 205 kB per corner. */
@@ -87,8 +88,8 @@ typedef struct {
 	rs_corner_t corner[RS_CORNERS_MAX];
 } replay_summary_t;
 
-/* State index i (0..RS_N_STATES-1: SquealState 0..3, then fault) by its
- * DBC name (msg_squeal_state_name). */
+/* State slot i (0..RS_N_STATES-1, msg_squeal_state_slot) by its DBC name
+ * (msg_squeal_state_name). */
 const char *rs_state_name(unsigned i);
 extern const char *const rs_corner_names[RS_CORNERS_MAX];
 
@@ -106,8 +107,5 @@ void replay_summary_on_frame(replay_summary_t *rs, const hal_can_frame_t *f);
 /* Accounts up to end_us, writes the open episodes, closes "episodes" and
  * writes "corners" (per corner: identifiers, time per state, occupancy). */
 void replay_summary_finish(replay_summary_t *rs, uint64_t end_us);
-
-/* The index 0..4 of a SquealState value (anything else: fault). */
-unsigned rs_state_index(uint32_t squeal_state);
 
 #endif /* REPLAY_SUMMARY_H */

@@ -7,6 +7,8 @@
 #   build/test/test_candump_log     cmocka, ASan+UBSan
 #   tests/replay/test_replay.py     replay/decode end to end (python-can,
 #                                   canmatrix, the reference model)
+#   tests/replay/test_replay_order.py  out-of-order blocks, restarts, gaps,
+#                                   two interfaces, names and reasons
 #   tests/replay/bench-replay.sh    make bench: replay vs python-can+canmatrix,
 #                                   with and without frame output
 #   host-sim/replay_summary.c, json_writer.c   replay --summary-json (issue 13)
@@ -40,6 +42,11 @@ build/test/test_candump_log: build/test/app/tests/unit/test_candump_log.o build/
 tests/replay/test_replay.py: build/test/squeal-sim build/test-fixed/squeal-sim build/host/squeal-sim
 
 TEST_PROGS += build/test/test_candump_log tests/replay/test_replay.py
+
+# Time order, restarts, gaps, interfaces and the summary in the vehicle's
+# words, on logs generated here (both numeric builds).
+tests/replay/test_replay_order.py: build/test/squeal-sim build/test-fixed/squeal-sim
+TEST_PROGS += tests/replay/test_replay_order.py
 
 # make bench: replay/decode throughput vs python-can + canmatrix, peak RSS
 tests/replay/bench-replay.sh: build/host/squeal-sim

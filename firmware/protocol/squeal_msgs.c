@@ -629,6 +629,11 @@ const char *msg_squeal_state_name(uint8_t state)
 	return name;
 }
 
+uint32_t msg_squeal_state_slot(uint32_t state)
+{
+	return (state <= MSG_SQUEAL_STATE_NOT_SLIDING) ? state : MSG_SQUEAL_STATE_SLOT_FAULT;
+}
+
 const msg_desc_t *msg_desc_find(uint16_t id)
 {
 	size_t i;

@@ -303,6 +303,17 @@ const msg_desc_t *msg_desc_find(uint16_t id);
 const char *msg_squeal_state_name(uint8_t state);
 
 /*
+ * The slot of a SquealState value in a per-state table of
+ * MSG_SQUEAL_STATE_SLOTS entries: the model's states 0..3 are their own
+ * slot, every other value (FAULT, and values the DBC does not name, which
+ * a receiver treats as a fault) is slot MSG_SQUEAL_STATE_SLOT_FAULT. Host
+ * tools that count time or changes per state index their tables with it.
+ */
+#define MSG_SQUEAL_STATE_SLOTS      5U
+#define MSG_SQUEAL_STATE_SLOT_FAULT 4U
+uint32_t msg_squeal_state_slot(uint32_t state);
+
+/*
  * Raw value of one signal in a frame (sign-extended when signed).
  * Returns SQ_OK; SQ_ENOENT for a multiplexed signal that this frame does
  * not carry (other page); SQ_EBADMSG when dlc is not the message's DLC;

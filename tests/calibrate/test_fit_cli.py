@@ -175,7 +175,8 @@ def outputs(c, tmp):
                  if ("_sd =" in ln or "_corr =" in ln) and not ln.startswith("#")]
     c.check(all(v == "0" for v in sd_values),
             f"--no-sd writes no standard deviations (the base's zeros stay: {sd_values})")
-    rr = subprocess.run([SIM, "replay", "-", "--calib", plain], input="",
+    # one frame: a log without any is refused on its own
+    rr = subprocess.run([SIM, "replay", "-", "--calib", plain], input="(0.000000) can0 123#\n",
                         capture_output=True, text=True, timeout=60)
     c.check(rr.returncode == 0, f"squeal-sim replay --calib accepts the --no-sd file "
                                 f"(exit {rr.returncode})")

@@ -18,6 +18,7 @@ import os
 import random
 import subprocess
 import sys
+import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tests", "reference"))
@@ -242,6 +243,65 @@ def check_literal(build):
                "%s: classify %s: want non-zero exit and a message, got rc %d, stderr %r"
                % (build, " ".join(args), rc, err[:200]))
 
+# our own two-corner calibration: flat radii 0.33 / 0.11 m, FR its own 0.30 / 0.15 m
+RADII_CAL = """wheel_radius_m = 0.33
+pad_radius_m = 0.11
+[input w]
+id = 0x1A0
+start_bit = 7
+length = 16
+byte_order = motorola
+factor = 0.01
+unit = km/h
+period_ms = 10
+min = 0
+max = 300
+step_max = 300
+[input b]
+id = 0x1B0
+start_bit = 0
+length = 12
+byte_order = intel
+factor = 1
+unit = N
+period_ms = 10
+min = 0
+max = 4000
+step_max = 4000
+[corner FL]
+speed = w
+force = b
+[corner FR]
+speed = w
+force = b
+wheel_radius_m = 0.30
+pad_radius_m = 0.15
+"""
+
+
+def check_vehicle_speed(build):
+    """The vehicle km/h is v0 x r_w / r_p of the calibration's corner: the
+    flat radii (3 x v0), a corner's own (2 x v0), the defaults without
+    --calib (2.5 x v0); the same in text and JSON."""
+    with tempfile.TemporaryDirectory() as tmp:
+        cal = os.path.join(tmp, "radii.cal")
+        with open(cal, "w") as f:
+            f.write(RADII_CAL)
+        for extra, ratio in (([], 2.5), (["--calib", cal], 3.0), (["--calib", cal, "--corner", "FL"], 3.0),
+                             (["--calib", cal, "--corner", "FR"], 2.0)):
+            rc, out, err = run(build, ["--v0", "2", "--force", "3000"] + extra)
+            want = "(vehicle %.1f km/h)" % (2 * ratio * 3.6)
+            result(rc == 0 and want in out, "%s: classify %s: %s in %r" % (build, " ".join(extra), want, out[:90]))
+            rc, out, err = run(build, ["--v0", "2", "--force", "3000", "--json"] + extra)
+            ok = rc == 0 and abs(json.loads(out)["vehicle_kmh"] - 2 * ratio * 3.6) < 1e-9
+            result(ok, "%s: classify --json %s: vehicle_kmh %.3f" % (build, " ".join(extra), 2 * ratio * 3.6))
+        with open(cal, "w") as f:
+            f.write("no_such_key = 1\n")
+        rc, out, err = run(build, ["--v0", "2", "--force", "3000", "--calib", cal])
+        result(rc == 1 and err.strip().count("\n") == 0 and (cal + ":1:") in err,
+               "%s: classify --calib with a refused file: exit 1, one line FILE:LINE (rc %d, %r)"
+               % (build, rc, err))
+
 
 def main():
     for build, path in BINARIES.items():
@@ -254,6 +314,7 @@ def main():
     rows = sample(load_rows())
     for build in BINARIES:
         check_literal(build)
+        check_vehicle_speed(build)
         for row in rows:
             check_row(build, row)
     print("%d golden rows x %d builds checked" % (len(rows), len(BINARIES)))

@@ -31,6 +31,8 @@ def parse_table(text):
                 na=int(f[14]) if f[13] == "NA" else None)
         elif f[0] == "STATENAME":
             defs.setdefault("_state_names", {})[int(f[1])] = f[2]
+        elif f[0] == "STATESLOT":
+            defs.setdefault("_state_slots", {})[int(f[1])] = int(f[2])
         elif f[0] == "DEF":
             defs[f[1]] = int(f[2])
     return msgs, sigs, defs
@@ -140,6 +142,10 @@ def compare(db, msgs, sigs, defs, r):
     r.check(defs.get("_state_names") == vals,
             "msg_squeal_state_name() names exactly the SquealState value table (%s)"
             % defs.get("_state_names"))
+    # per-state tables: the model's values 0..3 in their own slot, every
+    # other value (fault, or one the table does not name) in slot 4
+    r.check(defs.get("_state_slots") == {v: (v if v < 4 else 4) for v in range(256)},
+            "msg_squeal_state_slot(): 0..3 their own slot, every other value slot 4")
     vals = {int(k): v for k, v in st.signal_by_name("WarningLevel").values.items()}
     r.check(vals == {0: "none", 1: "advisory", 2: "warning", 3: "critical"},
             "WarningLevel value table %s" % vals)

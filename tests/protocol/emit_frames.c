@@ -301,6 +301,9 @@ static int emit_table(void)
 			printf("STATENAME\t%u\t%s\n", v, n);
 		}
 	}
+	for (unsigned int v = 0; v < 256U; v++) { /* msg_squeal_state_slot() */
+		printf("STATESLOT\t%u\t%u\n", v, (unsigned int)msg_squeal_state_slot(v));
+	}
 	def("MSG_SQUEAL_STATE_STABLE", MSG_SQUEAL_STATE_STABLE);
 	def("MSG_SQUEAL_STATE_BISTABLE", MSG_SQUEAL_STATE_BISTABLE);
 	def("MSG_SQUEAL_STATE_UNSTABLE", MSG_SQUEAL_STATE_UNSTABLE);
