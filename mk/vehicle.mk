@@ -2,8 +2,11 @@
 # The monitor on a vehicle's bus (issue 11), Python side:
 #   tools/vehicle_calib.py                  calibration text (+ outputs DBC) from a vehicle DBC
 #   tests/vehicle/*.dbc, unseen/            fixture layouts written by the project
+#   tools/dbc_tolerant.py, vcalib_rules.py  its DBC reader for files from the field, its signal rules
 #   tests/vehicle/test_vehicle_calib.py     the tool vs canmatrix, refusals, --dbc-out, --base,
 #                                           and the self-tests of the harnesses (no C needed)
+#   tests/vehicle/test_vehicle_field.py     field DBC layouts (tests/vehicle/field/): ranges, not
+#                                           available, qualifiers, bad lines, mux, buses, units (no C)
 #   tests/vehicle/test_vehicle_crosscheck.py  decode --calib --inputs-csv == canmatrix, random frames
 #   tests/vehicle/test_vehicle_e2e.py       drive -> replay --calib -> outputs vs the reference
 #   tests/vehicle/test_vehicle_unseen.py    issue 11's Done-when layout (tests/vehicle/unseen/)
@@ -12,4 +15,4 @@ VEHICLE_SIM_TESTS := tests/vehicle/test_vehicle_crosscheck.py tests/vehicle/test
 	tests/vehicle/test_vehicle_unseen.py
 $(VEHICLE_SIM_TESTS): build/test/squeal-sim build/test-fixed/squeal-sim
 
-TEST_PROGS += tests/vehicle/test_vehicle_calib.py $(VEHICLE_SIM_TESTS)
+TEST_PROGS += tests/vehicle/test_vehicle_calib.py tests/vehicle/test_vehicle_field.py $(VEHICLE_SIM_TESTS)

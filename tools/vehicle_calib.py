@@ -1,57 +1,87 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Build a calibration text (input map and corners, issue 11) from a vehicle's
-DBC, by message and signal name.
+"""Build a calibration text (input map and corners) from a vehicle's DBC, by
+message and signal name; checked by the firmware's own reader before it is
+written.
 
-    vehicle_calib.py --dbc CAR.dbc [--log DRIVE.log]
-        --corner FL --speed MSG.SIG --force MSG.SIG [--speed-unit U] [--force-unit U]
-            [--piston-area-mm2 A] [--efficiency E] [--axle-factor K]
+    vehicle_calib.py --dbc CAR.dbc [--log DRIVE.log [--bus IFACE]]
+        --corner FL --speed MSG.SIG --force MSG.SIG [--speed-unit U [--unit-scale S]]
+            [--force-unit U [--unit-scale S]] [--piston-area-mm2 A] [--efficiency E]
+            [--axle-factor K] [--torque-share K]
         [--corner FR ...] [--wheel-radius-m R] [--pad-radius-m R] [--period-ms MS]
-        [--protection none|p01|p02|counter] [--counter MSG.SIG] [--base FILE.cal]
-        [-o FILE.cal] [--dbc-out FILE.dbc]
+        [--protection none|p01|p02|counter] [--counter MSG.SIG]
+        [--qualifier MSG.SIG=MSG.QSIG:invalid-when=0|1] [--na-raw MSG.SIG=RAW[,RAW]]
+        [--ignore-dbc-range] [--keep-all-ones] [--base FILE.cal] [-o FILE.cal] [--dbc-out FILE.dbc]
 
-The keys written are those of the agreed interface (input-map calibration
-text). What is taken from where:
-  - start bit, length, byte order, sign, factor, offset, unit, multiplexer:
-    the DBC signal (canmatrix; start bits in the DBC's own numbering);
+What is taken from where:
+  - start bit, length, byte order, sign, factor, offset, unit: the DBC signal
+    (canmatrix; start bits in the DBC's own numbering); factor and offset as
+    the DBC writes them (exact), times the --unit-scale when one is given;
+  - signal = MSG.SIG: the DBC names (long names where the DBC has them);
   - min_dlc: the message's DLC in the DBC (a shorter frame is a bad DLC);
-  - "not available" raw values (na_raw, na_raw2): entries of the signal's VAL_
-    table whose text says not available / SNA / invalid / init / error /
-    fault (at most two, the highest raw values first);
-  - qualifier bit: a 1-bit signal of the same message (and multiplexer page)
-    whose name is the value's name plus a qualifier word, or a qualifier word
-    plus the value's name, separated by '_' or nothing, case-insensitive.
-    Words meaning "invalid when 1": Q QF Qual Qualifier Flt Fault Err Error
-    Inv Invalid NV SNA; words meaning "invalid when 0": V Valid VLD OK.
-    When the bit has a VAL_ table, the value whose text says invalid / fault /
-    error / not valid decides instead;
-  - period: GenMsgCycleTime (for a multiplexed input: times the number of
-    multiplexer values the DBC defines, since the pages take turns), else
-    measured from --log (median interval of the input's frames, corrected
-    for heavy frame loss, see measure_period), else --period-ms;
+  - multiplexing: the selectors the DBC defines, simple (m3), extended
+    (SG_MUL_VAL_ with value ranges), cascaded (the outer selector's page is
+    mux_*, the inner one's mux2_*) and independent multiplexors (the one
+    selector the signal depends on); one range per selector, two selectors
+    at most, else a refusal;
+  - plausible range (min, max): the DBC's declared [min|max] (within what
+    the signal can carry), unless it is [0|0] or --ignore-dbc-range is given:
+    then from 0 (less half a step) to the largest value the signal carries;
+    steps up to 100 m/s^2 (speed) or a quarter of the range (force) per
+    period;
+  - "not available" raw values (na_raw, na_raw2): VAL_ entries whose text
+    means no value (not available, unavailable, n/a, SNA, init, invalid,
+    error, fault, unknown, undefined, no value; any case; "no error" is a
+    value), and the all-ones raw value where the declared range excludes it
+    (unless --keep-all-ones); codes inside the plausible range first; more
+    than two inside it: a refusal naming them (choose with --na-raw);
+  - qualifier bit: a 1-bit signal of the same message and page named as the
+    value's qualifier (Speed_Q, Speed_QF, Speed_Valid, BR5_Druckvalid for
+    BR5_Bremsdruck, Speed_Invalid, Speed_Flt, Speed_Fault, Speed_Stat with a
+    VAL_ table; the rule in tools/vcalib_rules.py); the choice and its reason
+    are printed, one line per input; two equally good candidates: none
+    (choose with --qualifier); a bit beyond the DLC is refused;
+  - period: GenMsgCycleTime (a multiplexed input: times the pages that take
+    turns), else measured from --log on the --bus interface (median interval
+    corrected for heavy frame loss, see measure_period; a multiplexed input:
+    the message's period times the frames per carrying frame), else
+    --period-ms;
+  - input_iface: --bus. Without --bus, a message seen on two interfaces of
+    the log is refused (choose the bus with --bus);
   - protection: --protection for every input: p01 takes the message's
     E2E_DataID attribute, p02 its E2E_DataIDList attribute (16 bytes), counter
     the signal named by --counter (repeatable, one per message) or else the
     one sibling whose name says counter/alive/cnt/rolling.
+With --log, each input's line says how many logged values lie outside the
+declared range and how many are all ones.
+DBC files as found in the field: a line no reader accepts that the request
+does not need is skipped with a warning naming its line (tools/dbc_tolerant.py).
 A recorded drive drops frames (gaps of 2-3 periods), so the inputs accept
-counter steps up to 3 (times the number of pages for a multiplexed input,
-below the counter's modulus: max_delta_counter) and go stale after 5 missed
-periods (stale_cycles); plausibility: from 0 (less half a step) to the
-largest value the signal can carry (declared DBC ranges are often wrong),
-steps up to 100 m/s^2 (speed) or a quarter of the range (force) per period.
-Every refusal, bad usage included, is one line on stderr and exit status 1.
+counter steps up to 3 (times the pages for a multiplexed input, below the
+counter's modulus: max_delta_counter) and go stale after 5 missed periods.
+The text is checked with `squeal-sim calib-check` (build/host/squeal-sim; the
+environment variable VEHICLE_CALIB_SIM names another) before it is written;
+its refusal is printed and nothing is written. Every refusal, bad usage
+included, is one line on stderr and exit status 1; notes (qualifier choices,
+skipped DBC lines, log counts) go to stderr after a successful run.
 """
-import contextlib
-import io
+import decimal
 import math
 import os
 import re
+import subprocess
 import sys
-import warnings
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import dbc_tolerant  # noqa: E402
+import vcalib_rules as rules  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SQUEAL_DBC = os.path.join(ROOT, "firmware", "protocol", "squeal.dbc")
+CHECKER = os.path.join(ROOT, "build", "host", "squeal-sim")
 
+D = decimal.Decimal
 POSITIONS = ("FL", "FR", "RL", "RR")
 # unit (lower case) -> quantity, as the calibration text accepts them
 UNITS = {
@@ -70,17 +100,13 @@ STALE_CYCLES = 5          # loggers drop 2-3 frames in a row
 MAX_DELTA_COUNTER = 3     # counter step of a frame after two dropped ones
 MAX_INPUTS = 8
 NAME_MAX = 15
+SIGNAL_MAX = 63
+IFACE = re.compile(r"^[A-Za-z0-9_.-]{1,15}$")
 LEGACY_KEYS = ("disc_speed_id", "pad_force_id", "e2e_check_inputs", "input_period_ms",
                "speed_max_radps", "speed_step_max_radps", "force_max_n", "force_step_max_n")
 OUTPUT_KEYS = (("status_id", 0x300), ("detail_id", 0x301), ("diag_id", 0x302), ("detail2_id", 0x303))
 OUTPUT_MSGS = (("SquealStatus", 0x300), ("SquealDetail", 0x301), ("SquealDiag", 0x302),
                ("SquealDetail2", 0x303))
-
-QUAL_BAD_WHEN_1 = ("q", "qf", "qual", "qualifier", "flt", "fault", "err", "error", "inv",
-                   "invalid", "nv", "sna")
-QUAL_BAD_WHEN_0 = ("v", "valid", "vld", "ok")
-NA_TEXT = re.compile(r"not.?avail|\bsna\b|\bn/?a\b|unavailable|invalid|\binit|error|fault|snv", re.I)
-BAD_TEXT = re.compile(r"invalid|fault|error|not.?valid|\bnok\b|failure", re.I)
 COUNTER_NAME = re.compile(r"counter|alive|cnt|rolling|\brc\b", re.I)
 
 
@@ -88,64 +114,63 @@ class Refusal(Exception):
     """A reason to refuse, printed as one line."""
 
 
-def num(text):
-    """A number as the calibration text writes it (no exponent surprises)."""
-    if isinstance(text, int):
-        return str(text)
-    v = float(text)
-    if v == int(v) and abs(v) < 1e15:
-        return str(int(v))
-    # the calibration keeps decimals of at most 9 significant digits: a
-    # computed range (32767 x 0.1 = 3276.7000000000003) is written 3276.7
-    return "%.9g" % v
+def num(value):
+    """A number of an option as the calibration text writes it (exact)."""
+    try:
+        return rules.text(value)
+    except rules.RuleRefusal as e:
+        raise Refusal(str(e))
 
 
 # ---------------------------------------------------------------- DBC access
 
-def load_dbc(path):
-    """The one database of a DBC file; Refusal when it cannot be read."""
-    try:
-        with open(path, "rb") as f:
-            text = f.read()
-    except OSError as e:
-        raise Refusal("cannot read DBC %s: %s" % (path, e.strerror or e))
-    if b"BO_ " not in text:
-        raise Refusal("%s is not a DBC file (no BO_ message)" % path)
-    import logging
-    logging.disable(logging.CRITICAL)  # canmatrix logs missing optional formats
-    out = io.StringIO()
-    try:
-        with warnings.catch_warnings(), contextlib.redirect_stdout(out):
-            warnings.simplefilter("ignore")
-            import canmatrix.formats
-            dbs = canmatrix.formats.loadp(path, import_type="dbc")
-    except Exception as e:  # canmatrix raises many kinds on bad files
-        raise Refusal("cannot parse DBC %s: %s" % (path, str(e).splitlines()[0] if str(e) else type(e).__name__))
-    m = re.search(r"error with line no: (\d+)", out.getvalue())
-    if m:
-        raise Refusal("cannot parse DBC %s: bad line %s" % (path, m.group(1)))
-    if len(dbs) != 1 or not list(dbs.values())[0].frames:
-        raise Refusal("%s holds no CAN database with messages" % path)
-    return list(dbs.values())[0]
+class Dbc:
+    """The DBC, read for the messages asked for (dbc_tolerant), with lookups
+    by DBC name or long name."""
 
+    def __init__(self, path, wanted):
+        try:
+            self.db, self.notes, self.idx = dbc_tolerant.load(path, wanted)
+        except dbc_tolerant.DbcRefusal as e:
+            raise Refusal(str(e))
+        self.path = path
+        self.short_to_long = {(cid, short): lng for (cid, lng), short in self.idx.long_sig.items()}
 
-def find_signal(db, ref, what):
-    """(frame, signal) of MSG.SIG, or Refusal naming what is unknown."""
-    if "." not in ref:
-        raise Refusal("%s %r: give it as MESSAGE.SIGNAL" % (what, ref))
-    msg, sig = ref.split(".", 1)
-    frame = db.frame_by_name(msg)
-    if frame is None:
-        raise Refusal("%s %s: unknown message %r in the DBC" % (what, ref, msg))
-    s = frame.signal_by_name(sig)
-    if s is None:
-        raise Refusal("%s %s: message %s has no signal %r" % (what, ref, msg, sig))
-    return frame, s
+    def frame(self, name):
+        import canmatrix
+        cid = self.idx.lookup(name)
+        if cid is not None:
+            f = self.db.frame_by_id(canmatrix.ArbitrationId.from_compound_integer(cid))
+            if f is not None:
+                return f, cid
+        f = self.db.frame_by_name(name)
+        if f is not None:
+            return f, f.arbitration_id.to_compound_integer()
+        return None, None
+
+    def find(self, ref, what):
+        """(frame, signal) of MSG.SIG, or Refusal naming what is unknown."""
+        if "." not in ref:
+            raise Refusal("%s %r: give it as MESSAGE.SIGNAL" % (what, ref))
+        msg, sig = ref.split(".", 1)
+        frame, cid = self.frame(msg)
+        if frame is None:
+            raise Refusal("%s %s: unknown message %r in the DBC" % (what, ref, msg))
+        s = frame.signal_by_name(sig)
+        if s is None and (cid, sig) in self.short_to_long:
+            s = frame.signal_by_name(self.short_to_long[(cid, sig)])
+        if s is None:
+            raise Refusal("%s %s: message %s has no signal %r" % (what, ref, msg, sig))
+        return frame, s
 
 
 def dbc_start_bit(sig):
     """Start bit in the DBC's numbering (Intel: LSB, Motorola: MSB)."""
     return int(sig.get_startbit(bit_numbering=1))
+
+
+def order(sig):
+    return "intel" if sig.is_little_endian else "motorola"
 
 
 def signal_bits(start, length, intel):
@@ -159,65 +184,21 @@ def signal_bits(start, length, intel):
     return bits
 
 
-def same_page(a, b):
-    """Two signals of one frame that can be in the same frame instance."""
-    return a.mux_val is None or b.mux_val is None or a.mux_val == b.mux_val
-
-
-def mux_selector(frame):
-    for s in frame.signals:
-        if s.is_multiplexer:
-            return s
-    return None
-
-
-def na_values(sig):
-    vals = sorted((int(k) for k, v in sig.values.items() if NA_TEXT.search(str(v))), reverse=True)
-    return vals[:2]
-
-
-def qualifier_of(frame, sig):
-    """(bit, invalid value) of the sibling qualifier bit, or None (rule in the doc)."""
-    base = sig.name.lower()
-    found = []
-    for s in frame.signals:
-        if s is sig or s.size != 1 or not same_page(s, sig) or s.is_multiplexer:
-            continue
-        n = s.name.lower()
-        word = None
-        for pre in (base + "_", base):
-            if n.startswith(pre) and n[len(pre):]:
-                word = n[len(pre):]
-                break
-        if word is None:
-            for suf in ("_" + base, base):
-                if n.endswith(suf) and n[:-len(suf)]:
-                    word = n[:-len(suf)]
-                    break
-        if word is None:
-            continue
-        word = word.strip("_")
-        if word in QUAL_BAD_WHEN_1:
-            bad = 1
-        elif word in QUAL_BAD_WHEN_0:
-            bad = 0
-        else:
-            continue
-        named = [int(k) for k, v in s.values.items() if BAD_TEXT.search(str(v))]
-        if len(named) == 1 and named[0] in (0, 1):
-            bad = named[0]
-        found.append((dbc_start_bit(s), bad))
-    return found[0] if len(found) == 1 else None
-
-
-def find_counter(db, frame, sig, counters):
+def find_counter(dbc, frame, sig, counters):
     """The counter signal for counter-only protection."""
     for ref in counters:
-        f, s = find_signal(db, ref, "--counter")
+        f, s = dbc.find(ref, "--counter")
         if f is frame:
             return s
-    cands = [s for s in frame.signals if s is not sig and not s.is_multiplexer
-             and COUNTER_NAME.search(s.name) and 2 <= s.size <= 8 and same_page(s, sig)]
+    cands = []
+    for s in frame.signals:
+        if s is sig or s.is_multiplexer or not COUNTER_NAME.search(s.name) or not 2 <= s.size <= 8:
+            continue
+        try:
+            if rules.same_page(frame, sig, s):
+                cands.append(s)
+        except rules.RuleRefusal:
+            continue
     if len(cands) != 1:
         raise Refusal("message %s: %s; name its counter with --counter %s.SIGNAL"
                       % (frame.name, "no alive counter signal found" if not cands else
@@ -226,33 +207,37 @@ def find_counter(db, frame, sig, counters):
     return cands[0]
 
 
-# ---------------------------------------------------------------- periods
+# ---------------------------------------------------------------- logs and periods
 
 def read_log(path):
-    """[(t, id, extended, data)] of a candump log (-L or the default format)."""
-    rx_l = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+\S+\s+([0-9A-Fa-f]{1,8})#(R?)([0-9A-Fa-f]*)")
-    rx_d = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+\S+\s+([0-9A-Fa-f]{3,8})\s+\[(\d)\]\s*((?:[0-9A-Fa-f]{2}\s*)*)")
+    """[(t, iface, id, extended, data)] of a candump log (-L or the default format)."""
+    rx_l = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+(\S+)\s+([0-9A-Fa-f]{1,8})#(R?)([0-9A-Fa-f]*)")
+    rx_d = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+(\S+)\s+([0-9A-Fa-f]{3,8})\s+\[(\d)\]\s*((?:[0-9A-Fa-f]{2}\s*)*)")
     try:
         f = open(path, "r", errors="replace")
     except OSError as e:
         raise Refusal("cannot read log %s: %s" % (path, e.strerror or e))
     frames = []
     with f:
-        for line in f:
-            m = rx_l.match(line)
-            if m:
-                if m.group(3):
-                    continue
-                ids, hexd = m.group(2), m.group(4)
-                if len(hexd) % 2:
-                    continue
-                frames.append((float(m.group(1)), int(ids, 16), len(ids) == 8, bytes.fromhex(hexd)))
+        try:
+            text = f.read()
+        except OSError as e:
+            raise Refusal("cannot read log %s: %s" % (path, e.strerror or e))
+    for line in re.split(r"\r\n|\r|\n", text):
+        m = rx_l.match(line)
+        if m:
+            if m.group(4):
                 continue
-            m = rx_d.match(line)
-            if m:
-                ids = m.group(2)
-                frames.append((float(m.group(1)), int(ids, 16), len(ids) == 8,
-                               bytes.fromhex(m.group(4).replace(" ", ""))))
+            ids, hexd = m.group(3), m.group(5)
+            if len(hexd) % 2:
+                continue
+            frames.append((float(m.group(1)), m.group(2), int(ids, 16), len(ids) == 8, bytes.fromhex(hexd)))
+            continue
+        m = rx_d.match(line)
+        if m:
+            ids = m.group(3)
+            frames.append((float(m.group(1)), m.group(2), int(ids, 16), len(ids) == 8,
+                           bytes.fromhex(m.group(5).replace(" ", ""))))
     if not frames:
         raise Refusal("log %s holds no candump frame" % path)
     return frames
@@ -279,15 +264,12 @@ def measure_period(times):
     return int(round(median(near) * 1000.0))
 
 
-def mux_matches(frame, sig, data):
-    sel = mux_selector(frame)
-    if sel is None or sig.mux_val is None:
-        return True
-    return extract(data, dbc_start_bit(sel), sel.size, sel.is_little_endian, False) == sig.mux_val
+
+
 
 
 def extract(data, start, length, intel, signed):
-    """Raw value per vehicle-bus.md; None when the frame is too short."""
+    """Raw value per the DBC bit layout; None when the frame is too short."""
     v = 0
     bits = signal_bits(start, length, intel)
     if intel:
@@ -301,27 +283,34 @@ def extract(data, start, length, intel, signed):
     return v
 
 
-def mux_pages(frame, sig):
-    """How many pages take turns in the frame of a multiplexed signal (the
-    values the DBC defines for the selector or uses in its signals); 1 for a
-    plain signal."""
-    if sig.mux_val is None:
-        return 1
-    sel = mux_selector(frame)
-    return max(1, len({s.mux_val for s in frame.signals if s.mux_val is not None}
-                      | set(int(k) for k in (sel.values if sel else {}))))
+def carries(conds, data):
+    """The frame's selectors lie in every condition's range."""
+    for sel, (lo, hi) in conds:
+        v = extract(data, dbc_start_bit(sel), int(sel.size), sel.is_little_endian, False)
+        if v is None or not lo <= v <= hi:
+            return False
+    return True
 
 
-def input_period(frame, sig, log_frames, period_ms, what):
+def input_period(frame, sig, conds, log_frames, period_ms, what):
+    pages = rules.pages_factor(frame, conds)
     if frame.cycle_time and frame.cycle_time > 0:
-        return int(frame.cycle_time) * mux_pages(frame, sig), "GenMsgCycleTime"
+        return int(math.ceil(int(frame.cycle_time) * pages - 1e-9)), "GenMsgCycleTime" + (
+            " x %g pages" % pages if conds else "")
     if log_frames is not None:
         ext = bool(frame.arbitration_id.extended)
         fid = frame.arbitration_id.id
-        times = [t for t, i, e, d in log_frames if i == fid and e == ext and mux_matches(frame, sig, d)]
-        p = measure_period(times)
-        if p is not None:
-            return p, "measured from the log (%d frames)" % len(times)
+        mine = [(t, d) for t, _, i, e, d in log_frames if i == fid and e == ext]
+        if conds:
+            p = measure_period([t for t, _ in mine])
+            n_in = sum(1 for _, d in mine if carries(conds, d))
+            if p is not None and n_in >= 5:
+                return int(round(p * len(mine) / float(n_in))), (
+                    "the log (%d frames, %d of them carry it)" % (len(mine), n_in))
+        else:
+            p = measure_period([t for t, _ in mine])
+            if p is not None:
+                return p, "the log (%d frames)" % len(mine)
     if period_ms is not None:
         return period_ms, "--period-ms"
     raise Refusal("%s %s.%s: no period: the DBC has no GenMsgCycleTime for %s%s; give --log DRIVE.log "
@@ -347,52 +336,201 @@ def sanitize(name, room=NAME_MAX):
     return n[:room]
 
 
-def physical_range(sig):
-    lo, hi = sig.calculate_raw_range()
-    f, o = float(sig.factor), float(sig.offset)
-    a, b = lo * f + o, hi * f + o
-    return min(a, b), max(a, b)
 
 
-def build_input(db, ref, role, unit_override, args, log_frames):
+
+
+def manual_options(args):
+    """--qualifier and --na-raw by MSG.SIG (parsed, not yet resolved)."""
+    quals, nas = {}, {}
+    for spec in args.qualifier:
+        m = re.match(r"^([^=\s]+\.[^=\s]+)=(?:(none)|([^:\s]+\.[^:\s]+):invalid-when=([01]))$", spec)
+        if not m:
+            raise Refusal("--qualifier %s: give MSG.SIG=MSG.QSIG:invalid-when=0|1 or MSG.SIG=none" % spec)
+        if m.group(1) in quals:
+            raise Refusal("--qualifier %s given twice" % m.group(1))
+        quals[m.group(1)] = None if m.group(2) else (m.group(3), int(m.group(4)))
+    for spec in args.na_raw:
+        m = re.match(r"^([^=\s]+\.[^=\s]+)=(none|[-+]?(?:0[xX][0-9A-Fa-f]+|\d+)(?:,[-+]?(?:0[xX][0-9A-Fa-f]+|\d+))?)$",
+                     spec)
+        if not m:
+            raise Refusal("--na-raw %s: give MSG.SIG=RAW[,RAW] (at most two raw values) or MSG.SIG=none" % spec)
+        if m.group(1) in nas:
+            raise Refusal("--na-raw %s given twice" % m.group(1))
+        nas[m.group(1)] = [] if m.group(2) == "none" else [int(x, 0) for x in m.group(2).split(",")]
+    return quals, nas
+
+
+def decimal_option(text, what, lo_open, hi):
+    """An exact decimal option in (lo_open, hi]."""
+    try:
+        v = D(str(text).strip())
+    except decimal.InvalidOperation:
+        raise Refusal("%s %s: not a number" % (what, text))
+    if not v.is_finite() or not (v > lo_open and (hi is None or v <= hi)):
+        raise Refusal("%s %s: must be in (%s, %s]" % (what, text, lo_open, "inf" if hi is None else hi))
+    num(v)
+    return v
+
+
+def build_input(dbc, ref, role, c, args, log_frames, manual, notes):
     what = "--speed" if role == "speed" else "--force"
-    frame, sig = find_signal(db, ref, what)
+    frame, sig = dbc.find(ref, what)
     if sig.is_float:
         raise Refusal("%s %s: a float signal, which the monitor does not read" % (what, ref))
     if sig.size > 32:
         raise Refusal("%s %s: length %d bits, more than 32" % (what, ref, sig.size))
     if sig.size < 1:
         raise Refusal("%s %s: length 0" % (what, ref))
-    if float(sig.factor) == 0.0:
+    if rules.dec(sig.factor) == 0:
         raise Refusal("%s %s: factor 0" % (what, ref))
+    unit_override = c.get(role + "_unit")
     unit = unit_override if unit_override is not None else (sig.unit or "").strip()
     q = UNITS.get(unit.lower())
     if q is None:
         if unit_override is not None:
             raise Refusal("%s-unit %r: not a known unit (%s)" % (what, unit, " ".join(sorted(UNITS))))
-        raise Refusal("%s %s: unit %r is not known; state it with %s-unit U (one of: %s)"
+        raise Refusal("%s %s: unit %r is not known; state it with %s-unit U (one of: %s; --unit-scale S "
+                      "after it when one raw physical unit is S U)"
                       % (what, ref, unit, what, ", ".join(sorted(UNITS))))
     if role == "speed" and q != "speed":
         raise Refusal("%s %s: unit %r is a %s, not a speed" % (what, ref, unit, q))
     if role == "force" and q == "speed":
         raise Refusal("%s %s: unit %r is a speed, not a force, pressure or torque" % (what, ref, unit))
+    scale = c.get(role + "_scale", D(1))
+    try:
+        factor = rules.dec(sig.factor) * scale
+        offset = rules.dec(sig.offset) * scale
+        conds = rules.conditions(frame, sig)
+    except rules.RuleRefusal as e:
+        raise Refusal("%s %s: %s" % (what, ref, e))
+    cid_text = "%s.%s" % (frame.name, sig.name)
     d = {"id": frame.arbitration_id.id, "extended": bool(frame.arbitration_id.extended),
          "min_dlc": int(frame.size), "start_bit": dbc_start_bit(sig), "length": int(sig.size),
-         "byte_order": "intel" if sig.is_little_endian else "motorola",
-         "signed": bool(sig.is_signed), "factor": sig.factor, "offset": sig.offset, "unit": unit}
-    sel = mux_selector(frame)
-    if sig.mux_val is not None and sel is not None:
-        d.update(mux_start_bit=dbc_start_bit(sel), mux_length=int(sel.size),
-                 mux_byte_order="intel" if sel.is_little_endian else "motorola",
-                 mux_value=int(sig.mux_val))
-    for key, v in zip(("na_raw", "na_raw2"), na_values(sig)):
+         "byte_order": order(sig), "signed": bool(sig.is_signed), "factor": factor, "offset": offset,
+         "unit": unit}
+    if len(cid_text) <= SIGNAL_MAX:
+        d["signal"] = cid_text
+    for k, (sel, (lo, hi)) in enumerate(conds):
+        p = "mux" if k == 0 else "mux2"
+        d.update({p + "_start_bit": dbc_start_bit(sel), p + "_length": int(sel.size),
+                  p + "_byte_order": order(sel), p + "_value": lo})
+        if hi != lo:
+            d[p + "_value_max"] = hi
+
+    def phys(raw):
+        return D(raw) * factor + offset
+    rlo, rhi = rules.raw_limits(sig)
+    carried = sorted((phys(rlo), phys(rhi)))
+    dmin, dmax = rules.dec(sig.min) * scale, rules.dec(sig.max) * scale
+    declared = None if (dmin == 0 and dmax == 0) else tuple(sorted((dmin, dmax)))
+    unit_txt = unit + (" (x %s)" % num(scale) if scale != 1 else "")
+    if declared is not None and not args.ignore_dbc_range:
+        lo, hi = max(declared[0], carried[0]), min(declared[1], carried[1])
+        rng_src = "the declared range [%s|%s] %s" % (num(declared[0]), num(declared[1]), unit)
+        if hi <= 0 or lo > hi:
+            raise Refusal("%s %s: the declared range [%s|%s] %s holds no positive value the signal can carry "
+                          "(%s..%s); --ignore-dbc-range uses the signal's whole range"
+                          % (what, ref, num(declared[0]), num(declared[1]), unit_txt, num(carried[0]),
+                             num(carried[1])))
+        used_declared = declared
+    else:
+        lo, hi = -abs(factor) / 2, carried[1]
+        rng_src = "the whole range of the signal (%s)" % ("--ignore-dbc-range" if declared is not None
+                                                           else "the DBC declares [0|0]")
+        if hi <= 0:
+            raise Refusal("%s %s: the signal cannot be positive (range %s..%s %s)"
+                          % (what, ref, num(carried[0]), num(carried[1]), unit))
+        used_declared = None
+    d["min"], d["max"] = rules.outward(lo, False), rules.outward(hi, True)
+    # not available
+    if ref in manual[1] or cid_text in manual[1]:
+        na = manual[1].get(ref, manual[1].get(cid_text))
+        for v in na:
+            if not rlo <= v <= rhi:
+                raise Refusal("--na-raw %s: %d is not a raw value of the signal (%d..%d)" % (ref, v, rlo, rhi))
+        why = ["%d (--na-raw)" % v for v in na]
+    else:
+        try:
+            na, why = rules.na_codes(sig, phys, lo, hi, used_declared, args.keep_all_ones, (rlo, rhi))
+        except rules.RuleRefusal as e:
+            raise Refusal("%s %s: %s" % (what, ref, str(e).replace("%s", ref)))
+    for key, v in zip(("na_raw", "na_raw2"), na):
         d[key] = v
-    qual = qualifier_of(frame, sig)
-    if qual is not None:
-        d["qualifier_bit"], d["qualifier_invalid"] = qual
-    d["period_ms"], d["period_source"] = input_period(frame, sig, log_frames, args.period_ms, what)
+    notes.append("%s: range %s..%s %s from %s; not available: %s" % (
+        cid_text, num(d["min"]), num(d["max"]), unit_txt, rng_src, ", ".join(why) if why else "none"))
+    # qualifier
+    bit_of = dbc_start_bit
+    mq = manual[0].get(ref, manual[0].get(cid_text, False))
+    if mq is not False:
+        if mq is None:
+            qsig, bad, qnote = None, None, "no qualifier bit (--qualifier %s=none)" % ref
+        else:
+            qf, qsig = dbc.find(mq[0], "--qualifier %s=" % ref)
+            bad = mq[1]
+            if qf is not frame:
+                raise Refusal("--qualifier %s=%s: the qualifier must be in the same message (%s)"
+                              % (ref, mq[0], frame.name))
+            if int(qsig.size) != 1:
+                raise Refusal("--qualifier %s=%s: %s has %d bits, a qualifier is one bit"
+                              % (ref, mq[0], qsig.name, qsig.size))
+            try:
+                page_ok = rules.same_page(frame, sig, qsig)
+            except rules.RuleRefusal as e:
+                raise Refusal("--qualifier %s=%s: %s" % (ref, mq[0], e))
+            if not page_ok:
+                raise Refusal("--qualifier %s=%s: %s is not in every frame that carries %s (another page)"
+                              % (ref, mq[0], qsig.name, sig.name))
+            if bit_of(qsig) // 8 >= int(frame.size):
+                raise Refusal("--qualifier %s=%s: bit %d lies beyond the DLC %d of %s"
+                              % (ref, mq[0], bit_of(qsig), frame.size, frame.name))
+            qnote = "qualifier %s (bit %d, invalid when %d): --qualifier" % (qsig.name, bit_of(qsig), bad)
+    else:
+        qsig, bad, qnote = rules.choose_qualifier(frame, sig, bit_of, int(frame.size))
+    if qsig is not None:
+        d["qualifier_bit"], d["qualifier_invalid"] = bit_of(qsig), bad
+    notes.append("%s: %s" % (cid_text, qnote))
+    d["period_ms"], d["period_source"] = input_period(frame, sig, conds, log_frames, args.period_ms, what)
     if not 1 <= d["period_ms"] <= 1000:
         raise Refusal("%s %s: period %d ms outside 1..1000" % (what, ref, d["period_ms"]))
+    protection(d, dbc, frame, sig, conds, args)
+    d["stale_cycles"] = STALE_CYCLES
+    if q == "speed":
+        si, kind = SPEED_SI[unit.lower()]
+        per_unit = si if kind == "linear" else si * args.wheel_radius_m
+        step = STEP_ACCEL_MPS2 * d["period_ms"] / 1000.0 / per_unit
+    else:
+        step = float(d["max"]) / 4.0
+    d["step_max"] = D("%.6g" % max(step, float(abs(factor))))
+    if log_frames is not None:
+        notes.append("%s: %s" % (cid_text, log_counts(frame, sig, conds, log_frames, phys, declared, unit)))
+    d["_ref"], d["_quantity"], d["_scale"] = ref, q, scale
+    return d
+
+
+def log_counts(frame, sig, conds, log_frames, phys, declared, unit):
+    """How many logged values lie outside the declared range, how many are all ones."""
+    ext = bool(frame.arbitration_id.extended)
+    fid = frame.arbitration_id.id
+    n = out = ones = 0
+    ones_raw = rules.all_ones(sig)
+    for _, _, i, e, data in log_frames:
+        if i != fid or e != ext or len(data) < frame.size or not carries(conds, data):
+            continue
+        raw = extract(data, dbc_start_bit(sig), int(sig.size), sig.is_little_endian, sig.is_signed)
+        if raw is None:
+            continue
+        n += 1
+        if declared is not None and not declared[0] <= phys(raw) <= declared[1]:
+            out += 1
+        if raw == ones_raw:
+            ones += 1
+    rng = "outside the declared range [%s|%s] %s" % (num(declared[0]), num(declared[1]), unit) \
+        if declared is not None else "outside a declared range (none: [0|0])"
+    return "%d logged values, %d %s, %d all ones (raw %d)" % (n, out, rng, ones, ones_raw)
+
+
+def protection(d, dbc, frame, sig, conds, args):
     prot = args.protection
     d["protection"] = prot
     if prot == "p01":
@@ -413,32 +551,37 @@ def build_input(db, ref, role, unit_override, args, log_frames):
                           % frame.name)
         d["data_id_list"] = " ".join("0x%02X" % v for v in vals)
     elif prot == "counter":
-        c = find_counter(db, frame, sig, args.counter)
+        c = find_counter(dbc, frame, sig, args.counter)
         d.update(counter_start_bit=dbc_start_bit(c), counter_length=int(c.size),
-                 counter_byte_order="intel" if c.is_little_endian else "motorola",
-                 counter_modulus=1 << int(c.size))
+                 counter_byte_order=order(c), counter_modulus=1 << int(c.size))
     if prot != "none":
         # the sender counts frames; a multiplexed input sees every pages-th of them
         modulus = d.get("counter_modulus", 15 if prot == "p01" else 16)
-        d["max_delta_counter"] = min(MAX_DELTA_COUNTER * mux_pages(frame, sig), modulus - 1)
-    d["stale_cycles"] = STALE_CYCLES
-    # community DBC files often declare a wrong [min|max]: the plausible
-    # maximum is the largest value the signal can carry
-    lo, top = physical_range(sig)
-    if top <= 0:
-        raise Refusal("%s %s: the signal cannot be positive (range %g..%g %s)" % (what, ref, lo, top, unit))
-    # zero within half a step: raw x factor + offset of a standstill with a
-    # negative offset (6767 x 0.01 - 67.67) may come out a hair below zero
-    d["min"], d["max"] = -float("%.6g" % (abs(float(sig.factor)) / 2)), top
-    if q == "speed":
-        si, kind = SPEED_SI[unit.lower()]
-        per_unit = si if kind == "linear" else si * args.wheel_radius_m
-        step = STEP_ACCEL_MPS2 * d["period_ms"] / 1000.0 / per_unit
-    else:
-        step = top / 4.0
-    d["step_max"] = float("%.6g" % max(step, abs(float(sig.factor))))
-    d["_ref"], d["_quantity"] = ref, q
-    return d
+        pages = int(math.ceil(rules.pages_factor(frame, conds) - 1e-9))
+        d["max_delta_counter"] = min(MAX_DELTA_COUNTER * pages, modulus - 1)
+
+
+CORNER_HELP = (
+    ("--corner", "POS", "start a corner: FL, FR, RL or RR; the options below belong to the last --corner"),
+    ("--speed", "MSG.SIG", "the corner's wheel (or vehicle) speed signal, by DBC or long name"),
+    ("--force", "MSG.SIG", "the corner's brake signal: a force, pressure or torque"),
+    ("--speed-unit", "U", "the speed's unit where the DBC has none or a wrong one (km/h kph m/s mph rad/s rpm 1/min)"),
+    ("--force-unit", "U", "the brake signal's unit where the DBC has none or a wrong one (N kN bar kPa MPa psi Nm)"),
+    ("--speed-scale", "S", "one raw physical unit of the speed signal is S speed units (folded exactly into "
+     "factor, offset and range)"),
+    ("--force-scale", "S", "one raw physical unit of the brake signal is S force units (a unit-less pedal value)"),
+    ("--unit-scale", "S", "the scale of the --speed-unit or --force-unit just before it (same as "
+     "--speed-scale / --force-scale)"),
+    ("--piston-area-mm2", "A", "pressure: the total piston area on one side of the caliper, mm^2"),
+    ("--efficiency", "E", "pressure: efficiency eta in (0, 1], default 1"),
+    ("--axle-factor", "K", "pressure: axle factor in (0, 4], default 1"),
+    ("--torque-share", "K", "torque: the share in (0, 1] of the signal acting on this corner (a total or "
+     "per-axle brake torque), default 1"),
+)
+CORNER_TYPES = {"--speed": str, "--force": str, "--speed-unit": str, "--force-unit": str,
+                "--piston-area-mm2": float, "--efficiency": float, "--axle-factor": float,
+                "--speed-scale": "dec", "--force-scale": "dec", "--unit-scale": "dec",
+                "--torque-share": "dec"}
 
 
 def parse_args(argv):
@@ -449,14 +592,12 @@ def parse_args(argv):
         def error(self, message):
             raise Refusal(message)
 
-    corner_opts = {"--speed": str, "--force": str, "--speed-unit": str, "--force-unit": str,
-                   "--piston-area-mm2": float, "--efficiency": float, "--axle-factor": float}
-    corners, rest, cur = [], [], None
+    corners, rest, cur, last_unit = [], [], None, None
     i = 0
     while i < len(argv):
         tok = argv[i]
         key, val = (tok.split("=", 1) + [None])[:2] if tok.startswith("--") else (tok, None)
-        if key == "--corner" or key in corner_opts:
+        if key == "--corner" or key in CORNER_TYPES:
             if val is None:
                 if i + 1 >= len(argv):
                     raise Refusal("%s needs a value" % key)
@@ -468,32 +609,58 @@ def parse_args(argv):
                     raise Refusal("--corner %s: not one of FL, FR, RL, RR" % val)
                 if any(c["pos"] == pos for c in corners):
                     raise Refusal("--corner %s given twice" % pos)
-                cur = {"pos": pos}
+                cur, last_unit = {"pos": pos}, None
                 corners.append(cur)
             else:
                 if cur is None:
                     raise Refusal("%s before any --corner" % key)
+                if key == "--unit-scale":
+                    if last_unit is None:
+                        raise Refusal("--unit-scale %s: give it after --speed-unit U or --force-unit U" % val)
+                    key = "--%s-scale" % last_unit
+                if key in ("--speed-unit", "--force-unit"):
+                    last_unit = key[2:-5]
                 name = key[2:].replace("-", "_")
                 if name in cur:
                     raise Refusal("%s given twice for corner %s" % (key, cur["pos"]))
-                try:
-                    cur[name] = corner_opts[key](val)
-                except ValueError:
-                    raise Refusal("%s %s: not a number" % (key, val))
+                kind = CORNER_TYPES[key]
+                if kind == "dec":
+                    cur[name] = decimal_option(val, key, 0, 1 if key == "--torque-share" else None)
+                else:
+                    try:
+                        cur[name] = kind(val)
+                    except ValueError:
+                        raise Refusal("%s %s: not a number" % (key, val))
         else:
             rest.append(tok)
         i += 1
-    p = P(prog="vehicle_calib.py", description=__doc__.splitlines()[0])
-    p.add_argument("--dbc", required=True)
-    p.add_argument("--log")
-    p.add_argument("--wheel-radius-m", type=float)
-    p.add_argument("--pad-radius-m", type=float)
-    p.add_argument("--period-ms", type=int)
-    p.add_argument("--protection", choices=("none", "p01", "p02", "counter"), default="none")
-    p.add_argument("--counter", action="append", default=[])
-    p.add_argument("--base")
-    p.add_argument("-o", "--output")
-    p.add_argument("--dbc-out")
+    p = P(prog="vehicle_calib.py", description=__doc__.split("\n\n")[0].replace("\n", " "),
+          epilog=__doc__.split("\n\n", 1)[1], formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--dbc", required=True, metavar="CAR.dbc", help="the vehicle's DBC file")
+    p.add_argument("--log", metavar="DRIVE.log", help="a candump log of the vehicle: periods and value counts")
+    p.add_argument("--bus", metavar="IFACE", help="the log's interface the inputs come from: periods measured "
+                   "there only, written as input_iface")
+    p.add_argument("--wheel-radius-m", type=float, metavar="R", help="wheel radius [m] (default: --base's or 0.3)")
+    p.add_argument("--pad-radius-m", type=float, metavar="R", help="effective pad radius [m] (default: --base's)")
+    p.add_argument("--period-ms", type=int, metavar="MS", help="period where neither the DBC nor the log has one")
+    p.add_argument("--protection", choices=("none", "p01", "p02", "counter"), default="none",
+                   help="the inputs' protection (default none)")
+    p.add_argument("--counter", action="append", default=[], metavar="MSG.SIG",
+                   help="the alive counter of a message for --protection counter (one per message)")
+    p.add_argument("--qualifier", action="append", default=[], metavar="MSG.SIG=MSG.QSIG:invalid-when=0|1",
+                   help="the input's qualifier bit by hand (same message and page), or MSG.SIG=none")
+    p.add_argument("--na-raw", action="append", default=[], metavar="MSG.SIG=RAW[,RAW]",
+                   help="the input's 'not available' raw values by hand (at most two), or MSG.SIG=none")
+    p.add_argument("--ignore-dbc-range", action="store_true",
+                   help="the DBC's declared ranges are wrong: plausible from 0 to the largest value carried")
+    p.add_argument("--keep-all-ones", action="store_true",
+                   help="the all-ones raw value is a value, not 'not available'")
+    p.add_argument("--base", metavar="FILE.cal", help="a calibration whose flat keys (the brake) are kept")
+    p.add_argument("-o", "--output", metavar="FILE.cal", help="where to write the calibration (default stdout)")
+    p.add_argument("--dbc-out", metavar="FILE.dbc", help="also write the monitor's output messages per corner")
+    g = p.add_argument_group("per corner (after --corner POS)")
+    for opt, meta, h in CORNER_HELP:
+        g.add_argument(opt, metavar=meta, help=h, dest="_corner_" + opt[2:].replace("-", "_"))
     args = p.parse_args(rest)
     if not corners:
         raise Refusal("no --corner given (e.g. --corner FL --speed MSG.SIG --force MSG.SIG)")
@@ -507,6 +674,8 @@ def parse_args(argv):
             raise Refusal("--%s %g: outside 0.01 .. 2 m" % (name.replace("_", "-"), v))
     if args.period_ms is not None and not 1 <= args.period_ms <= 1000:
         raise Refusal("--period-ms %d: outside 1 .. 1000" % args.period_ms)
+    if args.bus is not None and not IFACE.match(args.bus):
+        raise Refusal("--bus %r: 1..15 characters of A-Z a-z 0-9 _ . -" % args.bus)
     return args, corners
 
 
@@ -532,20 +701,63 @@ def read_base(path):
     return flat
 
 
+
+
+
+
+def wanted_messages(corners, args):
+    refs = [c[k] for c in corners for k in ("speed", "force")] + list(args.counter)
+    refs += [s.split("=", 1)[0] for s in args.qualifier + args.na_raw]
+    refs += [s.split("=", 1)[1].split(":", 1)[0] for s in args.qualifier if "=" in s]
+    return {r.split(".", 1)[0] for r in refs if "." in r}
+
+
+def select_bus(log_frames, inputs_msgs, args):
+    """The log's frames on the inputs' interface; Refusal when a message is on several."""
+    ifaces = sorted({f[1] for f in log_frames})
+    if args.bus is not None:
+        if args.bus not in ifaces:
+            raise Refusal("--bus %s: the log has no frame on %s (its interfaces: %s)"
+                          % (args.bus, args.bus, ", ".join(ifaces)))
+        return [f for f in log_frames if f[1] == args.bus]
+    seen = {}
+    for _, iface, i, e, _ in log_frames:
+        seen.setdefault((i, e), set()).add(iface)
+    for name, key in inputs_msgs:
+        on = sorted(seen.get(key, ()))
+        if len(on) > 1:
+            raise Refusal("message %s is on %d interfaces of the log (%s): choose the inputs' bus with --bus IFACE"
+                          % (name, len(on), ", ".join(on)))
+    return log_frames
+
+
 def build(argv):
     args, corners = parse_args(argv)
     base = read_base(args.base) if args.base else []
     base_vals = dict(base)
     if args.wheel_radius_m is None:
-        args.wheel_radius_m = float(base_vals.get("wheel_radius_m", 0.3))
-    db = load_dbc(args.dbc)
-    log_frames = read_log(args.log) if args.log else None
+        try:
+            args.wheel_radius_m = float(base_vals.get("wheel_radius_m", 0.3))
+        except ValueError:
+            raise Refusal("--base: wheel_radius_m = %s is not a number" % base_vals["wheel_radius_m"])
+    manual = manual_options(args)
+    dbc = Dbc(args.dbc, wanted_messages(corners, args))
+    notes = list(dbc.notes)
+    log_frames = None
+    if args.log:
+        log_frames = read_log(args.log)
+        msgs = []
+        for c in corners:
+            for role in ("speed", "force"):
+                f, _ = dbc.find(c[role], "--" + role)
+                msgs.append((f.name, (f.arbitration_id.id, bool(f.arbitration_id.extended))))
+        log_frames = select_bus(log_frames, msgs, args)
     inputs, by_ref = [], {}
     for c in corners:
         for role in ("speed", "force"):
             ref = c[role]
             if ref not in by_ref:
-                d = build_input(db, ref, role, c.get(role + "_unit"), args, log_frames)
+                d = build_input(dbc, ref, role, c, args, log_frames, manual, notes)
                 names = {x["name"] for x in inputs}
                 name = sanitize(ref.split(".", 1)[1])
                 k = 2
@@ -561,6 +773,9 @@ def build(argv):
                 override = c.get(role + "_unit")
                 if override is not None and override != d["unit"]:
                     raise Refusal("%s: unit %s here but %s for another corner" % (ref, override, d["unit"]))
+                if c.get(role + "_scale", D(1)) != d["_scale"]:
+                    raise Refusal("%s: scale %s here but %s for another corner"
+                                  % (ref, num(c.get(role + "_scale", D(1))), num(d["_scale"])))
                 if (role == "speed") != (d["_quantity"] == "speed"):
                     raise Refusal("%s: used as a speed and as a force" % ref)
             c[role + "_input"] = by_ref[ref]
@@ -572,6 +787,9 @@ def build(argv):
         for k in ("piston_area_mm2", "efficiency", "axle_factor"):
             if c.get(k) is not None and fq != "pressure":
                 raise Refusal("corner %s: --%s applies to a pressure only" % (c["pos"], k.replace("_", "-")))
+        if c.get("torque_share") is not None and fq != "torque":
+            raise Refusal("corner %s: --torque-share applies to a brake torque only (--force %s is a %s)"
+                          % (c["pos"], c["force"], fq))
         if c.get("piston_area_mm2") is not None and not c["piston_area_mm2"] > 0:
             raise Refusal("corner %s: --piston-area-mm2 must be > 0" % c["pos"])
         if c.get("efficiency") is not None and not 0 < c["efficiency"] <= 1:
@@ -580,11 +798,17 @@ def build(argv):
             raise Refusal("corner %s: --axle-factor must be in (0, 4]" % c["pos"])
     if len(inputs) > MAX_INPUTS:
         raise Refusal("%d inputs, at most %d" % (len(inputs), MAX_INPUTS))
-    return args, corners, inputs, base
+    refs = set(by_ref) | {"%s.%s" % tuple(d["signal"].split(".", 1)) for d in inputs if "signal" in d}
+    for opt, table in (("--qualifier", manual[0]), ("--na-raw", manual[1])):
+        for ref in table:
+            if ref not in refs:
+                raise Refusal("%s %s: not an input (give it with --speed or --force)" % (opt, ref))
+    return args, corners, inputs, base, notes
 
 
-INPUT_KEYS = ("id", "extended", "min_dlc", "start_bit", "length", "byte_order", "signed", "factor",
-              "offset", "unit", "mux_start_bit", "mux_length", "mux_byte_order", "mux_value",
+INPUT_KEYS = ("signal", "id", "extended", "min_dlc", "start_bit", "length", "byte_order", "signed", "factor",
+              "offset", "unit", "mux_start_bit", "mux_length", "mux_byte_order", "mux_value", "mux_value_max",
+              "mux2_start_bit", "mux2_length", "mux2_byte_order", "mux2_value", "mux2_value_max",
               "na_raw", "na_raw2", "qualifier_bit", "qualifier_invalid", "protection", "data_id",
               "data_id_list", "counter_start_bit", "counter_length", "counter_byte_order",
               "counter_modulus", "max_delta_counter", "period_ms", "stale_cycles", "min", "max",
@@ -596,10 +820,7 @@ def fmt_value(key, v):
         return "yes" if v else "no"
     if key == "id":
         return "0x%X" % v
-    if key in ("factor", "offset"):
-        t = str(v)  # canmatrix keeps the DBC's decimal text (Decimal)
-        return t if "E" not in t.upper() else repr(float(v))
-    if isinstance(v, float):
+    if isinstance(v, (D, float)):
         return num(v)
     return str(v)
 
@@ -617,7 +838,7 @@ def render(args, corners, inputs, base, argv):
     out.append(line)
     base_keys = set()
     for key, val in base:
-        if key in LEGACY_KEYS or key in ("wheel_radius_m", "pad_radius_m"):
+        if key in LEGACY_KEYS or key in ("wheel_radius_m", "pad_radius_m", "input_iface"):
             continue
         out.append("%s = %s" % (key, val))
         base_keys.add(key)
@@ -627,6 +848,8 @@ def render(args, corners, inputs, base, argv):
             out.append("%s = %s" % (key, num(opt)))
         elif key in base_vals:
             out.append("%s = %s" % (key, base_vals[key]))
+    if args.bus is not None:
+        out.append("input_iface = %s" % args.bus)
     for d in inputs:
         out.append("")
         out.append("[input %s]" % d["name"])
@@ -639,7 +862,7 @@ def render(args, corners, inputs, base, argv):
         out.append("[corner %s]" % c["pos"])
         out.append("speed = %s" % c["speed_input"]["name"])
         out.append("force = %s" % c["force_input"]["name"])
-        for k in ("piston_area_mm2", "efficiency", "axle_factor"):
+        for k in ("piston_area_mm2", "efficiency", "axle_factor", "torque_share"):
             if c.get(k) is not None:
                 out.append("%s = %s" % (k, num(c[k])))
         for k, v in output_ids(c["pos"], base_vals).items():
@@ -661,7 +884,7 @@ def output_ids(pos, base_vals):
     return ids
 
 
-# ---------------------------------------------------------------- DBC out
+
 
 def dbc_out(corners, base_vals, path):
     """squeal.dbc's output messages once per corner (suffix _FL ...; corner FL
@@ -713,20 +936,58 @@ def dbc_out(corners, base_vals, path):
         raise Refusal("cannot write %s: %s" % (path, e.strerror or e))
 
 
+
+
+# ---------------------------------------------------------------- checked writing
+
+def checked_write(text, path):
+    """Write the calibration only when the firmware's reader sets it up:
+    `squeal-sim calib-check` on a temporary file, then rename (or print)."""
+    sim = os.environ.get("VEHICLE_CALIB_SIM") or CHECKER
+    if not (os.path.isfile(sim) and os.access(sim, os.X_OK)):
+        raise Refusal("cannot check the calibration: %s is missing; run make first (it builds %s)"
+                      % (sim, os.path.relpath(CHECKER, ROOT)))
+    to_stdout = path is None or path == "-"
+    folder = None if to_stdout else (os.path.dirname(os.path.abspath(path)))
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=".vehicle_calib-", suffix=".cal", dir=folder)
+    except OSError as e:
+        raise Refusal("cannot write %s: %s" % (path, e.strerror or e))
+    try:
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
+        try:
+            p = subprocess.run([sim, "calib-check", tmp], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               timeout=60)
+        except (OSError, subprocess.TimeoutExpired) as e:
+            raise Refusal("cannot check the calibration with %s: %s" % (sim, e))
+        if p.returncode != 0:
+            lines = [l for l in p.stderr.decode("utf-8", "replace").splitlines() if l.strip()]
+            why = lines[-1] if lines else "exit status %d, no message" % p.returncode
+            shown = "<stdout>" if to_stdout else path
+            raise Refusal("the firmware refuses the calibration: %s" % why.replace(tmp, shown))
+        if to_stdout:
+            sys.stdout.write(text)
+        else:
+            try:
+                os.replace(tmp, path)
+            except OSError as e:
+                raise Refusal("cannot write %s: %s" % (path, e.strerror or e))
+            tmp = None
+    finally:
+        if tmp is not None and os.path.exists(tmp):
+            os.unlink(tmp)
+
+
 def main(argv):
     try:
-        args, corners, inputs, base = build(argv)
+        args, corners, inputs, base, notes = build(argv)
         text = render(args, corners, inputs, base, argv)
+        checked_write(text, args.output)
         if args.dbc_out:
             dbc_out(corners, dict(base), args.dbc_out)
-        if args.output and args.output != "-":
-            try:
-                with open(args.output, "w") as f:
-                    f.write(text)
-            except OSError as e:
-                raise Refusal("cannot write %s: %s" % (args.output, e.strerror or e))
-        else:
-            sys.stdout.write(text)
+        for n in notes:
+            sys.stderr.write("vehicle_calib.py: note: %s\n" % n)
     except Refusal as e:
         sys.stderr.write("vehicle_calib.py: %s\n" % e)
         return 1

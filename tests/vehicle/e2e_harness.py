@@ -290,6 +290,8 @@ def main(argv, layouts):
     with tempfile.TemporaryDirectory() as tmp:
         for sim in [None] if self_test else vehref.SIMS:
             vehref.SIM = sim
+            if sim is not None:
+                vehref.use_checker(sim)
             for name, layout, seed in layouts:
                 label = name if sim is None else "%s (%s)" % (name, os.path.basename(os.path.dirname(sim)))
                 run_layout(r, label, layout, tmp, replay, seed)

@@ -46,7 +46,8 @@ EXPECT = {
     "esc_motorola": {
         "ESC_WheelSpeeds.WhlSpd_FL": ([32767], (7, 1), 20),
         "ESC_WheelSpeeds.WhlSpd_RL": ([32767], (39, 1), 20),
-        "ESC_Brake.BrkPrs_MC": ([4095, 4094], None, 20),
+        # 4094 "Error" lies inside the declared [0|409.4] bar, 4095 "Init" (all ones) beyond it
+        "ESC_Brake.BrkPrs_MC": ([4094, 4095], None, 20),
     },
     "esc_intel": dict([("ABS_WheelSpeed.WHEEL_SPEED_" + p, ([], None, 24)) for p in vehref.POSITIONS]
                       + [("ABS_WheelPressure.PRESS_" + p, ([4095], None, 24)) for p in vehref.POSITIONS]),
@@ -88,7 +89,9 @@ def check_layout(r, name, layout, tmp):
         gen_drive.write_log(log, gen_drive.Drive(layout, seed=5).frames())
     cal = os.path.join(tmp, name + ".cal")
     rc, out, err = vehref.run_tool(vehref.calib_command(layout, log=log, out=cal))
-    if not r.check(rc == 0 and err == "", "%s: vehicle_calib.py exits 0 silently (%d: %s)" % (name, rc, err)):
+    notes, other = vehref.notes_of(err)
+    if not r.check(rc == 0 and not other, "%s: vehicle_calib.py exits 0 with notes only (%d: %s)"
+                   % (name, rc, other)):
         return
     with open(cal) as f:
         text = f.read()
@@ -222,7 +225,8 @@ def check_refusals(r, tmp):
          "cannot read DBC"),
         ("DBC is a directory", [tmp, "--corner", "FL", "--speed", "A.B", "--force", "C.D"], "cannot read DBC"),
         ("garbage DBC", [garbage, "--corner", "FL", "--speed", "A.B", "--force", "C.D"], "not a DBC"),
-        ("broken DBC", [broken, "--corner", "FL", "--speed", "Odd.S", "--force", "Odd.S"], "DBC"),
+        ("broken DBC", [broken, "--corner", "FL", "--speed", "Odd.S", "--force", "Odd.S"],
+         "broken.dbc:3: not a valid SG_ statement, in message Odd which is asked for"),
         ("no period", [intel, "--corner", "FL", "--speed", "ABS_WheelSpeed.WHEEL_SPEED_FL", "--force",
                        "ABS_WheelPressure.PRESS_FL", "--piston-area-mm2", "2000"],
          "GenMsgCycleTime"),
@@ -368,6 +372,7 @@ def check_mutants(r, tmp, n=150):
     with open(vehref.layout_dbc(layout)) as f:
         lines = f.read().splitlines()
     bad = []
+    built = 0
     path = os.path.join(tmp, "mutant.dbc")
     for k in range(n):
         m = list(lines)
@@ -393,10 +398,13 @@ def check_mutants(r, tmp, n=150):
                 rc = vc.main(argv)
         except BaseException as e:  # noqa: B902  (anything escaping main is the failure)
             rc, err = -1, io.StringIO("%s %s" % (type(e).__name__, e))
-        if not ((rc == 0 and err.getvalue() == "") or (rc == 1 and err.getvalue().count("\n") == 1)):
+        notes, other = vehref.notes_of(err.getvalue())
+        built += rc == 0
+        if not ((rc == 0 and not other) or (rc == 1 and err.getvalue().count("\n") == 1)):
             bad.append((k, rc, err.getvalue()[:200]))
     r.check(not bad, "%d damaged DBCs: a calibration or a one-line refusal each (%d not: %s)"
             % (n, len(bad), bad[:3]))
+    r.check(built > n // 3, "damaged DBCs: most still give a calibration (%d of %d)" % (built, n))
 
 
 def check_own_dbc(r):
@@ -458,6 +466,7 @@ def check_drive(r):
 
 
 def main():
+    os.environ["VEHICLE_CALIB_SIM"] = vehref.STUB_CHECKER   # for vc.main() in this process
     r = vehref.Results()
     with tempfile.TemporaryDirectory() as tmp:
         for name, layout in vehref.LAYOUTS.items():

@@ -221,6 +221,8 @@ def main(argv):
     with tempfile.TemporaryDirectory() as tmp:
         for sim in sims:
             vehref.SIM = sim
+            if sim is not None:
+                vehref.use_checker(sim)
             for name, layout in vehref.LAYOUTS.items():
                 c = run_layout(r, name, layout, tmp, n, self_test)
                 total += c or 0

@@ -119,9 +119,48 @@ def calib_command(layout, log=None, out=None, extra=()):
     return cmd
 
 
-def run_tool(args, cwd=None):
-    p = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=cwd)
+# What checks the calibrations vehicle_calib.py writes: the stand-in
+# (stub_calib_check.py) in the Python-only tests; the tests that run
+# squeal-sim set it to the program under test (use_checker).
+STUB_CHECKER = os.path.join(HERE, "stub_calib_check.py")
+CHECKER = STUB_CHECKER
+
+
+def has_calib_check(sim):
+    """squeal-sim answers `calib-check --help` (the command exists)."""
+    try:
+        p = subprocess.run([sim, "calib-check", "--help"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           timeout=60)
+    except (OSError, subprocess.TimeoutExpired):
+        return False
+    return p.returncode == 0
+
+
+def use_checker(sim):
+    """Check with sim's calib-check; a squeal-sim without the command is
+    reported (printed) and the stand-in checks instead."""
+    global CHECKER
+    if sim and has_calib_check(sim):
+        CHECKER = sim
+    else:
+        print("note: %s has no calib-check command; the calibrations are checked by %s"
+              % (sim, os.path.basename(STUB_CHECKER)))
+        CHECKER = STUB_CHECKER
+    return CHECKER
+
+
+def run_tool(args, cwd=None, checker=None):
+    env = dict(os.environ)
+    env["VEHICLE_CALIB_SIM"] = checker or CHECKER
+    p = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=cwd, env=env)
     return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+
+
+def notes_of(err):
+    """The note lines of a successful run's stderr, and the other lines."""
+    notes = [l for l in err.splitlines() if l.startswith("vehicle_calib.py: note: ")]
+    other = [l for l in err.splitlines() if l and not l.startswith("vehicle_calib.py: note: ")]
+    return notes, other
 
 
 def load_dbc(path):
@@ -189,10 +228,16 @@ def extract(data, start, length, order, signed=False):
 
 
 def mux_match(inp, data):
-    if "mux_start_bit" not in inp:
-        return True
-    sel = extract(data, ival(inp, "mux_start_bit"), ival(inp, "mux_length"), inp["mux_byte_order"])
-    return sel is not None and sel == ival(inp, "mux_value")
+    """Every selector condition of the input (mux_*, mux2_*) holds: the
+    selector's raw value lies in [value, value_max]."""
+    for p in ("mux", "mux2"):
+        if p + "_start_bit" not in inp:
+            continue
+        sel = extract(data, ival(inp, p + "_start_bit"), ival(inp, p + "_length"), inp[p + "_byte_order"])
+        lo = ival(inp, p + "_value")
+        if sel is None or not lo <= sel <= ival(inp, p + "_value_max", lo):
+            return False
+    return True
 
 
 def reference_rows(inputs, frames):

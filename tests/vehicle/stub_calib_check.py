@@ -1,0 +1,28 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Stand-in for `squeal-sim calib-check FILE` in the Python-only tests of
+tools/vehicle_calib.py: reads the sections with vehref.parse_calib and
+answers as calib-check does on a file that sets up (`FILE: ok (N inputs,
+M corners)`, exit 0). It checks none of the firmware's rules: the tests that
+run squeal-sim use the real calib-check."""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import vehref  # noqa: E402
+
+
+def main(argv):
+    if len(argv) != 2 or argv[0] != "calib-check":
+        sys.stderr.write("usage: stub_calib_check.py calib-check FILE\n")
+        return 1
+    path = argv[1]
+    with open(path) as f:
+        text = f.read()
+    _, inputs, corners = vehref.parse_calib(text)
+    print("%s: ok (%d inputs, %d corners)" % (path, len(inputs), len(corners)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
