@@ -159,10 +159,20 @@ static void big_mul_big64(big_t *a, const big_t *b)
 
 static void big_mul_pow10(big_t *a, uint32_t n)
 {
-	uint32_t i;
+	uint32_t left = n;
+	uint32_t guard;
 
-	for (i = 0U; i < n; i++) {
-		big_mul_u32(a, 10U);
+	/* in steps of 10^9, the largest power of ten below 2^32 */
+	for (guard = 0U; (left > 0U) && (guard < 64U); guard++) {
+		uint32_t p = 1U;
+		uint32_t k;
+		const uint32_t step = (left > 9U) ? 9U : left;
+
+		for (k = 0U; k < step; k++) {
+			p *= 10U;
+		}
+		big_mul_u32(a, p);
+		left -= step;
 	}
 }
 
@@ -193,9 +203,18 @@ static void big_shr1(big_t *a)
 
 static void big_shl(big_t *a, uint32_t n)
 {
+	const uint32_t words = n / 32U;
+	const uint32_t bits = n % 32U;
 	uint32_t i;
 
-	for (i = 0U; i < n; i++) {
+	HAL_REQUIRE(words < BIG_LIMBS);
+	for (i = BIG_LIMBS; i > words; i--) {
+		a->w[i - 1U] = a->w[i - 1U - words];
+	}
+	for (i = 0U; i < words; i++) {
+		a->w[i] = 0U;
+	}
+	for (i = 0U; i < bits; i++) {
 		big_shl1(a, 0U);
 	}
 }
@@ -211,8 +230,21 @@ static void big_divmod(const big_t *n, const big_t *d, big_t *q, big_t *r)
 	uint32_t i;
 
 	HAL_REQUIRE(!big_is_zero(d));
+	if ((big_bitlen(n) <= 64U) && (big_bitlen(d) <= 64U)) {
+		/* the common case, in one native division */
+		const uint64_t a = big_low64(n);
+		const uint64_t b = big_low64(d);
+
+		big_set(q, a / b);
+		big_set(r, a % b);
+		return;
+	}
 	big_set(q, 0U);
 	big_set(r, 0U);
+	if (big_cmp(n, d) < 0) {
+		*r = *n;
+		return;
+	}
 	for (i = big_bitlen(n); i > 0U; i--) {
 		big_shl1(r, big_bit(n, i - 1U));
 		if (big_cmp(r, d) >= 0) {
@@ -248,6 +280,20 @@ static void big_gcd(const big_t *x, const big_t *y, big_t *g)
 	uint32_t guard;
 
 	HAL_REQUIRE(!big_is_zero(&a) && !big_is_zero(&b));
+	if ((big_bitlen(&a) <= 64U) && (big_bitlen(&b) <= 64U)) {
+		/* Euclid in 64 bits: fewer than 93 steps below 2^64 */
+		uint64_t x64 = big_low64(&a);
+		uint64_t y64 = big_low64(&b);
+
+		for (guard = 0U; (y64 != 0U) && (guard < 128U); guard++) {
+			const uint64_t t = x64 % y64;
+
+			x64 = y64;
+			y64 = t;
+		}
+		big_set(g, x64);
+		return;
+	}
 	while ((((a.w[0] | b.w[0]) & 1U) == 0U) && (k < BIG_BITS)) {
 		big_shr1(&a);
 		big_shr1(&b);
