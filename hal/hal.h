@@ -194,7 +194,7 @@ void hal_watchdog_kick(void);
  *        block readable, never a mix; the CRC inside the block proves which.
  */
 /* The F103's 2 KiB slot (two 1 KiB pages) minus the slot header (16):
- * calib v2 with the input map and the deviations is 1136 bytes */
+ * calib v3 (64-bit decimals, two selectors, torque share) is 1440 bytes */
 #define HAL_CALIB_MAX_LEN 2032U
 int hal_calib_read(uint8_t *buf, uint32_t len);
 int hal_calib_write(const uint8_t *buf, uint32_t len);

@@ -7,6 +7,12 @@
 #include "sq_status.h"
 #include "squeal_msgs.h"
 
+/* calib_input_prepare() with the share given apart from the descriptor
+ * (the validation checks the stored inputs in place, without the copies
+ * calib_corner_view() makes: the ECU's start-up stack). */
+static int prepare_share(const calib_input_t *in, uint32_t share_ppm, const input_geom_t *geom,
+			 input_conv_t *conv, input_raw_bounds_t *bounds, const char **why);
+
 #define STD_ID_MAX 0x7FFU
 #define CORNER_ID_STEP 0x10U
 
@@ -255,7 +261,13 @@ input_geom_t calib_corner_geom(const calib_corner_t *c)
 int calib_input_prepare(const calib_input_t *in, const input_geom_t *geom,
 			input_conv_t *conv, input_raw_bounds_t *bounds, const char **why)
 {
-	const uint32_t share = (in->conv_share_ppm == 0U) ? 1000000U : in->conv_share_ppm;
+	return prepare_share(in, in->conv_share_ppm, geom, conv, bounds, why);
+}
+
+static int prepare_share(const calib_input_t *in, uint32_t share_ppm, const input_geom_t *geom,
+			 input_conv_t *conv, input_raw_bounds_t *bounds, const char **why)
+{
+	const uint32_t share = (share_ppm == 0U) ? 1000000U : share_ppm;
 
 	if (calib_input_check(in, why) != SQ_OK) {
 		return SQ_EINVAL;
@@ -310,30 +322,55 @@ static int corner_check(const calib_t *cal, const calib_corner_t *c, const char 
 	return SQ_OK;
 }
 
+static void legacy_speed(const calib_t *cal, calib_input_t *in);
+static void legacy_force(const calib_t *cal, calib_input_t *in);
+
+/* The share calib_corner_view() gives a corner's force input: the corner's
+ * torque_share for a torque, none (0) otherwise. */
+static uint32_t force_share(const calib_corner_t *c, const calib_input_t *fo)
+{
+	return (input_unit_qty((input_unit_t)fo->unit) == INPUT_QTY_TORQUE) ? c->torque_share_ppm : 0U;
+}
+
+
 /* Corner k sets up exactly as input_rx_setup() will do it: both inputs
- * prepared with the corner's geometry (and the torque share). */
+ * prepared with the corner's geometry and the share calib_corner_view()
+ * gives its torque input. */
 static int corner_setup_check(const calib_t *cal, uint32_t k, int8_t *input, const char **why)
 {
-	calib_corner_t c;
-	calib_input_t sp;
-	calib_input_t fo;
-	input_geom_t g;
 	input_conv_t conv;
 	input_raw_bounds_t b;
+	int rc = SQ_OK;
 
-	if (calib_corner_view(cal, k, &c, &sp, &fo) != SQ_OK) {
-		return fail(why, "corner cannot be viewed");
+	if (cal->n_corners == 0U) {
+		/* the legacy corner: DiscSpeed and PadForce on the flat keys'
+		 * geometry (calib_corner_defaults()) */
+		const input_geom_t g = { cal->pad_radius_um, cal->wheel_radius_um, 0U, 1000000U,
+					 1000000U };
+		calib_input_t in;
+
+		legacy_speed(cal, &in);
+		rc = prepare_share(&in, 0U, &g, &conv, &b, why);
+		if (rc == SQ_OK) {
+			legacy_force(cal, &in);
+			rc = prepare_share(&in, 0U, &g, &conv, &b, why);
+		}
+	} else {
+		const calib_corner_t *c = &cal->corners[k];
+		const input_geom_t g = calib_corner_geom(c);
+		const calib_input_t *fo = &cal->inputs[c->force_input];
+
+		rc = prepare_share(&cal->inputs[c->speed_input], 0U, &g, &conv, &b, why);
+		if (rc != SQ_OK) {
+			*input = (int8_t)c->speed_input;
+		} else {
+			rc = prepare_share(fo, force_share(c, fo), &g, &conv, &b, why);
+			if (rc != SQ_OK) {
+				*input = (int8_t)c->force_input;
+			}
+		}
 	}
-	g = calib_corner_geom(&c);
-	if (calib_input_prepare(&sp, &g, &conv, &b, why) != SQ_OK) {
-		*input = (int8_t)c.speed_input;
-		return SQ_EINVAL;
-	}
-	if (calib_input_prepare(&fo, &g, &conv, &b, why) != SQ_OK) {
-		*input = (int8_t)c.force_input;
-		return SQ_EINVAL;
-	}
-	return SQ_OK;
+	return rc;
 }
 
 /* Output identifiers of all corners and input identifiers differ. */
@@ -539,6 +576,18 @@ static void legacy_input(const calib_t *cal, uint16_t id, uint16_t data_id,
 	in->step_max = (calib_dec_t){ (int64_t)step_raw * factor.mant, factor.exp };
 }
 
+static void legacy_speed(const calib_t *cal, calib_input_t *in)
+{
+	legacy_input(cal, cal->disc_speed_id, MSG_DISC_SPEED_DATA_ID, (calib_dec_t){ 1, -2 },
+		     INPUT_UNIT_RADPS, cal->speed_max_raw, cal->speed_step_max_raw, in);
+}
+
+static void legacy_force(const calib_t *cal, calib_input_t *in)
+{
+	legacy_input(cal, cal->pad_force_id, MSG_PAD_FORCE_DATA_ID, (calib_dec_t){ 5, -1 },
+		     INPUT_UNIT_N, cal->force_max_raw, cal->force_step_max_raw, in);
+}
+
 int calib_corner_view(const calib_t *cal, uint32_t k, calib_corner_t *corner,
 		      calib_input_t *speed, calib_input_t *force)
 {
@@ -548,19 +597,14 @@ int calib_corner_view(const calib_t *cal, uint32_t k, calib_corner_t *corner,
 	}
 	if (cal->n_corners == 0U) {
 		calib_corner_defaults(cal, 0U, corner);
-		legacy_input(cal, cal->disc_speed_id, MSG_DISC_SPEED_DATA_ID,
-			     (calib_dec_t){ 1, -2 }, INPUT_UNIT_RADPS, cal->speed_max_raw,
-			     cal->speed_step_max_raw, speed);
-		legacy_input(cal, cal->pad_force_id, MSG_PAD_FORCE_DATA_ID,
-			     (calib_dec_t){ 5, -1 }, INPUT_UNIT_N, cal->force_max_raw,
-			     cal->force_step_max_raw, force);
+		legacy_speed(cal, speed);
+		legacy_force(cal, force);
 		return SQ_OK;
 	}
 	*corner = cal->corners[k];
 	*speed = cal->inputs[corner->speed_input];
 	*force = cal->inputs[corner->force_input];
 	speed->conv_share_ppm = 0U;
-	force->conv_share_ppm = (input_unit_qty((input_unit_t)force->unit) == INPUT_QTY_TORQUE) ?
-				corner->torque_share_ppm : 0U;
+	force->conv_share_ppm = force_share(corner, force);
 	return SQ_OK;
 }

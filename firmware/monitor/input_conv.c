@@ -159,10 +159,20 @@ static void big_mul_big64(big_t *a, const big_t *b)
 
 static void big_mul_pow10(big_t *a, uint32_t n)
 {
-	uint32_t i;
+	uint32_t left = n;
+	uint32_t guard;
 
-	for (i = 0U; i < n; i++) {
-		big_mul_u32(a, 10U);
+	/* in steps of 10^9, the largest power of ten below 2^32 */
+	for (guard = 0U; (left > 0U) && (guard < 64U); guard++) {
+		uint32_t p = 1U;
+		uint32_t k;
+		const uint32_t step = (left > 9U) ? 9U : left;
+
+		for (k = 0U; k < step; k++) {
+			p *= 10U;
+		}
+		big_mul_u32(a, p);
+		left -= step;
 	}
 }
 
@@ -193,9 +203,18 @@ static void big_shr1(big_t *a)
 
 static void big_shl(big_t *a, uint32_t n)
 {
+	const uint32_t words = n / 32U;
+	const uint32_t bits = n % 32U;
 	uint32_t i;
 
-	for (i = 0U; i < n; i++) {
+	HAL_REQUIRE(words < BIG_LIMBS);
+	for (i = BIG_LIMBS; i > words; i--) {
+		a->w[i - 1U] = a->w[i - 1U - words];
+	}
+	for (i = 0U; i < words; i++) {
+		a->w[i] = 0U;
+	}
+	for (i = 0U; i < bits; i++) {
 		big_shl1(a, 0U);
 	}
 }
@@ -211,8 +230,21 @@ static void big_divmod(const big_t *n, const big_t *d, big_t *q, big_t *r)
 	uint32_t i;
 
 	HAL_REQUIRE(!big_is_zero(d));
+	if ((big_bitlen(n) <= 64U) && (big_bitlen(d) <= 64U)) {
+		/* the common case, in one native division */
+		const uint64_t a = big_low64(n);
+		const uint64_t b = big_low64(d);
+
+		big_set(q, a / b);
+		big_set(r, a % b);
+		return;
+	}
 	big_set(q, 0U);
 	big_set(r, 0U);
+	if (big_cmp(n, d) < 0) {
+		*r = *n;
+		return;
+	}
 	for (i = big_bitlen(n); i > 0U; i--) {
 		big_shl1(r, big_bit(n, i - 1U));
 		if (big_cmp(r, d) >= 0) {
@@ -248,6 +280,20 @@ static void big_gcd(const big_t *x, const big_t *y, big_t *g)
 	uint32_t guard;
 
 	HAL_REQUIRE(!big_is_zero(&a) && !big_is_zero(&b));
+	if ((big_bitlen(&a) <= 64U) && (big_bitlen(&b) <= 64U)) {
+		/* Euclid in 64 bits: fewer than 93 steps below 2^64 */
+		uint64_t x64 = big_low64(&a);
+		uint64_t y64 = big_low64(&b);
+
+		for (guard = 0U; (y64 != 0U) && (guard < 128U); guard++) {
+			const uint64_t t = x64 % y64;
+
+			x64 = y64;
+			y64 = t;
+		}
+		big_set(g, x64);
+		return;
+	}
 	while ((((a.w[0] | b.w[0]) & 1U) == 0U) && (k < BIG_BITS)) {
 		big_shr1(&a);
 		big_shr1(&b);
@@ -386,17 +432,21 @@ int input_dec_cmp(input_dec_t a, input_dec_t b)
 	return sbig_cmp(&x, &y);
 }
 
+/* floor or ceil of (x - o) / f for the decimal x, clamped */
+static int64_t bound_of(input_dec_t x, const sbig_t *o, const sbig_t *f, int32_t e0, bool up)
+{
+	const sbig_t v = dec_scaled(x, e0);
+	const sbig_t n = sbig_sub(&v, o);
+
+	return sbig_div_clamped(&n, f, up);
+}
+
 int input_conv_raw_bounds(input_dec_t factor, input_dec_t offset, input_dec_t min,
 			  input_dec_t max, input_dec_t step_max, input_raw_bounds_t *b)
 {
 	int32_t e0;
 	sbig_t f;
 	sbig_t o;
-	sbig_t lo;
-	sbig_t hi;
-	sbig_t st;
-	sbig_t n_lo;
-	sbig_t n_hi;
 
 	HAL_REQUIRE(b != NULL);
 	if (!input_dec_valid(factor) || !input_dec_valid(offset) || !input_dec_valid(min) ||
@@ -408,17 +458,15 @@ int input_conv_raw_bounds(input_dec_t factor, input_dec_t offset, input_dec_t mi
 		     step_max.exp);
 	f = dec_scaled(factor, e0);
 	o = dec_scaled(offset, e0);
-	lo = dec_scaled(min, e0);
-	hi = dec_scaled(max, e0);
-	st = dec_scaled(step_max, e0);
 	/* min <= raw f + o <= max: raw in [(min - o) / f, (max - o) / f],
 	 * the ends swapped for a negative factor */
-	n_lo = sbig_sub(f.neg ? &hi : &lo, &o);
-	n_hi = sbig_sub(f.neg ? &lo : &hi, &o);
-	b->raw_min = sbig_div_clamped(&n_lo, &f, true);
-	b->raw_max = sbig_div_clamped(&n_hi, &f, false);
+	b->raw_min = bound_of(f.neg ? max : min, &o, &f, e0, true);
+	b->raw_max = bound_of(f.neg ? min : max, &o, &f, e0, false);
+	/* |d raw| |f| <= step_max */
 	f.neg = false;
-	b->raw_step = sbig_div_clamped(&st, &f, false);
+	big_set(&o.m, 0U);
+	o.neg = false;
+	b->raw_step = bound_of(step_max, &o, &f, e0, false);
 	return (b->raw_min <= b->raw_max) ? SQ_OK : SQ_EINVAL;
 }
 
@@ -489,13 +537,11 @@ bool input_unit_is_pressure(input_unit_t unit)
 	return (unit >= INPUT_UNIT_BAR) && (unit <= INPUT_UNIT_PSI);
 }
 
-/* physical unit -> output unit (um/s, mN, mNm) as an exact fraction
- * kn / kd, the share included (below 2^112 / 2^67) */
+/* physical unit -> output unit (um/s, mN, mNm) as an exact fraction,
+ * the share included (below 2^112 / 2^67), multiplied into kn / kd */
 static void unit_scale(input_unit_t unit, const input_geom_t *g, uint32_t share_ppm,
 		       big_t *kn, big_t *kd)
 {
-	big_set(kn, 1U);
-	big_set(kd, 1U);
 	switch (unit) {
 	case INPUT_UNIT_KMH:
 		big_mul_u32(kn, 10000000U);   /* km/h -> um/s: 1e9 / 3600 */
@@ -558,34 +604,6 @@ static void unit_scale(input_unit_t unit, const input_geom_t *g, uint32_t share_
 	}
 }
 
-/* |d| x kn / kd, reduced (n may be 0: then d = 1) */
-static void dec_times(input_dec_t d, const big_t *kn, const big_t *kd, big_t *n, big_t *den)
-{
-	big_set(n, mag64(d.mant));
-	*den = *kd;
-	if (big_is_zero(n)) {
-		big_set(den, 1U);
-		return;
-	}
-	big_mul_pow10((d.exp >= 0) ? n : den, (uint32_t)((d.exp >= 0) ? d.exp : -(int32_t)d.exp));
-	/* kn < 2^112 is multiplied in 32-bit words */
-	{
-		big_t t;
-		big_t acc;
-		uint32_t i;
-
-		big_set(&acc, 0U);
-		for (i = BIG_LIMBS; i > 0U; i--) {
-			big_shl(&acc, 32U);
-			t = *n;
-			big_mul_u32(&t, kn->w[i - 1U]);
-			big_add(&acc, &t);
-		}
-		*n = acc;
-	}
-	big_reduce(n, den);
-}
-
 /* The 128-bit two's complement of a signed big (|v| <= 2^96 after the
  * clamp), as high and low words. */
 static void to_words(const big_t *mag, bool neg, int64_t *hi, uint64_t *lo)
@@ -603,6 +621,84 @@ static void to_words(const big_t *mag, bool neg, int64_t *hi, uint64_t *lo)
 	*lo = l;
 }
 
+/* |d| in output units per raw unit (or per physical unit for the offset):
+ * |d| x the unit's fraction, reduced (n 0: den 1) */
+static void dec_in_output(input_dec_t d, input_unit_t unit, const input_geom_t *geom,
+			  uint32_t share_ppm, big_t *n, big_t *den)
+{
+	big_set(n, mag64(d.mant));
+	big_set(den, 1U);
+	if (big_is_zero(n)) {
+		return;
+	}
+	big_mul_pow10((d.exp >= 0) ? n : den, (uint32_t)((d.exp >= 0) ? d.exp : -(int32_t)d.exp));
+	unit_scale(unit, geom, share_ppm, n, den);
+	big_reduce(n, den);
+}
+
+/* mul, div (both < 2^62 on return) and add of the map for scale sn / sd
+ * and offset on / od (add's sign is the caller's); add may be on itself
+ * (on is read before add is written). */
+static void combine(const big_t *sn, const big_t *sd, const big_t *on, const big_t *od,
+		    uint64_t *mul, uint64_t *div, big_t *add)
+{
+	big_t a;
+	big_t b;
+	big_t c;
+	big_t l;
+
+	if ((big_bitlen(sn) <= BITS_62) && (big_bitlen(sd) <= BITS_62)) {
+		/* exact scale; the offset over a common denominator when that
+		 * fits too (then every output is the exact value rounded) */
+		*mul = big_low64(sn);
+		*div = big_low64(sd);
+		if (big_is_zero(on)) {
+			big_set(add, 0U);
+			return;
+		}
+		big_gcd(sd, od, &a);              /* a = g                    */
+		big_divmod(od, &a, &b, &c);       /* b = m = od / g           */
+		if (big_bitlen(&b) <= BITS_62) {
+			big_divmod(sd, &a, &l, &c); /* l = sd / g (< 2^62)      */
+			a = *sd;
+			big_mul_big64(&a, &b);      /* a = sd m, the common den */
+			c = *sn;
+			big_mul_big64(&c, &b);      /* c = sn m                 */
+			if ((big_bitlen(&a) <= BITS_62) && (big_bitlen(&c) <= BITS_62)) {
+				*mul = big_low64(&c);
+				*div = big_low64(&a);
+				b = *on;
+				big_mul_big64(&b, &l);  /* on x (sd / g)            */
+				*add = b;
+				return;
+			}
+		}
+		/* add = round(on sd / od) */
+		a = *on;
+		big_mul_big64(&a, sd);
+		big_div_round(&a, od, add);
+		return;
+	}
+	/* approximation: div = 2^k, mul = round(scale 2^k) with
+	 * k = min(60 - t, 62) for scale in [2^(t-1), 2^(t+1)): mul in
+	 * [2^59, 2^61] (relative error <= 2^-60) or k = 62; t <= 31 by the
+	 * caller's check, so k >= 29 */
+	{
+		const int32_t t = (int32_t)big_bitlen(sn) - (int32_t)big_bitlen(sd);
+		const int32_t k0 = 60 - t;
+		const uint32_t k = (uint32_t)((k0 > 62) ? 62 : k0);
+
+		a = *sn;
+		big_shl(&a, k);
+		big_div_round(&a, sd, &b);
+		*mul = big_low64(&b);
+		*div = (uint64_t)1U << k;
+		a = *on;
+		big_shl(&a, k);
+		big_div_round(&a, od, add);
+	}
+}
+
 int input_conv_make(int64_t f_mant, int8_t f_exp, int64_t o_mant, int8_t o_exp,
 		    input_unit_t unit, const input_geom_t *geom, input_conv_t *conv)
 {
@@ -615,15 +711,12 @@ int input_conv_make_share(int64_t f_mant, int8_t f_exp, int64_t o_mant, int8_t o
 {
 	const input_dec_t f = { f_mant, f_exp };
 	const input_dec_t o = { o_mant, o_exp };
-	big_t kn;
-	big_t kd;
 	big_t sn;
 	big_t sd;
 	big_t on;
 	big_t od;
-	big_t mul;
-	big_t div;
-	big_t add;
+	uint64_t mul = 0U;
+	uint64_t div = 1U;
 
 	HAL_REQUIRE((geom != NULL) && (conv != NULL));
 	/* the values are calibration data: calib_map checks them with this */
@@ -638,96 +731,32 @@ int input_conv_make_share(int64_t f_mant, int8_t f_exp, int64_t o_mant, int8_t o
 	     (geom->axle_factor_ppm == 0U))) {
 		return SQ_EINVAL;
 	}
-	unit_scale(unit, geom, share_ppm, &kn, &kd);
-	dec_times(f, &kn, &kd, &sn, &sd);
-	dec_times(o, &kn, &kd, &on, &od);
+	dec_in_output(f, unit, geom, share_ppm, &sn, &sd);
 	/* one raw step must stay below the int32 output range: beyond that
 	 * every reading but one saturates, a calibration mistake */
 	if (big_bitlen(&sn) > (big_bitlen(&sd) + (uint32_t)SCALE_MAX_BITS - 1U)) {
-		big_t q;
-		big_t r;
-		big_t lim;
-
-		big_divmod(&sn, &sd, &q, &r);
-		big_set(&lim, (uint64_t)1U << (uint32_t)SCALE_MAX_BITS);
-		if (big_cmp(&q, &lim) >= 0) {
+		big_set(&on, (uint64_t)1U << (uint32_t)SCALE_MAX_BITS);
+		od = sd;
+		big_mul_big64(&od, &on);         /* sd 2^31 */
+		if (big_cmp(&sn, &od) >= 0) {
 			return SQ_EINVAL;
 		}
 	}
-	if ((big_bitlen(&sn) <= BITS_62) && (big_bitlen(&sd) <= BITS_62)) {
-		/* exact scale; the offset over a common denominator when that
-		 * fits too (then every output is the exact value rounded) */
-		big_t g;
-		big_t m;
-		big_t r;
-
-		mul = sn;
-		div = sd;
-		if (big_is_zero(&on)) {
-			big_set(&add, 0U);
-		} else {
-			big_gcd(&sd, &od, &g);
-			big_divmod(&od, &g, &m, &r);   /* m = od / g */
-			{
-				big_t l = sd;
-				big_t sm = sn;
-				const bool small = big_bitlen(&m) <= BITS_62;
-
-				if (small) {
-					big_mul_big64(&l, &m);  /* sd m, sn m < 2^124 */
-					big_mul_big64(&sm, &m);
-				}
-				if (small && (big_bitlen(&l) <= BITS_62) &&
-				    (big_bitlen(&sm) <= BITS_62)) {
-					big_t k;
-
-					mul = sm;
-					div = l;
-					big_divmod(&sd, &g, &k, &r); /* add = on x (sd / g) */
-					add = on;
-					big_mul_big64(&add, &k);
-				} else {
-					add = on;
-					big_mul_big64(&add, &sd);
-					{
-						const big_t n = add;
-
-						big_div_round(&n, &od, &add);
-					}
-				}
-			}
-		}
-	} else {
-		/* approximation: div = 2^k, mul = round(scale 2^k) with
-		 * k = min(60 - t, 62) for scale in [2^(t-1), 2^(t+1)):
-		 * mul in [2^59, 2^61] (relative error <= 2^-60) or k = 62;
-		 * t <= 31 by the check above, so k >= 29 */
-		const int32_t t = (int32_t)big_bitlen(&sn) - (int32_t)big_bitlen(&sd);
-		const int32_t k0 = 60 - t;
-		const uint32_t k = (uint32_t)((k0 > 62) ? 62 : k0);
-		big_t n = sn;
-
-		big_shl(&n, k);
-		big_div_round(&n, &sd, &mul);
-		big_set(&div, (uint64_t)1U << k);
-		n = on;
-		big_shl(&n, k);
-		big_div_round(&n, &od, &add);
-	}
-	if (big_bitlen(&add) > ADD_BITS) {
+	dec_in_output(o, unit, geom, share_ppm, &on, &od);
+	combine(&sn, &sd, &on, &od, &mul, &div, &on);   /* on: the offset term now */
+	if (big_bitlen(&on) > ADD_BITS) {
 		/* |value mul| < 2^94: beyond 2^96 the output saturates either way */
-		big_set(&add, 0U);
-		add.w[ADD_BITS / 32U] = 1U;
+		big_set(&on, 0U);
+		on.w[ADD_BITS / 32U] = 1U;
 	}
-	conv->mul = (int64_t)big_low64(&mul);
-	conv->mul = (f_mant < 0) ? -conv->mul : conv->mul;
-	conv->div = (int64_t)big_low64(&div);
-	to_words(&add, o_mant < 0, &conv->add_hi, &conv->add_lo);
-	conv->wide = (uint8_t)(((conv->mul >= FAST_MUL_LIMIT) || (conv->mul <= -FAST_MUL_LIMIT) ||
-				(big_bitlen(&add) > 61U)) ? 1U : 0U);
+	conv->mul = (f_mant < 0) ? -(int64_t)mul : (int64_t)mul;
+	conv->div = (int64_t)div;
+	to_words(&on, o_mant < 0, &conv->add_hi, &conv->add_lo);
+	conv->wide = (uint8_t)(((mul >= (uint64_t)FAST_MUL_LIMIT) || (big_bitlen(&on) > 61U)) ?
+			       1U : 0U);
 	conv->add = 0;
 	if (conv->wide == 0U) {
-		conv->add = (int64_t)big_low64(&add);
+		conv->add = (int64_t)big_low64(&on);
 		conv->add = (o_mant < 0) ? -conv->add : conv->add;
 	}
 	conv->qty = (uint8_t)input_unit_qty(unit);

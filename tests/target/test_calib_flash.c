@@ -187,12 +187,12 @@ static void test_interrupted_write_leaves_old_or_new(void **state)
 	interrupted_write(200U);
 }
 
-/* The calibration block v2 with deviations (1136 bytes) spans both 1 KiB
+/* The calibration block v3 (1440 bytes, CALIB_BLOCK_LEN) spans both 1 KiB
  * pages of the F103's slot: cut anywhere, still old or new. */
 static void test_interrupted_two_page_write_leaves_old_or_new(void **state)
 {
 	(void)state;
-	interrupted_write(1136U);
+	interrupted_write(1440U);
 }
 
 static void test_corrupt_newest_falls_back_to_older(void **state)
