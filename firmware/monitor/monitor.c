@@ -413,19 +413,16 @@ static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig, bool *si
 		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
 		me->have_eval = true;
 	} else {
-		if (me->sigma_on) {
-			squeal_param_sd_t sd;
+		squeal_param_sd_t sd;
 
+		if (me->sigma_on) {
 			calib_corner_sd(&me->corner, &sd);
-			rc = model_adapter_eval_sd(&me->params, &sd,
-						   (squeal_criterion_t)me->corner.criterion,
-						   v0, force, &me->eval, sig);
-			*sig_ok = (rc == SQ_OK) && (sig->state != SQUEAL_STATE_INVALID) &&
-				  (sig->state != SQUEAL_STATE_NOT_SLIDING);
-		} else {
-			rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
-						v0, force, &me->eval);
 		}
+		rc = model_adapter_eval_sd(&me->params, me->sigma_on ? &sd : NULL,
+					   (squeal_criterion_t)me->corner.criterion, v0, force,
+					   &me->eval, me->sigma_on ? sig : NULL);
+		*sig_ok = me->sigma_on && (rc == SQ_OK) && (sig->state != SQUEAL_STATE_INVALID) &&
+			  (sig->state != SQUEAL_STATE_NOT_SLIDING);
 		me->have_eval = rc == SQ_OK;
 		if (rc != SQ_OK) {
 			sat_inc(&me->count.model_invalid);
