@@ -239,19 +239,21 @@ static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64
 static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 			const hal_can_frame_t *f)
 {
+	/* the reason is an input_rx_reason_t below INPUT_RX_REASON_COUNT */
 	const input_rx_result_t r = input_rx_judge(cfg, &in->rx, f);
 	const input_rx_reason_t why = (input_rx_reason_t)r.reason;
-	const uint32_t fault = verdict_fault[r.reason % (uint8_t)INPUT_RX_REASON_COUNT];
+	const uint32_t fault = verdict_fault[r.reason];
+	const uint64_t t_us = frame_time(me, f);
 
 	sat_inc(&in->count.frames);
 	sat_inc(verdict_counter(&in->count, why));
 	in->faults |= fault;
 	if ((fault != INPUT_FAULT_E2E) && (r.e2e_status != (uint8_t)E2E_P01_STATUS_NONEWDATA)) {
 		sat_add(&in->count.e2e_lost, r.lost);
-		in->last_seen_us = frame_time(me, f);
+		in->last_seen_us = t_us;
 	}
 	if (why == INPUT_RX_OK) {
-		input_accept(me, in, input_value(me, cfg, r.value), frame_time(me, f));
+		input_accept(me, in, input_value(me, cfg, r.value), t_us);
 	}
 }
 
