@@ -239,19 +239,21 @@ static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64
 static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 			const hal_can_frame_t *f)
 {
+	/* the reason is an input_rx_reason_t below INPUT_RX_REASON_COUNT */
 	const input_rx_result_t r = input_rx_judge(cfg, &in->rx, f);
 	const input_rx_reason_t why = (input_rx_reason_t)r.reason;
-	const uint32_t fault = verdict_fault[r.reason % (uint8_t)INPUT_RX_REASON_COUNT];
+	const uint32_t fault = verdict_fault[r.reason];
+	const uint64_t t_us = frame_time(me, f);
 
 	sat_inc(&in->count.frames);
 	sat_inc(verdict_counter(&in->count, why));
 	in->faults |= fault;
 	if ((fault != INPUT_FAULT_E2E) && (r.e2e_status != (uint8_t)E2E_P01_STATUS_NONEWDATA)) {
 		sat_add(&in->count.e2e_lost, r.lost);
-		in->last_seen_us = frame_time(me, f);
+		in->last_seen_us = t_us;
 	}
 	if (why == INPUT_RX_OK) {
-		input_accept(me, in, input_value(me, cfg, r.value), frame_time(me, f));
+		input_accept(me, in, input_value(me, cfg, r.value), t_us);
 	}
 }
 
@@ -413,19 +415,16 @@ static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig, bool *si
 		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
 		me->have_eval = true;
 	} else {
-		if (me->sigma_on) {
-			squeal_param_sd_t sd;
+		squeal_param_sd_t sd;
 
+		if (me->sigma_on) {
 			calib_corner_sd(&me->corner, &sd);
-			rc = model_adapter_eval_sd(&me->params, &sd,
-						   (squeal_criterion_t)me->corner.criterion,
-						   v0, force, &me->eval, sig);
-			*sig_ok = (rc == SQ_OK) && (sig->state != SQUEAL_STATE_INVALID) &&
-				  (sig->state != SQUEAL_STATE_NOT_SLIDING);
-		} else {
-			rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
-						v0, force, &me->eval);
 		}
+		rc = model_adapter_eval_sd(&me->params, me->sigma_on ? &sd : NULL,
+					   (squeal_criterion_t)me->corner.criterion, v0, force,
+					   &me->eval, me->sigma_on ? sig : NULL);
+		*sig_ok = me->sigma_on && (rc == SQ_OK) && (sig->state != SQUEAL_STATE_INVALID) &&
+			  (sig->state != SQUEAL_STATE_NOT_SLIDING);
 		me->have_eval = rc == SQ_OK;
 		if (rc != SQ_OK) {
 			sat_inc(&me->count.model_invalid);
