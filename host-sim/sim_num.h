@@ -24,6 +24,8 @@ typedef struct {
 	double slope_spm;
 } sim_params_d_t;
 
+/* The firmware's default brake (squeal_model_default_params, the one
+ * definition), each parameter as the decimal it was written as. */
 void sim_params_default(sim_params_d_t *p);
 int sim_params_to_model(const sim_params_d_t *in, squeal_params_t *out);
 int sim_point_to_model(double v0_mps, double force_n, squeal_point_t *out);

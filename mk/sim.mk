@@ -25,7 +25,8 @@ $(foreach v,$(OSCSIM_VARIANTS),$(eval $(call oscsim_rules,$(v))))
 ALL_TARGETS += build/host/oscsim
 
 # Unit tests of the simulator against hand-derived closed forms (ASan+UBSan).
-build/test/test_oscsim: build/test/app/tests/sim/test_oscsim.o build/test/liboscsim.a
+build/test/test_oscsim: build/test/app/tests/sim/test_oscsim.o build/test/liboscsim.a \
+		build/test/app/$(OSCSIM_NUM_SRC:.c=.o) build/test/libfirmware.a
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
 TEST_PROGS += build/test/test_oscsim
 

@@ -14,18 +14,6 @@
 #define DNAN ((double)NAN)
 #define DINF ((double)INFINITY)
 
-void oscsim_default_params(oscsim_params_t *p)
-{
-	p->mass_kg = 1.0;
-	p->omega0_radps = 5000.0;
-	p->damping = 0.023;
-	p->mu_inf = 0.25;
-	p->delta_mu = 0.15;
-	p->slope_spm = 2.0;
-	p->v0_mps = 1.0;
-	p->force_n = 9000.0;
-}
-
 int oscsim_params_check(const oscsim_params_t *p)
 {
 	if (p == NULL) {

@@ -52,7 +52,9 @@ typedef struct {
 	double force_n;      /* pad normal force N              */
 } oscsim_params_t;
 
-/* The paper's disc brake (model.md section 8) at a = 2 s/m, v0 = 1 m/s. */
+/* The paper's disc brake (model.md section 8) at a = 2 s/m, v0 = 1 m/s,
+ * N = 9000 N: the brake is the firmware's default (sim_params_default), so
+ * this one function lives with the firmware-facing part, oscsim_map.c. */
 void oscsim_default_params(oscsim_params_t *p);
 
 /* Returns SQ_OK if every field is finite and physically meaningful

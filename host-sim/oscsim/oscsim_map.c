@@ -15,36 +15,83 @@
 #define LN_HALF (-0.69314718055994530942)
 #define DNAN ((double)NAN)
 
-#define BRAKE(nm, txt, w0, d, n)                                            \
-	{                                                                   \
-		.name = (nm), .what = (txt),                                \
-		.params = { .mass_kg = 1.0, .omega0_radps = (w0),           \
-			    .damping = (d), .mu_inf = 0.25,                 \
-			    .delta_mu = 0.15, .slope_spm = 2.0,             \
-			    .v0_mps = 1.0, .force_n = (n) }                 \
-	}
+/* The operating point of the default: v0 1 m/s at the paper's N 9000 N. */
+#define DEFAULT_V0_MPS 1.0
+#define DEFAULT_FORCE_N 9000.0
 
-static const oscsim_variation_t variations[] = {
-	BRAKE("default", "paper's brake: D 0.023, w0 5000 rad/s, N 9000 N",
-	      5000.0, 0.023, 9000.0),
-	BRAKE("d0.05", "damping D 0.05", 5000.0, 0.05, 9000.0),
-	BRAKE("d0.1", "damping D 0.1", 5000.0, 0.1, 9000.0),
-	BRAKE("k2", "stiffness x2 (w0 x sqrt 2, D kept)",
-	      7071.067811865475, 0.023, 9000.0),
-	BRAKE("k0.5", "stiffness x0.5 (w0 x sqrt 0.5, D kept)",
-	      3535.5339059327378, 0.023, 9000.0),
-	BRAKE("n5000", "pad force N 5000 N", 5000.0, 0.023, 5000.0),
-	BRAKE("n20000", "pad force N 20000 N", 5000.0, 0.023, 20000.0),
+void oscsim_default_params(oscsim_params_t *p)
+{
+	sim_params_d_t brake;
+
+	sim_params_default(&brake);
+	p->mass_kg = brake.mass_kg;
+	p->omega0_radps = brake.omega0_radps;
+	p->damping = brake.damping;
+	p->mu_inf = brake.mu_inf;
+	p->delta_mu = brake.delta_mu;
+	p->slope_spm = brake.slope_spm;
+	p->v0_mps = DEFAULT_V0_MPS;
+	p->force_n = DEFAULT_FORCE_N;
+}
+
+/* The seven brakes: the default, and the default with one of w0, D, N
+ * changed (0: the default's). */
+typedef struct {
+	const char *name;
+	const char *what;
+	double omega0_radps;
+	double damping;
+	double force_n;
+} variation_row_t;
+
+static const variation_row_t variation_rows[] = {
+	{ "default", "paper's brake: D 0.023, w0 5000 rad/s, N 9000 N", 0.0, 0.0, 0.0 },
+	{ "d0.05", "damping D 0.05", 0.0, 0.05, 0.0 },
+	{ "d0.1", "damping D 0.1", 0.0, 0.1, 0.0 },
+	{ "k2", "stiffness x2 (w0 x sqrt 2, D kept)", 7071.067811865475, 0.0, 0.0 },
+	{ "k0.5", "stiffness x0.5 (w0 x sqrt 0.5, D kept)", 3535.5339059327378, 0.0, 0.0 },
+	{ "n5000", "pad force N 5000 N", 0.0, 0.0, 5000.0 },
+	{ "n20000", "pad force N 20000 N", 0.0, 0.0, 20000.0 },
 };
+#define VARIATIONS (sizeof(variation_rows) / sizeof(variation_rows[0]))
+
+static const oscsim_variation_t *variations(void)
+{
+	static oscsim_variation_t table[VARIATIONS];
+	static int built;
+	size_t i;
+
+	if (!built) {
+		for (i = 0; i < VARIATIONS; i++) {
+			const variation_row_t *r = &variation_rows[i];
+			oscsim_variation_t *v = &table[i];
+
+			v->name = r->name;
+			v->what = r->what;
+			oscsim_default_params(&v->params);
+			if (r->omega0_radps > 0.0) {
+				v->params.omega0_radps = r->omega0_radps;
+			}
+			if (r->damping > 0.0) {
+				v->params.damping = r->damping;
+			}
+			if (r->force_n > 0.0) {
+				v->params.force_n = r->force_n;
+			}
+		}
+		built = 1;
+	}
+	return table;
+}
 
 size_t oscsim_variation_count(void)
 {
-	return sizeof(variations) / sizeof(variations[0]);
+	return VARIATIONS;
 }
 
 const oscsim_variation_t *oscsim_variation_get(size_t i)
 {
-	return (i < oscsim_variation_count()) ? &variations[i] : NULL;
+	return (i < oscsim_variation_count()) ? &variations()[i] : NULL;
 }
 
 const oscsim_variation_t *oscsim_variation_find(const char *name)
@@ -52,8 +99,8 @@ const oscsim_variation_t *oscsim_variation_find(const char *name)
 	size_t i;
 
 	for (i = 0; i < oscsim_variation_count(); i++) {
-		if (strcmp(variations[i].name, name) == 0) {
-			return &variations[i];
+		if (strcmp(variations()[i].name, name) == 0) {
+			return &variations()[i];
 		}
 	}
 	return NULL;

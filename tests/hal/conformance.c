@@ -451,6 +451,20 @@ static void check_tx_full(uint8_t bus)
 	conf_backend_teardown();
 }
 
+/* Another node makes bus go bus-off (on) or lets it recover, and time
+ * passes for the backend to learn it (it may from an error frame: the
+ * receive queue is read). Returns what the harness said (SQ_ENOTSUP: it
+ * cannot). */
+static int bus_off_settle(uint8_t bus, bool on)
+{
+	hal_can_frame_t got[4];
+	const int rc = conf_force_bus_off(bus, on);
+
+	conf_let_time_pass(SETTLE_US);
+	(void)drain(bus, got, 4U);
+	return rc;
+}
+
 static void check_bus_off(uint8_t bus)
 {
 	const char *what = "bus-off reported (state, count, SQ_ENETUNREACH) and left";
@@ -458,28 +472,21 @@ static void check_bus_off(uint8_t bus)
 	hal_can_status_t st0;
 	hal_can_status_t st1;
 	hal_can_status_t st2;
-	hal_can_frame_t got[4];
 	int rc_off;
 	int rc_on;
-	int rc;
 
 	if (!set_up(bus, what)) {
 		return;
 	}
 	(void)hal_can_get_status(bus, &st0);
-	rc = conf_force_bus_off(bus, true);
-	if (rc == SQ_ENOTSUP) {
+	if (bus_off_settle(bus, true) == SQ_ENOTSUP) {
 		skip(bus, what, "the harness cannot make the controller go bus-off");
 		conf_backend_teardown();
 		return;
 	}
-	conf_let_time_pass(SETTLE_US);
-	(void)drain(bus, got, 4U); /* the backend may learn it from an error frame */
 	(void)hal_can_get_status(bus, &st1);
 	rc_off = hal_can_send(bus, &f);
-	(void)conf_force_bus_off(bus, false);
-	conf_let_time_pass(SETTLE_US);
-	(void)drain(bus, got, 4U);
+	(void)bus_off_settle(bus, false);
 	(void)hal_can_get_status(bus, &st2);
 	rc_on = hal_can_send(bus, &f);
 	report((st1.state == HAL_CAN_STATE_BUS_OFF) && (st1.bus_off_count == st0.bus_off_count + 1U) &&
@@ -562,17 +569,12 @@ static void check_listen_only_kept(uint8_t bus)
 		conf_backend_teardown();
 		return;
 	}
-	rc = conf_force_bus_off(bus, true);
-	if (rc == SQ_ENOTSUP) {
+	if (bus_off_settle(bus, true) == SQ_ENOTSUP) {
 		skip(bus, what, "the harness cannot make the controller go bus-off");
 		conf_backend_teardown();
 		return;
 	}
-	conf_let_time_pass(SETTLE_US);
-	(void)drain(bus, got, 4U); /* the backend may learn it from an error frame */
-	(void)conf_force_bus_off(bus, false);
-	conf_let_time_pass(SETTLE_US);
-	(void)drain(bus, got, 4U);
+	(void)bus_off_settle(bus, false);
 	(void)hal_can_get_status(bus, &st0);
 	rc = hal_can_send(bus, &f);
 	conf_let_time_pass(SETTLE_US);

@@ -63,9 +63,9 @@ incs=(-Ifirmware/model -Ifirmware/protocol -Ifirmware/monitor
 # shellcheck disable=SC2206 # MISRA_GROUPS is a list of names
 groups=(${MISRA_GROUPS:-core vbus stm32f4 stm32f103})
 # shellcheck disable=SC2086 # MISRA_CORE_DIRS is a list of directories
-files_core() { find ${MISRA_CORE_DIRS:-firmware hal/linux hal/host} -name '*.c' | sort; }
+files_core() { find ${MISRA_CORE_DIRS:-firmware hal/linux hal/host hal/common} -name '*.c' | sort; }
 incs_core=()
-own_core='^(firmware/|hal/linux/|hal/host/|hal/hal\.h:|hal/sq_status\.h:)'
+own_core='^(firmware/|hal/linux/|hal/host/|hal/common/|hal/hal\.h:|hal/sq_status\.h:|hal/sq_contract\.h:|hal/hal_can_common\.h:)'
 # the in-memory backend defines the same hal.h functions as hal/linux: its
 # own group (a program links one backend)
 files_vbus() { find hal/vbus -name '*.c' | sort; }
