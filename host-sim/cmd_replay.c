@@ -85,6 +85,9 @@
 #define REORDER_FRAMES 32768U      /* frames held at most (5 s at 6500 frames/s) */
 #define DETOUR_RETURN_STEP_US 100000U /* a forward jump that ends a late block */
 #define IFACES_MAX 16U             /* interfaces told apart (more share the last) */
+/* Re-based times saturate here (2^62 us, 146,000 years): a hostile log of
+ * endless restarts cannot overflow them; frames beyond are late. */
+#define TIME_MAX_US (1ULL << 62)
 #define SEGMENT_POINTS_MAX 64U /* rebase points kept for the JSON (memory stays constant) */
 #define N_STATES MSG_SQUEAL_STATE_SLOTS /* stable, bistable, unstable, not sliding, fault */
 #define N_LEVELS 4U
@@ -167,7 +170,7 @@ typedef struct {
 	uint64_t next_tick_us;
 	uint64_t backwards;
 	uint64_t segments;         /* new segments after a jump back > 1 s  */
-	int64_t rebase_us;         /* added to the log's time (segments)    */
+	uint64_t rebase_us;        /* added to the log's time (segments)    */
 	segment_point_t segment_at[SEGMENT_POINTS_MAX]; /* the first ones */
 	uint64_t gaps;
 	uint64_t state_us[N_STATES];
@@ -175,7 +178,11 @@ typedef struct {
 	uint8_t warning;
 	uint64_t into_level[N_LEVELS];
 	uint64_t transitions[N_STATES][N_STATES];
-	/* the reorder window: a binary min-heap on (t_us, seq) */
+	/* the reorder window: frames read in time order wait in a FIFO, the
+	 * others in a binary min-heap on (t_us, seq); the two are merged */
+	held_t fifo[REORDER_FRAMES];
+	uint32_t fifo_head;
+	uint32_t fifo_n;
 	held_t held[REORDER_FRAMES];
 	uint32_t n_held;
 	uint64_t seq;
@@ -753,52 +760,81 @@ static bool held_before(const held_t *x, const held_t *y)
 
 static void heap_down(replay_t *r, uint32_t i)
 {
+	const held_t moving = r->held[i];
+
 	for (;;) {
 		const uint32_t left = (2U * i) + 1U;
-		uint32_t best = i;
-		held_t tmp;
+		uint32_t best = left;
 
-		if ((left < r->n_held) && held_before(&r->held[left], &r->held[best])) {
-			best = left;
+		if (left >= r->n_held) {
+			break;
 		}
-		if ((left + 1U < r->n_held) && held_before(&r->held[left + 1U], &r->held[best])) {
+		if ((left + 1U < r->n_held) && held_before(&r->held[left + 1U], &r->held[left])) {
 			best = left + 1U;
 		}
-		if (best == i) {
-			return;
+		if (!held_before(&r->held[best], &moving)) {
+			break;
 		}
-		tmp = r->held[i];
 		r->held[i] = r->held[best];
-		r->held[best] = tmp;
 		i = best;
 	}
+	r->held[i] = moving;
 }
 
 static void heap_push(replay_t *r, const held_t *h)
 {
 	uint32_t i = r->n_held++;
 
-	r->held[i] = *h;
 	while (i > 0U) {
 		const uint32_t up = (i - 1U) / 2U;
-		held_t tmp;
 
-		if (!held_before(&r->held[i], &r->held[up])) {
+		if (!held_before(h, &r->held[up])) {
 			break;
 		}
-		tmp = r->held[i];
 		r->held[i] = r->held[up];
-		r->held[up] = tmp;
 		i = up;
+	}
+	r->held[i] = *h;
+}
+
+/* Frames held in the window, FIFO and heap. */
+static uint32_t held_count(const replay_t *r)
+{
+	return r->fifo_n + r->n_held;
+}
+
+/* The earliest frame held (the window is not empty). */
+static const held_t *held_min(const replay_t *r)
+{
+	const held_t *f = (r->fifo_n != 0U) ? &r->fifo[r->fifo_head] : NULL;
+
+	if ((f == NULL) || ((r->n_held != 0U) && held_before(&r->held[0], f))) {
+		return &r->held[0];
+	}
+	return f;
+}
+
+static void held_pop(replay_t *r, held_t *out)
+{
+	if (held_min(r) == &r->held[0]) {
+		*out = r->held[0];
+		r->n_held--;
+		if (r->n_held != 0U) {
+			r->held[0] = r->held[r->n_held];
+			heap_down(r, 0U);
+		}
+	} else {
+		*out = r->fifo[r->fifo_head];
+		r->fifo_head = (r->fifo_head + 1U) % REORDER_FRAMES;
+		r->fifo_n--;
 	}
 }
 
-static void heap_pop(replay_t *r, held_t *out)
+/* A frame not earlier than every frame read before: the FIFO's end. */
+static void fifo_push(replay_t *r, const held_t *h)
 {
-	*out = r->held[0];
-	r->n_held--;
-	r->held[0] = r->held[r->n_held];
-	heap_down(r, 0U);
+	r->fifo[(r->fifo_head + r->fifo_n) % REORDER_FRAMES] = *h;
+	r->fifo_n++;
 }
 
 /* The frames read after the jump back were a restart: they move, with the
@@ -821,7 +857,7 @@ static void detour_restart(replay_t *r, const replay_args_t *a)
 		r->segment_at[r->segments] = (segment_point_t){ r->detour_line, back, r->jump_from_us };
 	}
 	r->segments++;
-	r->rebase_us += (int64_t)back;
+	r->rebase_us = (back > TIME_MAX_US - r->rebase_us) ? TIME_MAX_US : r->rebase_us + back;
 	r->prev_t_us += back;
 	if (r->prev_t_us > r->max_seen_us) {
 		r->max_seen_us = r->prev_t_us;
@@ -857,16 +893,16 @@ static void release_due(replay_t *r, const replay_args_t *a, bool all)
 {
 	held_t h;
 
-	while (r->n_held > 0U) {
-		if (!all && (r->n_held < REORDER_FRAMES) &&
-		    (r->held[0].t_us + REORDER_WINDOW_US > r->max_seen_us)) {
+	while (held_count(r) > 0U) {
+		if (!all && (held_count(r) < REORDER_FRAMES) &&
+		    (held_min(r)->t_us + REORDER_WINDOW_US > r->max_seen_us)) {
 			return;
 		}
 		if (r->detour) {
 			/* full while a late block is open: take it as a restart */
 			detour_restart(r, a);
 		}
-		heap_pop(r, &h);
+		held_pop(r, &h);
 		release(r, &h, a);
 	}
 }
@@ -887,6 +923,14 @@ static uint8_t iface_index(replay_t *r, const char *name)
 	return (uint8_t)(r->n_ifaces - 1U);
 }
 
+/* The frame's log time plus the segments' rebase (saturating). */
+static uint64_t rebased_us(const replay_t *r, const candump_frame_t *f)
+{
+	const uint64_t raw = f->t_ns / 1000U;
+
+	return (raw > TIME_MAX_US - r->rebase_us) ? TIME_MAX_US : raw + r->rebase_us;
+}
+
 /* One frame read from the log: into the window (see the top of the file). */
 static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t *a,
 		     uint64_t line_no)
@@ -903,17 +947,17 @@ static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t 
 	h.len = f->len;
 	h.ext = f->ext;
 	memcpy(h.data, f->data, HAL_CAN_MAX_DLEN);
-	t_us = (uint64_t)((int64_t)(f->t_ns / 1000U) + r->rebase_us);
+	t_us = rebased_us(r, f);
 	if (r->detour) {
 		if (t_us + SEGMENT_BACK_US < r->prev_t_us) {
 			detour_restart(r, a); /* back again: the first was a restart */
-			t_us = (uint64_t)((int64_t)(f->t_ns / 1000U) + r->rebase_us);
+			t_us = rebased_us(r, f);
 		} else if ((t_us + SEGMENT_BACK_US >= r->jump_from_us) &&
 			   (t_us > r->prev_t_us + DETOUR_RETURN_STEP_US)) {
 			detour_reordered(r, a, line_no); /* it returned */
 		} else if (t_us > r->jump_from_us) {
 			detour_restart(r, a); /* it went on past where it left */
-			t_us = (uint64_t)((int64_t)(f->t_ns / 1000U) + r->rebase_us);
+			t_us = rebased_us(r, f);
 		} else {
 			h.t_us = t_us;
 			h.detour = true;
@@ -953,11 +997,13 @@ static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t 
 	}
 	h.t_us = t_us;
 	r->prev_t_us = t_us;
-	if (!r->have_max || (t_us > r->max_seen_us)) {
+	if (!r->have_max || (t_us >= r->max_seen_us)) {
 		r->max_seen_us = t_us;
 		r->have_max = true;
+		fifo_push(r, &h);
+	} else {
+		heap_push(r, &h);
 	}
-	heap_push(r, &h);
 	release_due(r, a, false);
 }
 
