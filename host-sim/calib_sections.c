@@ -44,6 +44,7 @@ bool calib_dec_parse(const char *text, calib_dec_t *out)
 	int32_t exp = 0;
 	int digits = 0;
 	bool dot = false;
+	calib_dec_t d;
 
 	if ((*p == '+') || (*p == '-')) {
 		neg = (*p == '-');
@@ -69,8 +70,8 @@ bool calib_dec_parse(const char *text, calib_dec_t *out)
 			}
 			continue;
 		}
-		if (digits >= 9) {
-			/* beyond 9 significant digits only zeros are exact */
+		if (digits >= 17) {
+			/* beyond 17 significant digits only zeros are exact */
 			if (*p != '0') {
 				return false;
 			}
@@ -89,9 +90,13 @@ bool calib_dec_parse(const char *text, calib_dec_t *out)
 		char *end = NULL;
 		long e;
 
+		if (!isdigit((unsigned char)p[1]) &&
+		    !(((p[1] == '-') || (p[1] == '+')) && isdigit((unsigned char)p[2]))) {
+			return false;
+		}
 		errno = 0;
 		e = strtol(p + 1, &end, 10);
-		if ((errno != 0) || (end == p + 1) || (*end != '\0') || (e < -40) || (e > 40)) {
+		if ((errno != 0) || (*end != '\0') || (e < -400) || (e > 400)) {
 			return false;
 		}
 		exp += (int32_t)e;
@@ -103,33 +108,42 @@ bool calib_dec_parse(const char *text, calib_dec_t *out)
 	if (mant == 0) {
 		exp = 0;
 	}
-	if ((exp < -12) || (exp > 12) || (mant > INT32_MAX)) {
+	/* a large exponent may move into the mantissa (1e31 = 10e30) */
+	while ((exp > INPUT_DEC_EXP_MAX) && (mant != 0) && (mant <= INPUT_DEC_MANT_MAX / 10)) {
+		mant *= 10;
+		exp--;
+	}
+	d.mant = neg ? -mant : mant;
+	d.exp = (int8_t)((exp < -128) ? -128 : ((exp > 127) ? 127 : exp));
+	if ((exp < INPUT_DEC_EXP_MIN) || (exp > INPUT_DEC_EXP_MAX) || !input_dec_valid(d)) {
 		return false;
 	}
-	out->mant = (int32_t)(neg ? -mant : mant);
-	out->exp = (int8_t)exp;
+	*out = d;
 	return true;
 }
 
 void calib_dec_format(calib_dec_t d, char *buf, size_t len)
 {
-	char digits[16];
+	char digits[24];
+	char plain[64];
+	char expo[40];
 	const bool neg = d.mant < 0;
-	const long long m = neg ? -(long long)d.mant : (long long)d.mant;
-	int n;
+	const unsigned long long m = neg ? (unsigned long long)(-d.mant) : (unsigned long long)d.mant;
+	const int n = snprintf(digits, sizeof(digits), "%llu", m);
+	const int e = d.exp;
 
-	if (d.exp >= 0) {
-		snprintf(buf, len, "%s%lld%.*s", neg ? "-" : "", m, d.exp, "000000000000");
-		return;
-	}
-	n = snprintf(digits, sizeof(digits), "%lld", m);
-	if (n > -d.exp) {
-		snprintf(buf, len, "%s%.*s.%s", neg ? "-" : "", n + d.exp, digits,
-			 digits + n + d.exp);
+	if (e >= 0) {
+		snprintf(plain, sizeof(plain), "%s%s%.*s", neg ? "-" : "", digits, e,
+			 "000000000000000000000000000000");
+	} else if (n > -e) {
+		snprintf(plain, sizeof(plain), "%s%.*s.%s", neg ? "-" : "", n + e, digits,
+			 digits + n + e);
 	} else {
-		snprintf(buf, len, "%s0.%.*s%s", neg ? "-" : "", -d.exp - n, "000000000000",
-			 digits);
+		snprintf(plain, sizeof(plain), "%s0.%.*s%s", neg ? "-" : "", -e - n,
+			 "000000000000000000000000000000", digits);
 	}
+	snprintf(expo, sizeof(expo), "%s%se%d", neg ? "-" : "", digits, e);
+	snprintf(buf, len, "%s", ((e != 0) && (strlen(expo) < strlen(plain))) ? expo : plain);
 }
 
 double calib_dec_value(calib_dec_t d)
@@ -164,6 +178,22 @@ static bool parse_order(const char *t, uint8_t *out)
 }
 
 /* ---- lines --------------------------------------------------------------------- */
+
+bool calib_iface_name_valid(const char *n)
+{
+	size_t i;
+	const size_t len = strlen(n);
+
+	if ((len == 0U) || (len >= CALIB_IFACE_LEN)) {
+		return false;
+	}
+	for (i = 0; i < len; i++) {
+		if (!isalnum((unsigned char)n[i]) && (strchr("_.-", n[i]) == NULL)) {
+			return false;
+		}
+	}
+	return true;
+}
 
 static bool valid_name(const char *n)
 {
@@ -419,7 +449,7 @@ static int get_dec(const ctx_t *c, const char *key, bool required, calib_dec_t *
 		return required ? kv_err(c, NULL, "%s is required", key) : 0;
 	}
 	if (!calib_dec_parse(kv->value, out)) {
-		return kv_err(c, kv, "%s needs a decimal number (at most 9 significant digits, exponent -12..12), got '%s'",
+		return kv_err(c, kv, "%s needs a decimal number (at most 17 significant digits, 1e-30 .. 1e30 steps), got '%s'",
 			      key, kv->value);
 	}
 	return 0;
@@ -494,8 +524,9 @@ static int get_dil(const ctx_t *c, calib_input_t *in)
 
 static const char *const input_keys[] = {
 	"id", "extended", "min_dlc", "exact_dlc", "start_bit", "length", "byte_order", "signed",
-	"factor", "offset", "unit", "mux_start_bit", "mux_length", "mux_byte_order",
-	"mux_value", "na_raw", "na_raw2", "qualifier_bit", "qualifier_invalid", "protection",
+	"factor", "offset", "unit", "signal", "mux_start_bit", "mux_length", "mux_byte_order",
+	"mux_value", "mux_value_max", "mux2_start_bit", "mux2_length", "mux2_byte_order",
+	"mux2_value", "mux2_value_max", "na_raw", "na_raw2", "qualifier_bit", "qualifier_invalid", "protection",
 	"data_id", "data_id_list", "counter_start_bit", "counter_length",
 	"counter_byte_order", "counter_modulus", "max_delta_counter", "period_ms",
 	"stale_cycles", "max", "min", "step_max", NULL
@@ -507,6 +538,7 @@ static const char *const input_keys[] = {
 
 static const char *const corner_keys[] = {
 	"speed", "force", "piston_area_mm2", "efficiency", "axle_factor", "friction_faces",
+	"torque_share",
 	"mass_kg", "omega0_radps", "damping", "mu_inf", "delta_mu", "slope_spm", "criterion",
 	"pad_radius_m", "wheel_radius_m", "status_id", "detail_id", "detail2_id", "diag_id",
 	SD_KEYS, NULL
@@ -531,9 +563,27 @@ static int unknown_keys(const ctx_t *c, const char *const *known)
 	return 0;
 }
 
+/* The key a message starts with ("max is below min", "mux_value_max
+ * below ..."), when the section gives it. */
+static const calib_section_kv_t *lead_key(const calib_section_t *sec, const char *why)
+{
+	char key[32];
+	size_t n = strcspn(why, " :");
+
+	if ((n == 0U) || (n >= sizeof(key))) {
+		return NULL;
+	}
+	memcpy(key, why, n);
+	key[n] = '\0';
+	return kv_of(sec, key);
+}
+
 /* The line of the key a calib_input_check() message is about. */
 static const calib_section_kv_t *blame(const ctx_t *c, const char *why)
 {
+	if (lead_key(c->sec, why) != NULL) {
+		return lead_key(c->sec, why);
+	}
 	static const char *const keys[] = { "min_dlc", "max_delta_counter", "counter_modulus",
 		"mux_value", "qualifier", "na_raw", "step_max", "period_ms", "factor",
 		"length", "id", NULL };
@@ -626,9 +676,60 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 			return -1;
 		}
 		in->mux_value = (uint32_t)v;
+		in->mux_value_max = (uint32_t)v;
 		if (can_signal_overlap(&in->mux, &in->sig)) {
 			return kv_err(c, kv_of(c->sec, "mux_start_bit"),
 				      "the mux selector overlaps the value signal");
+		}
+	}
+	/* the inclusive end of the selector's range (default: mux_value) */
+	if (get_int(c, "mux_value_max", 0, UINT32_MAX, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (present) {
+		if ((in->flags & CALIB_IN_MUX) == 0U) {
+			return kv_err(c, kv_of(c->sec, "mux_value_max"),
+				      "mux_value_max without the mux_* selector");
+		}
+		in->mux_value_max = (uint32_t)v;
+	}
+	/* a second selector condition: all four or none */
+	if (get_signal(c, "mux2_", false, &in->mux2, &present) != 0) {
+		return -1;
+	}
+	if (present != (kv_of(c->sec, "mux2_value") != NULL)) {
+		return kv_err(c, NULL, "mux2_start_bit, mux2_length, mux2_byte_order and mux2_value: all four or none");
+	}
+	if (present) {
+		in->flags |= CALIB_IN_MUX2;
+		if (get_int(c, "mux2_value", 0, UINT32_MAX, true, &v, NULL) != 0) {
+			return -1;
+		}
+		in->mux2_value = (uint32_t)v;
+		in->mux2_value_max = (uint32_t)v;
+	}
+	if (get_int(c, "mux2_value_max", 0, UINT32_MAX, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (present) {
+		if ((in->flags & CALIB_IN_MUX2) == 0U) {
+			return kv_err(c, kv_of(c->sec, "mux2_value_max"),
+				      "mux2_value_max without the mux2_* selector");
+		}
+		in->mux2_value_max = (uint32_t)v;
+	}
+	kv = kv_of(c->sec, "signal");
+	if (kv != NULL) {
+		size_t j;
+		const size_t len = strlen(kv->value);
+		bool ok = (len >= 1U) && (len < CALIB_SIGNAL_NAME_LEN);
+
+		for (j = 0; ok && (j < len); j++) {
+			ok = isgraph((unsigned char)kv->value[j]) != 0;
+		}
+		if (!ok) {
+			return kv_err(c, kv, "signal: the DBC name MSG.SIG, 1..%u printable characters without blanks",
+				      CALIB_SIGNAL_NAME_LEN - 1U);
 		}
 	}
 	/* a signed signal's code may be written as a number (-32768, as a
@@ -837,7 +938,8 @@ static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t
 		}
 		corner->piston_area_cmm2 = (uint32_t)nearbyint(v);
 	}
-	if ((ppm_key(c, "efficiency", 1000000U, &corner->efficiency_ppm) != 0) ||
+	if ((ppm_key(c, "torque_share", 1000000U, &corner->torque_share_ppm) != 0) ||
+	    (ppm_key(c, "efficiency", 1000000U, &corner->efficiency_ppm) != 0) ||
 	    (ppm_key(c, "axle_factor", 4000000U, &corner->axle_factor_ppm) != 0) ||
 	    (get_u8(c, "friction_faces", 1, 4, false, &corner->friction_faces) != 0)) {
 		return -1;
@@ -849,7 +951,9 @@ static int corner_blame(const ctx_t *c, const char *why)
 {
 	const char *key = NULL;
 
-	if (strstr(why, "speed") != NULL) {
+	if (strncmp(why, "torque_share", 12U) == 0) {
+		key = "torque_share";
+	} else if (strstr(why, "speed") != NULL) {
 		key = "speed";
 	} else if ((strstr(why, "force") != NULL) || (strstr(why, "pressure") != NULL)) {
 		key = (strstr(why, "piston") != NULL) ? NULL : "force";
@@ -880,7 +984,11 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 				return -1;
 			}
 			if (names != NULL) {
+				const calib_section_kv_t *sig = kv_of(c.sec, "signal");
+
 				snprintf(names->input[ni], sizeof(names->input[ni]), "%s", c.sec->name);
+				snprintf(names->signal[ni], sizeof(names->signal[ni]), "%.63s",
+					 (sig != NULL) ? sig->value : "");
 			}
 			ni++;
 		}
@@ -920,8 +1028,22 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 				k++;
 			}
 		}
-		if (c.sec == NULL) {
-			c.sec = &s->sec[0];
+		if ((me.corner >= 0) && (me.input >= 0) && (me.why != NULL)) {
+			/* an input that cannot be set up with this corner's
+			 * geometry: the input's key, when the message names one */
+			unsigned int n = 0;
+
+			for (i = 0; i < s->count; i++) {
+				if (!s->sec[i].is_corner) {
+					if ((n == (unsigned int)me.input) && (lead_key(&s->sec[i], me.why) != NULL)) {
+						ctx_t ci = { &s->sec[i], file, err, errlen };
+
+						return kv_err(&ci, lead_key(&s->sec[i], me.why), "%s (with [corner %s])",
+							      me.why, c.sec->name);
+					}
+					n++;
+				}
+			}
 		}
 		return corner_blame(&c, me.why != NULL ? me.why : "invalid input map");
 	}
@@ -933,7 +1055,7 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 
 static void put_dec(FILE *f, const char *key, calib_dec_t d)
 {
-	char b[48];
+	char b[64];
 
 	calib_dec_format(d, b, sizeof(b));
 	fprintf(f, "%s = %s\n", key, b);
@@ -975,9 +1097,22 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 		put_dec(f, "factor", in->factor);
 		put_dec(f, "offset", in->offset);
 		fprintf(f, "unit = %s\n", input_unit_name((input_unit_t)in->unit));
+		if ((names != NULL) && (names->signal[i][0] != '\0')) {
+			fprintf(f, "signal = %s\n", names->signal[i]);
+		}
 		if ((in->flags & CALIB_IN_MUX) != 0U) {
 			put_sig(f, "mux_", &in->mux);
 			fprintf(f, "mux_value = %" PRIu32 "\n", in->mux_value);
+			if (in->mux_value_max != in->mux_value) {
+				fprintf(f, "mux_value_max = %" PRIu32 "\n", in->mux_value_max);
+			}
+		}
+		if ((in->flags & CALIB_IN_MUX2) != 0U) {
+			put_sig(f, "mux2_", &in->mux2);
+			fprintf(f, "mux2_value = %" PRIu32 "\n", in->mux2_value);
+			if (in->mux2_value_max != in->mux2_value) {
+				fprintf(f, "mux2_value_max = %" PRIu32 "\n", in->mux2_value_max);
+			}
 		}
 		if ((in->flags & CALIB_IN_NA) != 0U) {
 			fprintf(f, "na_raw = 0x%" PRIX32 "\n", in->na_raw);
@@ -1026,6 +1161,10 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 		if (c->piston_area_cmm2 != 0U) {
 			fprintf(f, "piston_area_mm2 = %u.%02u\n", c->piston_area_cmm2 / 100U,
 				c->piston_area_cmm2 % 100U);
+		}
+		if (c->torque_share_ppm != 1000000U) {
+			fprintf(f, "torque_share = %u.%06u\n", c->torque_share_ppm / 1000000U,
+				c->torque_share_ppm % 1000000U);
 		}
 		fprintf(f, "efficiency = %u.%06u\naxle_factor = %u.%06u\nfriction_faces = %u\n",
 			c->efficiency_ppm / 1000000U, c->efficiency_ppm % 1000000U,

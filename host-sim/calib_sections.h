@@ -46,10 +46,21 @@ typedef struct {
 	calib_section_t sec[CALIB_SECTIONS_MAX];
 } calib_sections_t;
 
-/* The names of a parsed map's inputs, by index in calib_t.inputs. */
+#define CALIB_IFACE_LEN 16U
+#define CALIB_SIGNAL_NAME_LEN 64U
+
+/* The host-only names of a parsed calibration (never in the ECU block):
+ * the `[input NAME]` names and their `signal = MSG.SIG` DBC names, by
+ * index in calib_t.inputs, and the top-level `input_iface` ("" when not
+ * given). */
 typedef struct {
 	char input[CALIB_MAX_INPUTS][CALIB_SECTION_NAME_LEN];
+	char signal[CALIB_MAX_INPUTS][CALIB_SIGNAL_NAME_LEN];
+	char input_iface[CALIB_IFACE_LEN];
 } calib_names_t;
+
+/* `input_iface` values: 1..15 of A-Z a-z 0-9 _ . - */
+bool calib_iface_name_valid(const char *name);
 
 void calib_sections_init(calib_sections_t *s);
 
@@ -73,10 +84,15 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 			  calib_t *cal, calib_names_t *names, char *err, size_t errlen);
 
 /* Write the input and corner sections of cal (nothing for the legacy
- * form); inputs are named in0..in7 unless names is given. */
+ * form); inputs are named in0..in7 unless names is given (which also
+ * gives their `signal` lines). */
 int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names);
 
-/* decimal text <-> calib_dec_t, exactly (up to 9 significant digits) */
+/* decimal text <-> calib_dec_t, exactly: up to 17 significant digits,
+ * plain or exponent notation as Python's repr(float) writes them
+ * ("0.0009765625", "1e-07", "0.33333333333333331"); more digits only
+ * when they are zeros. calib_dec_format writes the shortest exact text
+ * (plain, or mantissa `e` exponent when that is shorter); len >= 32. */
 bool calib_dec_parse(const char *text, calib_dec_t *out);
 void calib_dec_format(calib_dec_t d, char *buf, size_t len);
 double calib_dec_value(calib_dec_t d);

@@ -20,6 +20,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "calib_map.h"
 #include "sq_status.h"
 #include "squeal_model.h"
 
@@ -529,6 +530,8 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 	static calib_sections_t sections; /* large: not on the stack */
 	unsigned int legacy_line = 0;
 	const char *legacy_key = "";
+	unsigned int iface_line = 0;
+	char iface[CALIB_IFACE_LEN] = "";
 
 	if ((f == NULL) || (out == NULL)) {
 		calib_text_errf(err, errlen, "calib_text_parse: NULL argument");
@@ -598,6 +601,22 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 			}
 			continue;
 		}
+		if (strcmp(key, "input_iface") == 0) {
+			/* host only: where the inputs come from (not in the block) */
+			if (iface_line != 0U) {
+				calib_text_errf(err, errlen, "%s:%u: duplicate key 'input_iface' (first set on line %u)",
+					name, lineno, iface_line);
+				return SQ_EBADMSG;
+			}
+			iface_line = lineno;
+			if (!calib_iface_name_valid(value)) {
+				calib_text_errf(err, errlen, "%s:%u: input_iface = '%s': 1..15 of A-Z a-z 0-9 _ . -",
+					name, lineno, value);
+				return SQ_EBADMSG;
+			}
+			snprintf(iface, sizeof(iface), "%s", value);
+			continue;
+		}
 		k = find_key(key);
 		if (k == NULL) {
 			calib_text_errf(err, errlen, "%s:%u: unknown key '%s' (docs/calib-example.txt lists them)",
@@ -639,17 +658,37 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 		return SQ_EBADMSG;
 	}
 	if (calib_validate(&cal) != SQ_OK) {
+		calib_map_error_t me = { -1, -1, NULL };
+		const key_desc_t *bk = find_key("bitrate_kbps");
+		const key_desc_t *dk = find_key("delta_mu");
+
 		if ((int64_t)cal.mu_inf_q30 + cal.delta_mu_q30 < 0) {
-			calib_text_errf(err, errlen, "%s: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
-				name);
+			const unsigned int dl = seen_line[(size_t)(dk - keys)];
+
+			if (dl != 0U) {
+				calib_text_errf(err, errlen, "%s:%u: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
+					name, dl);
+			} else {
+				calib_text_errf(err, errlen, "%s: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
+					name);
+			}
 		} else if (calib_sd_validate(&cal) != SQ_OK) {
 			calib_text_errf(err, errlen, "%s: a standard deviation must be in 0 .. |its parameter| (mu_inf_sd <= 1.5), a brake's own or a corner's",
 				name);
+		} else if (calib_check(&cal) == CALIB_ERR_BITRATE) {
+			calib_text_errf(err, errlen, "%s:%u: %s", name, seen_line[(size_t)(bk - keys)],
+				calib_error_name(CALIB_ERR_BITRATE));
+		} else if (calib_map_check(&cal, &me) != SQ_OK) {
+			calib_text_errf(err, errlen, "%s: the inputs do not set up: %s", name,
+				(me.why != NULL) ? me.why : "invalid input map");
 		} else {
 			calib_text_errf(err, errlen, "%s: the six CAN identifiers (disc_speed_id, pad_force_id, status_id, detail_id, diag_id, detail2_id) must all differ",
 				name);
 		}
 		return SQ_EBADMSG;
+	}
+	if (names != NULL) {
+		snprintf(names->input_iface, sizeof(names->input_iface), "%s", iface);
 	}
 	*out = cal;
 	return SQ_OK;
@@ -682,6 +721,11 @@ int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, ch
 
 int calib_text_write(FILE *f, const calib_t *cal)
 {
+	return calib_text_write_map(f, cal, NULL);
+}
+
+int calib_text_write_map(FILE *f, const calib_t *cal, const calib_names_t *names)
+{
 	calib_t def;
 	size_t i;
 
@@ -708,7 +752,13 @@ int calib_text_write(FILE *f, const calib_t *cal)
 		fprintf(f, "%-34s # %s; default %s; range %s\n", line, k->what, dval,
 			range);
 	}
-	if (calib_sections_write(f, cal, NULL) != SQ_OK) {
+	if ((names != NULL) && (names->input_iface[0] != '\0')) {
+		char line[64];
+
+		snprintf(line, sizeof(line), "input_iface = %s", names->input_iface);
+		fprintf(f, "%-34s # the log/SocketCAN interface of the inputs (host only)\n", line);
+	}
+	if (calib_sections_write(f, cal, names) != SQ_OK) {
 		return SQ_EIO;
 	}
 	fflush(f);

@@ -21,6 +21,10 @@
  *   - refused: unknown keys, a key given twice, a bad number, a value out
  *     of range, and a file whose keys together do not validate
  *     (calib_validate: identifiers must differ, mu_inf + delta_mu >= 0).
+ *   - `input_iface = NAME` (host only, never in the ECU block): the log or
+ *     SocketCAN interface the inputs come from (calib_names_t.input_iface);
+ *   - a file is accepted only when every corner sets up exactly as written
+ *     (calib_validate() runs the same preparation as the monitor).
  * Errors read `FILE:LINE: message` (LINE omitted for whole-file checks).
  */
 #ifndef CALIB_TEXT_H
@@ -86,6 +90,10 @@ void calib_text_flat_format(const char *key, const calib_t *cal, char *buf, size
  * comment. Returns 0, SQ_EINVAL (NULL or cal does not validate), SQ_EIO.
  */
 int calib_text_write(FILE *f, const calib_t *cal);
+
+/* The same with the host-only names of a loaded file (input_iface, the
+ * [input] names and their signal lines); names may be NULL. */
+int calib_text_write_map(FILE *f, const calib_t *cal, const calib_names_t *names);
 
 /* Introspection, for tests and docs: the number of keys and key i's name
  * (NULL past the end). */

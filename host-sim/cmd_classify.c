@@ -76,7 +76,8 @@ static void classify_usage(FILE *f)
 		"  --corner POS     with --calib: the brake of [corner POS] (FL, FR, RL, RR)\n"
 		"  --json           one JSON object on stdout\n\n"
 		"Exit status: 0 classified, 1 input outside the model's domain\n"
-		"(state \"invalid\"), 2 bad usage. Numeric build: %s.\n",
+		"(state \"invalid\") or a --calib file that does not load and set up\n"
+		"(one line FILE:LINE: reason), 2 bad usage. Numeric build: %s.\n",
 		SQUEAL_NUMERIC_NAME);
 }
 
@@ -200,7 +201,8 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 	return 0;
 }
 
-/* The brake and its deviations from --calib (criterion too, unless given). */
+/* The brake and its deviations from --calib (criterion too, unless given):
+ * 0, or the exit code (1 the file does not load, 2 no such --corner). */
 static int load_brake(classify_args_t *a, squeal_params_t *params, squeal_param_sd_t *sd)
 {
 	calib_t cal;
@@ -209,11 +211,11 @@ static int load_brake(classify_args_t *a, squeal_params_t *params, squeal_param_
 
 	if (calib_text_load(a->calib_path, &cal, err, sizeof(err)) != SQ_OK) {
 		fprintf(stderr, "squeal-sim classify: %s\n", err);
-		return -1;
+		return 1;  /* the file does not load or set up: exit 1 */
 	}
 	if (calib_text_brake(&cal, a->corner, &brake, err, sizeof(err)) != 0) {
 		fprintf(stderr, "squeal-sim classify: %s: %s\n", a->calib_path, err);
-		return -1;
+		return 2;  /* --corner names a corner the file lacks: usage */
 	}
 	calib_corner_params(&brake, params);
 	calib_corner_sd(&brake, sd);
@@ -373,8 +375,9 @@ int cmd_classify(int argc, char **argv)
 	}
 	squeal_sigma_sd_zero(&sd);
 	if (a.calib_path != NULL) {
-		if (load_brake(&a, &params, &sd) != 0) {
-			return 2;
+		rc = load_brake(&a, &params, &sd);
+		if (rc != 0) {
+			return rc;
 		}
 	} else {
 		/* A value the fixed build cannot represent saturates; the model

@@ -23,11 +23,16 @@ uint32_t plant_vehicle_frames(const calib_t *cal, plant_vframe_t frames[CALIB_MA
 		const calib_input_t *in = &cal->inputs[i];
 		const bool ext = (in->flags & CALIB_IN_EXTENDED) != 0U;
 		const bool mux = (in->flags & CALIB_IN_MUX) != 0U;
+		const bool mux2 = (in->flags & CALIB_IN_MUX2) != 0U;
 		uint32_t k;
 
+		/* one frame per identifier and selector page: every selector is
+		 * written with the low end of its range */
 		for (k = 0U; k < n; k++) {
 			if ((frames[k].id == in->id) && (frames[k].ext == ext) &&
-			    (frames[k].has_mux == mux) && (!mux || (frames[k].mux_value == in->mux_value))) {
+			    (frames[k].has_mux == mux) && (!mux || (frames[k].mux_value == in->mux_value)) &&
+			    (frames[k].has_mux2 == mux2) &&
+			    (!mux2 || (frames[k].mux2_value == in->mux2_value))) {
 				break;
 			}
 		}
@@ -37,6 +42,8 @@ uint32_t plant_vehicle_frames(const calib_t *cal, plant_vframe_t frames[CALIB_MA
 			frames[n].ext = ext;
 			frames[n].has_mux = mux;
 			frames[n].mux_value = in->mux_value;
+			frames[n].has_mux2 = mux2;
+			frames[n].mux2_value = in->mux2_value;
 			frames[n].prot = NO_PROT;
 			frames[n].period_ms = in->period_ms;
 			frames[n].dlc = 8U;
@@ -111,7 +118,9 @@ double plant_vehicle_physical(const calib_t *cal, uint32_t i, double vehicle_mps
 		const double mu = q(c->mu_inf_q30, 1073741824.0) +
 			q(c->delta_mu_q30, 1073741824.0) * exp(-q(c->slope_q24, 16777216.0) * v0);
 
-		return force_n * (double)c->friction_faces * mu * r_p;
+		/* the input is the total the corner has torque_share of */
+		return force_n * (double)c->friction_faces * mu * r_p /
+		       ((double)c->torque_share_ppm * 1e-6);
 	}
 	default:
 		break;
@@ -170,6 +179,9 @@ void plant_vehicle_pack(const calib_t *cal, const plant_vframe_t *fr, e2e_p01_tx
 
 		if ((in->flags & CALIB_IN_MUX) != 0U) {
 			can_signal_put(&in->mux, f->data, in->mux_value);
+		}
+		if ((in->flags & CALIB_IN_MUX2) != 0U) {
+			can_signal_put(&in->mux2, f->data, in->mux2_value);
 		}
 		if ((in->flags & CALIB_IN_QUALIFIER) != 0U) {
 			const uint8_t bit = (uint8_t)(1U << (in->qualifier_bit % 8U));

@@ -27,7 +27,9 @@ typedef struct {
 	bool ext;
 	uint8_t dlc;
 	bool has_mux;
-	uint32_t mux_value;
+	uint32_t mux_value;                 /* written: the low end of the range */
+	bool has_mux2;
+	uint32_t mux2_value;
 	uint8_t n;                          /* inputs in this frame            */
 	uint8_t in[CALIB_MAX_INPUTS];
 	uint8_t prot;                       /* input whose protection applies, 0xFF none */

@@ -9,5 +9,6 @@ int cmd_ecu(int argc, char **argv);
 int cmd_plant(int argc, char **argv);
 int cmd_replay(int argc, char **argv);
 int cmd_decode(int argc, char **argv);
+int cmd_calib_check(int argc, char **argv);
 
 #endif /* SIM_COMMANDS_H */

@@ -56,6 +56,7 @@ static const command_t commands[] = {
 	{ "plant", cmd_plant, "send DiscSpeed/PadForce from a scenario (or write a log)" },
 	{ "replay", cmd_replay_exec, "feed a candump log through the firmware in virtual time" },
 	{ "decode", cmd_decode, "print CAN frames as physical values (log or interface)" },
+	{ "calib-check", cmd_calib_check, "does a calibration file load and set up exactly?" },
 	{ "map", oscsim_cmd_map, "stability map: model vs simulation (CSV)" },
 	{ "simulate", oscsim_cmd_simulate, "simulate the stick-slip oscillator at one point" },
 };
@@ -68,7 +69,7 @@ static void usage(FILE *f)
 		SQUEAL_NUMERIC_NAME);
 	fprintf(f, "commands:\n");
 	for (i = 0; i < sizeof(commands) / sizeof(commands[0]); i++) {
-		fprintf(f, "  %-10s %s\n", commands[i].name, commands[i].summary);
+		fprintf(f, "  %-11s %s\n", commands[i].name, commands[i].summary);
 	}
 	fprintf(f, "\n'squeal-sim COMMAND --help' describes each command.\n");
 }

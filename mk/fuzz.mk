@@ -6,7 +6,7 @@
 #   build/fuzz/bin/fuzz_calib_block  calibration block decode/encode
 #   build/fuzz/bin/fuzz_monitor      monitor under arbitrary frames and time
 #   build/fuzz/bin/fuzz_monitor_fixed  the same, fixed build (model adapter)
-#   (fuzz_candump, fuzz_calib_text when host-sim's parsers exist)
+#   (fuzz_candump, fuzz_calib_text{,_fixed} when host-sim's parsers exist)
 #
 #   make fuzz                 each target FUZZ_SECONDS (300) on its corpus,
 #                             prints execs/s and coverage (cov/ft)
@@ -60,7 +60,7 @@ $(FUZZ_BIN)/$(1): build/$(2)/app/$(3:.c=.o) $(4) build/$(2)/libfirmware.a
 	@mkdir -p $$(@D)
 	$$(FUZZ_CC) $$(FUZZ_LDFLAGS) -o $$@ $$^ -lm
 FUZZ_TARGETS += $(FUZZ_BIN)/$(1)
-build/fuzzcov/bin/$(1): build/$(subst fuzz,fuzzcov,$(2))/app/$(3:.c=.o) $(subst build/fuzz/,build/fuzzcov/,$(4)) build/$(subst fuzz,fuzzcov,$(2))/libfirmware.a
+build/fuzzcov/bin/$(1): build/$(subst fuzz,fuzzcov,$(2))/app/$(3:.c=.o) $(subst build/fuzz-fixed/,build/fuzzcov-fixed/,$(subst build/fuzz/,build/fuzzcov/,$(4))) build/$(subst fuzz,fuzzcov,$(2))/libfirmware.a
 	@mkdir -p $$(@D)
 	$$(FUZZ_CC) -g $$(FUZZ_COV_FLAGS) -fsanitize=fuzzer -o $$@ $$^ -lm
 FUZZ_COV_TARGETS += build/fuzzcov/bin/$(1)
@@ -80,6 +80,8 @@ $(eval $(call fuzz_target,fuzz_candump,fuzz,tests/fuzz/fuzz_candump.c,build/fuzz
 endif
 ifeq ($(words $(wildcard host-sim/calib_text.c tests/fuzz/fuzz_calib_text.c)),2)
 $(eval $(call fuzz_target,fuzz_calib_text,fuzz,tests/fuzz/fuzz_calib_text.c,build/fuzz/app/host-sim/calib_text.o build/fuzz/app/host-sim/calib_sections.o))
+# the same properties in the fixed build ("what validates sets up" in both)
+$(eval $(call fuzz_target,fuzz_calib_text_fixed,fuzz-fixed,tests/fuzz/fuzz_calib_text.c,build/fuzz-fixed/app/host-sim/calib_text.o build/fuzz-fixed/app/host-sim/calib_sections.o))
 endif
 
 export FUZZ_TARGETS

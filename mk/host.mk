@@ -6,6 +6,7 @@
 SIM_SRCS += host-sim/squeal_sim.c host-sim/cmd_classify.c host-sim/sim_num.c
 # ecu, plant (mk/integration.mk has their tests); they run on hal/linux
 SIM_SRCS += host-sim/cmd_ecu.c host-sim/cmd_plant.c host-sim/plant_scenario.c host-sim/plant_vehicle.c host-sim/calib_text.c host-sim/calib_sections.c
+SIM_SRCS += host-sim/cmd_calib_check.c
 SIM_LIBS_host += build/host/liboscsim.a build/host/libhal_linux.a
 SIM_LIBS_host-fixed += build/host-fixed/liboscsim.a build/host-fixed/libhal_linux.a
 SIM_LIBS_test += build/test/liboscsim.a build/test/libhal_linux.a

@@ -24,3 +24,8 @@ TEST_PROGS += $(foreach v,$(INPUTMAP_TEST_VARIANTS),build/$(v)/test_vehicle_inpu
 # operating points and states against values derived in Python.
 tests/inputmap/test_vehicle_drive.py: build/host/squeal-sim
 TEST_PROGS += tests/inputmap/test_vehicle_drive.py
+
+# squeal-sim calib-check and the --calib commands (ecu, plant, classify)
+# refusing a calibration that does not set up, both builds.
+tests/cli/test_calib_check.py: build/host/squeal-sim build/host-fixed/squeal-sim
+TEST_PROGS += tests/cli/test_calib_check.py

@@ -16,7 +16,7 @@
  * this one table, so the layout and the ranges cannot drift apart. */
 typedef struct {
 	uint16_t offset;
-	uint8_t size;      /* 1, 2 or 4 bytes */
+	uint8_t size;      /* 1, 2, 4 or 8 bytes */
 	uint8_t is_signed;
 	int64_t min;
 	int64_t max;
@@ -98,16 +98,23 @@ static const calib_field_t fields[] = {
 	FI(offsetof(calib_t, inputs[0].sig.length), 1U, 0U, 0, 32),
 	FI(offsetof(calib_t, inputs[0].sig.byte_order), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].sig.is_signed), 1U, 0U, 0, 1),
-	FI(offsetof(calib_t, inputs[0].factor.mant), 4U, 1U, INT32_MIN, INT32_MAX),
-	FI(offsetof(calib_t, inputs[0].factor.exp), 1U, 1U, -12, 12),
-	FI(offsetof(calib_t, inputs[0].offset.mant), 4U, 1U, INT32_MIN, INT32_MAX),
-	FI(offsetof(calib_t, inputs[0].offset.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].factor.mant), 8U, 1U, -INPUT_DEC_MANT_MAX, INPUT_DEC_MANT_MAX),
+	FI(offsetof(calib_t, inputs[0].factor.exp), 1U, 1U, INPUT_DEC_EXP_MIN, INPUT_DEC_EXP_MAX),
+	FI(offsetof(calib_t, inputs[0].offset.mant), 8U, 1U, -INPUT_DEC_MANT_MAX, INPUT_DEC_MANT_MAX),
+	FI(offsetof(calib_t, inputs[0].offset.exp), 1U, 1U, INPUT_DEC_EXP_MIN, INPUT_DEC_EXP_MAX),
 	FI(offsetof(calib_t, inputs[0].unit), 1U, 0U, 0, 255),
 	FI(offsetof(calib_t, inputs[0].mux.start_bit), 1U, 0U, 0, 63),
 	FI(offsetof(calib_t, inputs[0].mux.length), 1U, 0U, 0, 32),
 	FI(offsetof(calib_t, inputs[0].mux.byte_order), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].mux.is_signed), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].mux_value), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].mux_value_max), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].mux2.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].mux2.length), 1U, 0U, 0, 32),
+	FI(offsetof(calib_t, inputs[0].mux2.byte_order), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].mux2.is_signed), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].mux2_value), 4U, 0U, 0, (int64_t)UINT32_MAX),
+	FI(offsetof(calib_t, inputs[0].mux2_value_max), 4U, 0U, 0, (int64_t)UINT32_MAX),
 	FI(offsetof(calib_t, inputs[0].na_raw), 4U, 0U, 0, (int64_t)UINT32_MAX),
 	FI(offsetof(calib_t, inputs[0].na_raw2), 4U, 0U, 0, (int64_t)UINT32_MAX),
 	FI(offsetof(calib_t, inputs[0].qualifier_bit), 1U, 0U, 0, 63),
@@ -138,12 +145,12 @@ static const calib_field_t fields[] = {
 	FI(offsetof(calib_t, inputs[0].max_delta_counter), 1U, 0U, 0, 15),
 	FI(offsetof(calib_t, inputs[0].period_ms), 2U, 0U, 0, 1000),
 	FI(offsetof(calib_t, inputs[0].stale_cycles), 1U, 0U, 0, 100),
-	FI(offsetof(calib_t, inputs[0].max.mant), 4U, 1U, INT32_MIN, INT32_MAX),
-	FI(offsetof(calib_t, inputs[0].max.exp), 1U, 1U, -12, 12),
-	FI(offsetof(calib_t, inputs[0].min.mant), 4U, 1U, INT32_MIN, INT32_MAX),
-	FI(offsetof(calib_t, inputs[0].min.exp), 1U, 1U, -12, 12),
-	FI(offsetof(calib_t, inputs[0].step_max.mant), 4U, 1U, INT32_MIN, INT32_MAX),
-	FI(offsetof(calib_t, inputs[0].step_max.exp), 1U, 1U, -12, 12),
+	FI(offsetof(calib_t, inputs[0].max.mant), 8U, 1U, -INPUT_DEC_MANT_MAX, INPUT_DEC_MANT_MAX),
+	FI(offsetof(calib_t, inputs[0].max.exp), 1U, 1U, INPUT_DEC_EXP_MIN, INPUT_DEC_EXP_MAX),
+	FI(offsetof(calib_t, inputs[0].min.mant), 8U, 1U, -INPUT_DEC_MANT_MAX, INPUT_DEC_MANT_MAX),
+	FI(offsetof(calib_t, inputs[0].min.exp), 1U, 1U, INPUT_DEC_EXP_MIN, INPUT_DEC_EXP_MAX),
+	FI(offsetof(calib_t, inputs[0].step_max.mant), 8U, 1U, -INPUT_DEC_MANT_MAX, INPUT_DEC_MANT_MAX),
+	FI(offsetof(calib_t, inputs[0].step_max.exp), 1U, 1U, INPUT_DEC_EXP_MIN, INPUT_DEC_EXP_MAX),
 	FC(offsetof(calib_t, corners[0].pos), 1U, 0U, 0, 3),
 	FC(offsetof(calib_t, corners[0].speed_input), 1U, 0U, 0, (int64_t)CALIB_MAX_INPUTS - 1),
 	FC(offsetof(calib_t, corners[0].force_input), 1U, 0U, 0, (int64_t)CALIB_MAX_INPUTS - 1),
@@ -151,6 +158,7 @@ static const calib_field_t fields[] = {
 	FC(offsetof(calib_t, corners[0].piston_area_cmm2), 4U, 0U, 0, 100000000),   /* up to 1 m^2 */
 	FC(offsetof(calib_t, corners[0].efficiency_ppm), 4U, 0U, 0, 1000000),
 	FC(offsetof(calib_t, corners[0].axle_factor_ppm), 4U, 0U, 0, 4000000),
+	FC(offsetof(calib_t, corners[0].torque_share_ppm), 4U, 0U, 0, 1000000),
 	FC(offsetof(calib_t, corners[0].mass_q16), 4U, 1U, 0, 10000LL << 16),
 	FC(offsetof(calib_t, corners[0].omega0_q12), 4U, 1U, 0, 500000LL << 12),
 	FC(offsetof(calib_t, corners[0].damping_q30), 4U, 1U, 0, 1LL << 30),
@@ -249,6 +257,8 @@ static int64_t field_get(const calib_t *cal, const calib_field_t *f, uint32_t k)
 		return *(const uint8_t *)base;
 	case 2U:
 		return *(const uint16_t *)(const void *)base;
+	case 8U:
+		return *(const int64_t *)(const void *)base;
 	default:
 		if (f->is_signed != 0U) {
 			return *(const int32_t *)(const void *)base;
@@ -257,8 +267,9 @@ static int64_t field_get(const calib_t *cal, const calib_field_t *f, uint32_t k)
 	}
 }
 
-static void field_set(calib_t *cal, const calib_field_t *f, uint32_t k, uint32_t raw)
+static void field_set(calib_t *cal, const calib_field_t *f, uint32_t k, uint64_t raw64)
 {
+	const uint32_t raw = (uint32_t)raw64;
 	uint8_t *base = (uint8_t *)cal + f->offset + (k * f->stride);
 
 	switch (f->size) {
@@ -272,6 +283,12 @@ static void field_set(calib_t *cal, const calib_field_t *f, uint32_t k, uint32_t
 		break;
 	case 2U:
 		*(uint16_t *)(void *)base = (uint16_t)raw;
+		break;
+	case 8U:
+		/* two's complement bits -> int64 without implementation-
+		 * defined conversion */
+		*(int64_t *)(void *)base = (raw64 <= (uint64_t)INT64_MAX) ?
+			(int64_t)raw64 : (-(int64_t)(~raw64) - 1);
 		break;
 	default:
 		if (f->is_signed != 0U) {
@@ -386,6 +403,12 @@ static calib_error_t validate_why(const calib_t *cal)
 	return CALIB_OK;
 }
 
+calib_error_t calib_check(const calib_t *cal)
+{
+	HAL_REQUIRE(cal != NULL);
+	return validate_why(cal);
+}
+
 int calib_validate(const calib_t *cal)
 {
 	HAL_REQUIRE(cal != NULL);
@@ -407,7 +430,7 @@ int calib_field_range(uint32_t offset, int64_t *min, int64_t *max)
 	return SQ_ENOENT;
 }
 
-static void put_le(uint8_t *p, uint32_t v, uint32_t size)
+static void put_le(uint8_t *p, uint64_t v, uint32_t size)
 {
 	uint32_t i;
 
@@ -416,13 +439,13 @@ static void put_le(uint8_t *p, uint32_t v, uint32_t size)
 	}
 }
 
-static uint32_t get_le(const uint8_t *p, uint32_t size)
+static uint64_t get_le(const uint8_t *p, uint32_t size)
 {
-	uint32_t v = 0U;
+	uint64_t v = 0U;
 	uint32_t i;
 
 	for (i = 0U; i < size; i++) {
-		v |= (uint32_t)p[i] << (8U * i);
+		v |= (uint64_t)p[i] << (8U * i);
 	}
 	return v;
 }
@@ -445,7 +468,8 @@ int calib_encode(const calib_t *cal, uint8_t *buf, uint32_t buf_len)
 		for (k = 0U; k < fields[i].count; k++) {
 			const int64_t v = field_get(cal, &fields[i], k);
 
-			put_le(&buf[pos], (uint32_t)(v & 0xFFFFFFFFLL), fields[i].size);
+			/* the low `size` bytes of the two's complement value */
+			put_le(&buf[pos], (uint64_t)v, fields[i].size);
 			pos += fields[i].size;
 		}
 	}

@@ -27,11 +27,13 @@
 #include <stdint.h>
 
 #include "can_signal.h"
+#include "input_conv.h"
 #include "squeal_model.h"
 #include "squeal_sigma.h"
 
 #define CALIB_MAGIC 0x42435153UL /* "SQCB" little-endian */
-#define CALIB_VERSION 2U /* 2: buses (issue 10), input map and corners (issue 11) */
+#define CALIB_VERSION 3U /* 2: buses, input map and corners; 3: 64-bit decimals,
+                          * selector ranges and a second selector, torque share */
 
 /*
  * The input map (docs/calib-input-map.md). n_corners == 0 is the legacy
@@ -46,12 +48,13 @@
 
 /* input flags */
 #define CALIB_IN_EXTENDED (1U << 0)  /* 29-bit identifier                   */
-#define CALIB_IN_MUX      (1U << 1)  /* multiplexed: mux selector == value  */
+#define CALIB_IN_MUX      (1U << 1)  /* multiplexed: mux selector in range  */
 #define CALIB_IN_NA       (1U << 2)  /* na_raw means "not available"        */
 #define CALIB_IN_NA2      (1U << 3)  /* na_raw2 too                         */
 #define CALIB_IN_QUALIFIER (1U << 4) /* qualifier_bit marks invalid         */
 #define CALIB_IN_DLC_EXACT (1U << 5) /* DLC must equal min_dlc              */
-#define CALIB_IN_FLAGS_ALL 0x3FU
+#define CALIB_IN_MUX2     (1U << 6)  /* a second selector too (needs MUX)   */
+#define CALIB_IN_FLAGS_ALL 0x7FU
 
 /* calib_input_t.protection */
 #define CALIB_PROT_NONE    0U
@@ -60,11 +63,10 @@
 #define CALIB_PROT_COUNTER 3U /* alive counter signal only                      */
 #define CALIB_PROT_COUNT   4U
 
-/* A decimal as DBC files write it: mant x 10^exp (exp -12..12). */
-typedef struct {
-	int32_t mant;
-	int8_t exp;
-} calib_dec_t;
+/* A decimal as DBC files write it: mant x 10^exp, up to 17 significant
+ * digits (|mant| <= INPUT_DEC_MANT_MAX), exp INPUT_DEC_EXP_MIN..MAX
+ * (input_conv.h, which converts it exactly). */
+typedef input_dec_t calib_dec_t;
 
 /*
  * Standard deviations of the brake's parameters (issue 12, docs/uncertainty.md),
@@ -86,22 +88,26 @@ typedef struct {
  * block is decoded) carries little padding; the stored order is calib.c's
  * table, not this one. */
 typedef struct {
-	uint32_t id;               /* 11- or 29-bit identifier                */
-	uint32_t mux_value;        /* selector value (CALIB_IN_MUX)           */
-	uint32_t na_raw;           /* CALIB_IN_NA                             */
-	uint32_t na_raw2;          /* CALIB_IN_NA2                            */
 	calib_dec_t factor;        /* physical = raw x factor + offset        */
 	calib_dec_t offset;
 	calib_dec_t max;           /* plausible range and step, physical      */
 	calib_dec_t min;
 	calib_dec_t step_max;
+	uint32_t id;               /* 11- or 29-bit identifier                */
+	uint32_t mux_value;        /* selector range (CALIB_IN_MUX):          */
+	uint32_t mux_value_max;    /*   mux_value .. mux_value_max, inclusive */
+	uint32_t mux2_value;       /* second selector's range (CALIB_IN_MUX2) */
+	uint32_t mux2_value_max;
+	uint32_t na_raw;           /* CALIB_IN_NA                             */
+	uint32_t na_raw2;          /* CALIB_IN_NA2                            */
 	uint16_t data_id;          /* P01                                     */
 	uint16_t period_ms;        /* expected period                         */
 	uint8_t flags;             /* CALIB_IN_*                              */
 	uint8_t min_dlc;           /* shorter frames: bad DLC                 */
 	can_signal_t sig;          /* the value                               */
 	uint8_t unit;              /* input_unit_t                            */
-	can_signal_t mux;          /* selector (CALIB_IN_MUX)                 */
+	can_signal_t mux;          /* selector (CALIB_IN_MUX): the outer one  */
+	can_signal_t mux2;         /* inner selector (CALIB_IN_MUX2)          */
 	uint8_t qualifier_bit;     /* DBC bit number (CALIB_IN_QUALIFIER)     */
 	uint8_t qualifier_invalid; /* the bit's value that means invalid     */
 	uint8_t protection;        /* CALIB_PROT_*                            */
@@ -110,6 +116,11 @@ typedef struct {
 	uint8_t counter_modulus;   /* 2..16                                   */
 	uint8_t max_delta_counter; /* largest accepted counter step           */
 	uint8_t stale_cycles;      /* missed periods before stale             */
+	/* Not stored: the share of the value the conversion applies, 1e-6 (0:
+	 * the whole value). 0 in calib_t.inputs[]; calib_corner_view() sets it
+	 * on the copy of a corner's torque input from the corner's
+	 * torque_share_ppm, so that every user of that copy converts alike. */
+	uint32_t conv_share_ppm;
 } calib_input_t;
 
 typedef struct {
@@ -120,6 +131,7 @@ typedef struct {
 	uint32_t piston_area_cmm2; /* pressure: A [0.01 mm^2]                 */
 	uint32_t efficiency_ppm;   /* pressure: eta                           */
 	uint32_t axle_factor_ppm;  /* pressure: k                             */
+	uint32_t torque_share_ppm; /* torque: share of the input acting here  */
 	int32_t mass_q16;          /* the corner's brake, as the flat keys    */
 	int32_t omega0_q12;
 	int32_t damping_q30;
@@ -196,11 +208,13 @@ typedef struct {
 
 /* Size of the stored block: header 8 + fields + CRC 4 (v1: 103 bytes, then
  * 3 bus bytes, 2 counts, the flat deviations and k, 8 inputs of
- * CALIB_INPUT_STORED_LEN, 4 corners of CALIB_CORNER_STORED_LEN (with their
- * deviations): 1136 bytes). */
+ * CALIB_INPUT_STORED_LEN (five decimals of 9 bytes, three selector range
+ * ends and the second selector), 4 corners of CALIB_CORNER_STORED_LEN (with
+ * torque share and deviations): 1440 bytes, within the two 1 KiB flash
+ * pages of a slot). */
 #define CALIB_SD_STORED_LEN 28U
-#define CALIB_INPUT_STORED_LEN 82U
-#define CALIB_CORNER_STORED_LEN (57U + CALIB_SD_STORED_LEN)
+#define CALIB_INPUT_STORED_LEN 118U
+#define CALIB_CORNER_STORED_LEN (61U + CALIB_SD_STORED_LEN)
 #define CALIB_BLOCK_LEN (103U + 3U + 2U + CALIB_SD_STORED_LEN + 4U + \
 			 (CALIB_MAX_INPUTS * CALIB_INPUT_STORED_LEN) + \
 			 (CALIB_MAX_CORNERS * CALIB_CORNER_STORED_LEN))
@@ -226,6 +240,8 @@ const calib_t *calib_factory(void);
 /* Range check of every field. SQ_OK or SQ_EINVAL. NULL pointers given to
  * any calib_* function are programming errors: hal_contract_failed(). */
 int calib_validate(const calib_t *cal);
+/* The same, saying why (CALIB_ERR_RANGE or CALIB_ERR_BITRATE). */
+calib_error_t calib_check(const calib_t *cal);
 /* The part of calib_validate() about the deviations (flat and every corner
  * slot in squeal_sigma_sd_check()'s domain): SQ_OK or SQ_EINVAL. */
 int calib_sd_validate(const calib_t *cal);

@@ -33,6 +33,10 @@ uint8_t calib_input_needed_dlc(const calib_input_t *in)
 		d = can_signal_min_dlc(&in->mux);
 		need = (d > need) ? d : need;
 	}
+	if ((in->flags & CALIB_IN_MUX2) != 0U) {
+		d = can_signal_min_dlc(&in->mux2);
+		need = (d > need) ? d : need;
+	}
 	if ((in->flags & CALIB_IN_QUALIFIER) != 0U) {
 		d = (uint8_t)((in->qualifier_bit / 8U) + 1U);
 		need = (d > need) ? d : need;
@@ -96,6 +100,102 @@ static int check_protection(const calib_input_t *in, const char **why)
 	}
 }
 
+/* The E2E header or counter a selector must keep out of, if any. */
+static bool in_header(const calib_input_t *in, const can_signal_t *sel)
+{
+	const can_signal_t header = { 0U, 12U, (uint8_t)CAN_SIGNAL_INTEL, 0U };
+
+	if ((in->protection == (uint8_t)CALIB_PROT_P01) ||
+	    (in->protection == (uint8_t)CALIB_PROT_P02)) {
+		return can_signal_overlap(sel, &header);
+	}
+	if (in->protection == (uint8_t)CALIB_PROT_COUNTER) {
+		return can_signal_overlap(sel, &in->counter);
+	}
+	return false;
+}
+
+/* One selector condition: a valid signal clear of the value, the
+ * qualifier bit and the E2E header, and a range value .. value_max that
+ * fits it. The messages start with the key they are about. */
+static int check_selector(const calib_input_t *in, const can_signal_t *sel, uint32_t lo,
+			  uint32_t hi, bool second, const char **why)
+{
+	if (!can_signal_valid(sel)) {
+		return fail(why, second ? "mux2_length: the selector runs beyond the frame or has a bad length" :
+			    "mux_length: the selector runs beyond the frame or has a bad length");
+	}
+	if (can_signal_overlap(sel, &in->sig)) {
+		return fail(why, second ? "mux2_start_bit: the selector overlaps the value signal" :
+			    "mux_start_bit: the selector overlaps the value signal");
+	}
+	if (((in->flags & CALIB_IN_QUALIFIER) != 0U) && bit_in(sel, in->qualifier_bit)) {
+		return fail(why, second ? "mux2_start_bit: the selector holds the qualifier bit" :
+			    "mux_start_bit: the selector holds the qualifier bit");
+	}
+	if (in_header(in, sel)) {
+		return fail(why, second ? "mux2_start_bit: the selector overlaps the E2E CRC, counter or counter signal" :
+			    "mux_start_bit: the selector overlaps the E2E CRC, counter or counter signal");
+	}
+	if (!fits(sel, lo)) {
+		return fail(why, second ? "mux2_value does not fit the selector" :
+			    "mux_value does not fit the selector");
+	}
+	if ((hi < lo) || !fits(sel, hi)) {
+		return fail(why, second ? "mux2_value_max below mux2_value or beyond the selector" :
+			    "mux_value_max below mux_value or beyond the selector");
+	}
+	return SQ_OK;
+}
+
+static int check_selectors(const calib_input_t *in, const char **why)
+{
+	const bool mux = (in->flags & CALIB_IN_MUX) != 0U;
+	const bool mux2 = (in->flags & CALIB_IN_MUX2) != 0U;
+
+	if (mux2 && !mux) {
+		return fail(why, "mux2_start_bit: a second selector needs the first (mux_*)");
+	}
+	if (mux && (check_selector(in, &in->mux, in->mux_value, in->mux_value_max, false, why) != SQ_OK)) {
+		return SQ_EINVAL;
+	}
+	if (mux2) {
+		if (check_selector(in, &in->mux2, in->mux2_value, in->mux2_value_max, true, why) != SQ_OK) {
+			return SQ_EINVAL;
+		}
+		if (can_signal_overlap(&in->mux, &in->mux2)) {
+			return fail(why, "mux2_start_bit: the two selectors overlap");
+		}
+	}
+	return SQ_OK;
+}
+
+/* The decimals in range, max >= min, and a raw value between them. */
+static int check_range(const calib_input_t *in, const char **why)
+{
+	input_raw_bounds_t b;
+
+	if (!input_dec_valid(in->factor)) {
+		return fail(why, "factor beyond 17 significant digits or exponent -30..30");
+	}
+	if (!input_dec_valid(in->offset)) {
+		return fail(why, "offset beyond 17 significant digits or exponent -30..30");
+	}
+	if (!input_dec_valid(in->max) || !input_dec_valid(in->min) || !input_dec_valid(in->step_max)) {
+		return fail(why, "max, min and step_max: at most 17 significant digits, exponent -30..30");
+	}
+	if (in->step_max.mant <= 0) {
+		return fail(why, "step_max must be > 0");
+	}
+	if (input_dec_cmp(in->max, in->min) < 0) {
+		return fail(why, "max is below min");
+	}
+	if (input_conv_raw_bounds(in->factor, in->offset, in->min, in->max, in->step_max, &b) != SQ_OK) {
+		return fail(why, "max: no raw value of the signal lies within min .. max (a factor's step apart)");
+	}
+	return SQ_OK;
+}
+
 int calib_input_check(const calib_input_t *in, const char **why)
 {
 	input_unit_t unit;
@@ -120,19 +220,11 @@ int calib_input_check(const calib_input_t *in, const char **why)
 	if ((uint32_t)unit >= (uint32_t)INPUT_UNIT_COUNT) {
 		return fail(why, "unknown unit");
 	}
-	if ((in->flags & CALIB_IN_MUX) != 0U) {
-		if (!can_signal_valid(&in->mux)) {
-			return fail(why, "mux selector beyond the frame or bad length");
-		}
-		if (can_signal_overlap(&in->mux, &in->sig)) {
-			return fail(why, "mux selector overlaps the value signal");
-		}
-		if (!fits(&in->mux, in->mux_value)) {
-			return fail(why, "mux_value does not fit the selector");
-		}
-	}
 	if (((in->flags & CALIB_IN_QUALIFIER) != 0U) && bit_in(&in->sig, in->qualifier_bit)) {
 		return fail(why, "qualifier bit inside the value signal");
+	}
+	if (check_selectors(in, why) != SQ_OK) {
+		return SQ_EINVAL;
 	}
 	if ((((in->flags & CALIB_IN_NA) != 0U) && !fits(&in->sig, in->na_raw)) ||
 	    (((in->flags & CALIB_IN_NA2) != 0U) && !fits(&in->sig, in->na_raw2))) {
@@ -148,8 +240,33 @@ int calib_input_check(const calib_input_t *in, const char **why)
 	if ((in->period_ms < 1U) || (in->period_ms > 1000U) || (in->stale_cycles < 1U)) {
 		return fail(why, "period_ms 1..1000 and stale_cycles 1..100");
 	}
-	if (in->step_max.mant <= 0) {
-		return fail(why, "step_max must be > 0");
+	if (in->conv_share_ppm > 1000000U) {
+		return fail(why, "torque_share above 1");
+	}
+	return check_range(in, why);
+}
+
+input_geom_t calib_corner_geom(const calib_corner_t *c)
+{
+	return (input_geom_t){ c->pad_radius_um, c->wheel_radius_um, c->piston_area_cmm2,
+			       c->efficiency_ppm, c->axle_factor_ppm };
+}
+
+int calib_input_prepare(const calib_input_t *in, const input_geom_t *geom,
+			input_conv_t *conv, input_raw_bounds_t *bounds, const char **why)
+{
+	const uint32_t share = (in->conv_share_ppm == 0U) ? 1000000U : in->conv_share_ppm;
+
+	if (calib_input_check(in, why) != SQ_OK) {
+		return SQ_EINVAL;
+	}
+	if (input_conv_make_share(in->factor.mant, in->factor.exp, in->offset.mant, in->offset.exp,
+				  (input_unit_t)in->unit, geom, share, conv) != SQ_OK) {
+		return fail(why, "factor: one raw step is 2^31 output units or more, or the corner's geometry cannot convert it");
+	}
+	if (input_conv_raw_bounds(in->factor, in->offset, in->min, in->max, in->step_max,
+				  bounds) != SQ_OK) {
+		return fail(why, "max: no raw value of the signal lies within min .. max");
 	}
 	return SQ_OK;
 }
@@ -158,8 +275,6 @@ static int corner_check(const calib_t *cal, const calib_corner_t *c, const char 
 {
 	const calib_input_t *sp;
 	const calib_input_t *fo;
-	input_geom_t g;
-	input_conv_t conv;
 	input_unit_t fu;
 
 	if ((c->speed_input >= cal->n_inputs) || (c->force_input >= cal->n_inputs)) {
@@ -181,18 +296,42 @@ static int corner_check(const calib_t *cal, const calib_corner_t *c, const char 
 	    (c->friction_faces < 1U)) {
 		return fail(why, "efficiency, axle_factor must be > 0 and friction_faces 1..4");
 	}
+	if ((c->torque_share_ppm < 1U) || (c->torque_share_ppm > 1000000U)) {
+		return fail(why, "torque_share must be in (0, 1]");
+	}
+	if ((c->torque_share_ppm != 1000000U) && (input_unit_qty(fu) != INPUT_QTY_TORQUE)) {
+		return fail(why, "torque_share for a force input that is not a torque (Nm)");
+	}
 	if ((c->mass_q16 < 1) || (c->omega0_q12 < 1) || (c->damping_q30 < 1) ||
 	    ((int64_t)c->mu_inf_q30 + c->delta_mu_q30 < 0) ||
 	    (c->pad_radius_um < 10000U) || (c->wheel_radius_um < 10000U)) {
 		return fail(why, "brake parameters out of range");
 	}
-	g = (input_geom_t){ c->pad_radius_um, c->wheel_radius_um, c->piston_area_cmm2,
-			    c->efficiency_ppm, c->axle_factor_ppm };
-	if ((input_conv_make(sp->factor.mant, sp->factor.exp, sp->offset.mant, sp->offset.exp,
-			     (input_unit_t)sp->unit, &g, &conv) != SQ_OK) ||
-	    (input_conv_make(fo->factor.mant, fo->factor.exp, fo->offset.mant, fo->offset.exp,
-			     fu, &g, &conv) != SQ_OK)) {
-		return fail(why, "conversion cannot be built");
+	return SQ_OK;
+}
+
+/* Corner k sets up exactly as input_rx_setup() will do it: both inputs
+ * prepared with the corner's geometry (and the torque share). */
+static int corner_setup_check(const calib_t *cal, uint32_t k, int8_t *input, const char **why)
+{
+	calib_corner_t c;
+	calib_input_t sp;
+	calib_input_t fo;
+	input_geom_t g;
+	input_conv_t conv;
+	input_raw_bounds_t b;
+
+	if (calib_corner_view(cal, k, &c, &sp, &fo) != SQ_OK) {
+		return fail(why, "corner cannot be viewed");
+	}
+	g = calib_corner_geom(&c);
+	if (calib_input_prepare(&sp, &g, &conv, &b, why) != SQ_OK) {
+		*input = (int8_t)c.speed_input;
+		return SQ_EINVAL;
+	}
+	if (calib_input_prepare(&fo, &g, &conv, &b, why) != SQ_OK) {
+		*input = (int8_t)c.force_input;
+		return SQ_EINVAL;
 	}
 	return SQ_OK;
 }
@@ -266,6 +405,12 @@ int calib_map_check(const calib_t *cal, calib_map_error_t *err)
 		if (cal->n_inputs != 0U) {
 			e.why = "inputs without corners";
 			rc = SQ_EINVAL;
+		} else if (corner_setup_check(cal, 0U, &e.input, &e.why) != SQ_OK) {
+			e.corner = 0;  /* the legacy corner (flat keys) */
+			e.input = -1;
+			rc = SQ_EINVAL;
+		} else {
+			/* the legacy corner sets up */
 		}
 	} else if (cal->n_inputs == 0U) {
 		e.why = "corners without inputs";
@@ -285,6 +430,9 @@ int calib_map_check(const calib_t *cal, calib_map_error_t *err)
 				}
 			}
 			if ((rc == SQ_OK) && (corner_check(cal, &cal->corners[k], &e.why) != SQ_OK)) {
+				rc = SQ_EINVAL;
+			}
+			if ((rc == SQ_OK) && (corner_setup_check(cal, k, &e.input, &e.why) != SQ_OK)) {
 				rc = SQ_EINVAL;
 			}
 			if (rc != SQ_OK) {
@@ -356,6 +504,7 @@ void calib_corner_defaults(const calib_t *cal, uint8_t pos, calib_corner_t *c)
 	c->friction_faces = 2U;
 	c->efficiency_ppm = 1000000U;
 	c->axle_factor_ppm = 1000000U;
+	c->torque_share_ppm = 1000000U;
 	calib_corner_from_flat(cal, c);
 	c->status_id = (uint16_t)(c->status_id + step);
 	c->detail_id = (uint16_t)(c->detail_id + step);
@@ -385,9 +534,9 @@ static void legacy_input(const calib_t *cal, uint16_t id, uint16_t data_id,
 	in->period_ms = cal->input_period_ms;
 	in->stale_cycles = cal->stale_cycles;
 	/* raw bounds x factor: the same raw limits as before */
-	in->max = (calib_dec_t){ (int32_t)max_raw * factor.mant, factor.exp };
+	in->max = (calib_dec_t){ (int64_t)max_raw * factor.mant, factor.exp };
 	in->min = (calib_dec_t){ 0, 0 };
-	in->step_max = (calib_dec_t){ (int32_t)step_raw * factor.mant, factor.exp };
+	in->step_max = (calib_dec_t){ (int64_t)step_raw * factor.mant, factor.exp };
 }
 
 int calib_corner_view(const calib_t *cal, uint32_t k, calib_corner_t *corner,
@@ -410,5 +559,8 @@ int calib_corner_view(const calib_t *cal, uint32_t k, calib_corner_t *corner,
 	*corner = cal->corners[k];
 	*speed = cal->inputs[corner->speed_input];
 	*force = cal->inputs[corner->force_input];
+	speed->conv_share_ppm = 0U;
+	force->conv_share_ppm = (input_unit_qty((input_unit_t)force->unit) == INPUT_QTY_TORQUE) ?
+				corner->torque_share_ppm : 0U;
 	return SQ_OK;
 }

@@ -23,8 +23,21 @@ typedef struct {
 int calib_map_check(const calib_t *cal, calib_map_error_t *err);
 int calib_map_validate(const calib_t *cal);
 
-/* One input alone: SQ_OK or SQ_EINVAL with *why. */
+/* One input alone: SQ_OK or SQ_EINVAL with *why. Includes the plausible
+ * range (min .. max must hold a raw value) and every selector. */
 int calib_input_check(const calib_input_t *in, const char **why);
+
+/*
+ * Everything input_rx_setup() does with an input for a corner's geometry:
+ * calib_input_check(), the conversion (with in->conv_share_ppm) and the
+ * raw bounds. calib_validate() runs it for every corner, so a calibration
+ * that validates always sets up. SQ_OK or SQ_EINVAL with *why.
+ */
+int calib_input_prepare(const calib_input_t *in, const input_geom_t *geom,
+			input_conv_t *conv, input_raw_bounds_t *bounds, const char **why);
+
+/* The conversion geometry of a corner. */
+input_geom_t calib_corner_geom(const calib_corner_t *corner);
 
 /* The smallest DLC that holds every bit the input uses (0: a bad signal). */
 uint8_t calib_input_needed_dlc(const calib_input_t *in);
@@ -34,7 +47,9 @@ uint32_t calib_corner_count(const calib_t *cal);
 
 /*
  * Corner k of a valid calibration, with copies of its speed and force
- * input descriptors (the legacy form synthesizes DiscSpeed and PadForce).
+ * input descriptors (the legacy form synthesizes DiscSpeed and PadForce);
+ * the force copy of a torque input carries the corner's torque_share_ppm
+ * in conv_share_ppm.
  * SQ_OK or SQ_EINVAL (k out of range).
  */
 int calib_corner_view(const calib_t *cal, uint32_t k, calib_corner_t *corner,

@@ -7,75 +7,465 @@
 #include "hal.h"
 #include "sq_status.h"
 
-#define LIMIT ((int64_t)1 << 30)     /* numerators and denominators stay below */
-#define ADD_LIMIT ((int64_t)1 << 61)
+/* Set-up arithmetic: unsigned integers of BIG_LIMBS 32-bit words. The
+ * largest operand is an offset term: 17 digits x 10^60 (two decimals'
+ * exponents apart) or mant x 10^30 x the unit's numerator (< 2^112, with
+ * the share) x a 62-bit denominator: below 2^340, within 384 bits. */
+#define BIG_LIMBS 12U
+#define BIG_BITS (32U * BIG_LIMBS)
+#define BITS_62 62U
+#define ADD_BITS 96U                 /* |add| clamped to 2^96 (see make)     */
+#define FAST_MUL_LIMIT ((int64_t)1 << 30)
+#define FAST_ADD_LIMIT ((int64_t)1 << 61)
+#define RAW_LIMIT ((int64_t)1 << 40) /* raw bounds clamp: beyond 32-bit raws */
+#define SCALE_MAX_BITS 31            /* one raw step must be < 2^31 outputs  */
+#define PPM 1000000U
 
-/* A fraction n / d, d > 0, both kept below LIMIT in magnitude. */
 typedef struct {
-	int64_t n;
-	int64_t d;
-} frac_t;
+	uint32_t w[BIG_LIMBS]; /* least significant word first */
+} big_t;
 
-static int64_t abs64(int64_t v)
+/* a sign and a magnitude */
+typedef struct {
+	big_t m;
+	bool neg;
+} sbig_t;
+
+static void big_set(big_t *a, uint64_t v)
 {
-	return (v < 0) ? -v : v;
+	uint32_t i;
+
+	for (i = 0U; i < BIG_LIMBS; i++) {
+		a->w[i] = 0U;
+	}
+	a->w[0] = (uint32_t)v;
+	a->w[1] = (uint32_t)(v >> 32);
 }
 
-static int64_t gcd64(int64_t a, int64_t b)
+static bool big_is_zero(const big_t *a)
 {
+	uint32_t i;
+	uint32_t any = 0U;
+
+	for (i = 0U; i < BIG_LIMBS; i++) {
+		any |= a->w[i];
+	}
+	return any == 0U;
+}
+
+static uint32_t big_bitlen(const big_t *a)
+{
+	uint32_t i;
+	uint32_t n = 0U;
+
+	for (i = BIG_LIMBS; (i > 0U) && (n == 0U); i--) {
+		uint32_t v = a->w[i - 1U];
+		uint32_t b = 0U;
+
+		while ((v != 0U) && (b < 32U)) {
+			v >>= 1;
+			b++;
+		}
+		if (b != 0U) {
+			n = (32U * (i - 1U)) + b;
+		}
+	}
+	return n;
+}
+
+static uint64_t big_low64(const big_t *a)
+{
+	return ((uint64_t)a->w[1] << 32) | a->w[0];
+}
+
+static int big_cmp(const big_t *a, const big_t *b)
+{
+	uint32_t i;
+
+	for (i = BIG_LIMBS; i > 0U; i--) {
+		if (a->w[i - 1U] != b->w[i - 1U]) {
+			return (a->w[i - 1U] > b->w[i - 1U]) ? 1 : -1;
+		}
+	}
+	return 0;
+}
+
+/* a *= m; the operands stay within the budget above (a carry out of the
+ * top word would be a sizing mistake: programming error) */
+static void big_mul_u32(big_t *a, uint32_t m)
+{
+	uint64_t carry = 0U;
+	uint32_t i;
+
+	for (i = 0U; i < BIG_LIMBS; i++) {
+		const uint64_t t = ((uint64_t)a->w[i] * m) + carry;
+
+		a->w[i] = (uint32_t)t;
+		carry = t >> 32;
+	}
+	HAL_REQUIRE(carry == 0U);
+}
+
+static void big_add(big_t *a, const big_t *b)
+{
+	uint64_t carry = 0U;
+	uint32_t i;
+
+	for (i = 0U; i < BIG_LIMBS; i++) {
+		const uint64_t t = (uint64_t)a->w[i] + b->w[i] + carry;
+
+		a->w[i] = (uint32_t)t;
+		carry = t >> 32;
+	}
+	HAL_REQUIRE(carry == 0U);
+}
+
+/* a -= b, a >= b */
+static void big_sub(big_t *a, const big_t *b)
+{
+	uint32_t borrow = 0U;
+	uint32_t i;
+
+	for (i = 0U; i < BIG_LIMBS; i++) {
+		const uint64_t t = (uint64_t)a->w[i] - b->w[i] - borrow;
+
+		a->w[i] = (uint32_t)t;
+		borrow = (uint32_t)((t >> 32) & 1U);
+	}
+}
+
+static void big_mul_u64(big_t *a, uint64_t v)
+{
+	big_t hi = *a;
+	uint32_t i;
+
+	big_mul_u32(a, (uint32_t)v);
+	big_mul_u32(&hi, (uint32_t)(v >> 32));
+	HAL_REQUIRE(hi.w[BIG_LIMBS - 1U] == 0U);
+	for (i = BIG_LIMBS - 1U; i > 0U; i--) {
+		hi.w[i] = hi.w[i - 1U];
+	}
+	hi.w[0] = 0U;
+	big_add(a, &hi);
+}
+
+/* a *= b (b's value below 2^64 x 2^64 is enough: product of two bigs is
+ * only taken with a 62-bit factor) */
+static void big_mul_big64(big_t *a, const big_t *b)
+{
+	HAL_REQUIRE(big_bitlen(b) <= 64U);
+	big_mul_u64(a, big_low64(b));
+}
+
+static void big_mul_pow10(big_t *a, uint32_t n)
+{
+	uint32_t left = n;
 	uint32_t guard;
 
-	a = abs64(a);
-	b = abs64(b);
-	/* Euclid on values below 2^62 needs fewer than 90 steps */
-	for (guard = 0U; (b != 0) && (guard < 128U); guard++) {
-		const int64_t t = a % b;
+	/* in steps of 10^9, the largest power of ten below 2^32 */
+	for (guard = 0U; (left > 0U) && (guard < 64U); guard++) {
+		uint32_t p = 1U;
+		uint32_t k;
+		const uint32_t step = (left > 9U) ? 9U : left;
 
-		a = b;
-		b = t;
+		for (k = 0U; k < step; k++) {
+			p *= 10U;
+		}
+		big_mul_u32(a, p);
+		left -= step;
 	}
-	return (a == 0) ? 1 : a;
 }
 
-/* Reduce, then halve both until they fit (only for values no DBC uses). */
-static frac_t frac_norm(int64_t n, int64_t d)
+static void big_shl1(big_t *a, uint32_t in_bit)
 {
-	const int64_t g = gcd64(n, d);
+	uint32_t i;
+	uint32_t carry = in_bit;
+
+	for (i = 0U; i < BIG_LIMBS; i++) {
+		const uint32_t out = a->w[i] >> 31;
+
+		a->w[i] = (a->w[i] << 1) | carry;
+		carry = out;
+	}
+	HAL_REQUIRE(carry == 0U);
+}
+
+static void big_shr1(big_t *a)
+{
+	uint32_t i;
+
+	for (i = 0U; i < BIG_LIMBS; i++) {
+		const uint32_t next = (i + 1U < BIG_LIMBS) ? a->w[i + 1U] : 0U;
+
+		a->w[i] = (a->w[i] >> 1) | (next << 31);
+	}
+}
+
+static void big_shl(big_t *a, uint32_t n)
+{
+	const uint32_t words = n / 32U;
+	const uint32_t bits = n % 32U;
+	uint32_t i;
+
+	HAL_REQUIRE(words < BIG_LIMBS);
+	for (i = BIG_LIMBS; i > words; i--) {
+		a->w[i - 1U] = a->w[i - 1U - words];
+	}
+	for (i = 0U; i < words; i++) {
+		a->w[i] = 0U;
+	}
+	for (i = 0U; i < bits; i++) {
+		big_shl1(a, 0U);
+	}
+}
+
+static uint32_t big_bit(const big_t *a, uint32_t i)
+{
+	return (a->w[i / 32U] >> (i % 32U)) & 1U;
+}
+
+/* q = n / d, r = n % d (d != 0); bit by bit, set-up only */
+static void big_divmod(const big_t *n, const big_t *d, big_t *q, big_t *r)
+{
+	uint32_t i;
+
+	HAL_REQUIRE(!big_is_zero(d));
+	if ((big_bitlen(n) <= 64U) && (big_bitlen(d) <= 64U)) {
+		/* the common case, in one native division */
+		const uint64_t a = big_low64(n);
+		const uint64_t b = big_low64(d);
+
+		big_set(q, a / b);
+		big_set(r, a % b);
+		return;
+	}
+	big_set(q, 0U);
+	big_set(r, 0U);
+	if (big_cmp(n, d) < 0) {
+		*r = *n;
+		return;
+	}
+	for (i = big_bitlen(n); i > 0U; i--) {
+		big_shl1(r, big_bit(n, i - 1U));
+		if (big_cmp(r, d) >= 0) {
+			big_sub(r, d);
+			q->w[(i - 1U) / 32U] |= (uint32_t)1U << ((i - 1U) % 32U);
+		}
+	}
+}
+
+/* n / d rounded to nearest, halves up */
+static void big_div_round(const big_t *n, const big_t *d, big_t *q)
+{
+	big_t r;
+	big_t twice;
+
+	big_divmod(n, d, q, &r);
+	twice = r;
+	big_shl1(&twice, 0U);
+	if (big_cmp(&twice, d) >= 0) {
+		big_t one;
+
+		big_set(&one, 1U);
+		big_add(q, &one);
+	}
+}
+
+/* binary gcd of two non-zero values (each step drops a bit of one) */
+static void big_gcd(const big_t *x, const big_t *y, big_t *g)
+{
+	big_t a = *x;
+	big_t b = *y;
+	uint32_t k = 0U;
 	uint32_t guard;
 
-	n /= g;
-	d /= g;
-	for (guard = 0U; ((abs64(n) >= LIMIT) || (d >= LIMIT)) && (guard < 64U); guard++) {
-		n = (n >= 0) ? ((n + 1) / 2) : ((n - 1) / 2);
-		d = (d + 1) / 2;
+	HAL_REQUIRE(!big_is_zero(&a) && !big_is_zero(&b));
+	if ((big_bitlen(&a) <= 64U) && (big_bitlen(&b) <= 64U)) {
+		/* Euclid in 64 bits: fewer than 93 steps below 2^64 */
+		uint64_t x64 = big_low64(&a);
+		uint64_t y64 = big_low64(&b);
+
+		for (guard = 0U; (y64 != 0U) && (guard < 128U); guard++) {
+			const uint64_t t = x64 % y64;
+
+			x64 = y64;
+			y64 = t;
+		}
+		big_set(g, x64);
+		return;
 	}
-	return (frac_t){ n, d };
-}
-
-static frac_t frac_mul(frac_t a, frac_t b)
-{
-	/* cross-reduce first so that exact products stay exact */
-	const int64_t g1 = gcd64(a.n, b.d);
-	const int64_t g2 = gcd64(b.n, a.d);
-
-	return frac_norm((a.n / g1) * (b.n / g2), (a.d / g2) * (b.d / g1));
-}
-
-static frac_t frac_pow10(int8_t e)
-{
-	int64_t p = 1;
-	int32_t i;
-	const int32_t m = (e < 0) ? -(int32_t)e : (int32_t)e;
-
-	for (i = 0; i < m; i++) {
-		p *= 10;
+	while ((((a.w[0] | b.w[0]) & 1U) == 0U) && (k < BIG_BITS)) {
+		big_shr1(&a);
+		big_shr1(&b);
+		k++;
 	}
-	return (e < 0) ? (frac_t){ 1, p } : (frac_t){ p, 1 };
+	for (guard = 0U; ((a.w[0] & 1U) == 0U) && (guard < BIG_BITS); guard++) {
+		big_shr1(&a);
+	}
+	for (guard = 0U; !big_is_zero(&b) && (guard < (4U * BIG_BITS)); guard++) {
+		if ((b.w[0] & 1U) == 0U) {
+			big_shr1(&b);
+		} else {
+			if (big_cmp(&a, &b) > 0) {
+				const big_t t = a;
+
+				a = b;
+				b = t;
+			}
+			big_sub(&b, &a);
+		}
+	}
+	big_shl(&a, k);
+	*g = a;
 }
 
-static frac_t frac_of(int64_t n, int64_t d)
+/* n / d reduced (both non-zero) */
+static void big_reduce(big_t *n, big_t *d)
 {
-	return frac_norm(n, d);
+	big_t g;
+	big_t q;
+	big_t r;
+
+	big_gcd(n, d, &g);
+	big_divmod(n, &g, &q, &r);
+	*n = q;
+	big_divmod(d, &g, &q, &r);
+	*d = q;
+}
+
+static uint64_t mag64(int64_t v)
+{
+	return (v < 0) ? ((uint64_t)(-(v + 1)) + 1U) : (uint64_t)v;
+}
+
+/* ---- decimals ------------------------------------------------------------- */
+
+bool input_dec_valid(input_dec_t d)
+{
+	return (d.mant >= -INPUT_DEC_MANT_MAX) && (d.mant <= INPUT_DEC_MANT_MAX) &&
+	       (d.exp >= INPUT_DEC_EXP_MIN) && (d.exp <= INPUT_DEC_EXP_MAX);
+}
+
+/* d x 10^-e0 as an integer (d.exp >= e0) */
+static sbig_t dec_scaled(input_dec_t d, int32_t e0)
+{
+	sbig_t s;
+
+	big_set(&s.m, mag64(d.mant));
+	big_mul_pow10(&s.m, (uint32_t)((int32_t)d.exp - e0));
+	s.neg = (d.mant < 0);
+	return s;
+}
+
+static int sbig_cmp(const sbig_t *a, const sbig_t *b)
+{
+	const bool az = big_is_zero(&a->m);
+	const bool bz = big_is_zero(&b->m);
+	const bool an = a->neg && !az;
+	const bool bn = b->neg && !bz;
+	int c;
+
+	if (an != bn) {
+		return an ? -1 : 1;
+	}
+	c = big_cmp(&a->m, &b->m);
+	return an ? -c : c;
+}
+
+/* a - b */
+static sbig_t sbig_sub(const sbig_t *a, const sbig_t *b)
+{
+	sbig_t r;
+
+	if (a->neg != b->neg) {
+		r.m = a->m;
+		big_add(&r.m, &b->m);
+		r.neg = a->neg;
+	} else if (big_cmp(&a->m, &b->m) >= 0) {
+		r.m = a->m;
+		big_sub(&r.m, &b->m);
+		r.neg = a->neg;
+	} else {
+		r.m = b->m;
+		big_sub(&r.m, &a->m);
+		r.neg = !a->neg;
+	}
+	return r;
+}
+
+/* floor(n / d) (ceil when up), clamped to +-RAW_LIMIT */
+static int64_t sbig_div_clamped(const sbig_t *n, const sbig_t *d, bool up)
+{
+	big_t q;
+	big_t r;
+	bool neg;
+	int64_t v;
+
+	big_divmod(&n->m, &d->m, &q, &r);
+	neg = (n->neg != d->neg) && !big_is_zero(&n->m);
+	/* magnitude of the result: q, or q + 1 when the remainder rounds away */
+	if (!big_is_zero(&r) && (neg != up)) {
+		big_t one;
+
+		big_set(&one, 1U);
+		big_add(&q, &one);
+	}
+	v = (big_bitlen(&q) > 40U) ? RAW_LIMIT : (int64_t)big_low64(&q);
+	v = (v > RAW_LIMIT) ? RAW_LIMIT : v;
+	return neg ? -v : v;
+}
+
+static int32_t exp_min(int32_t a, int32_t b)
+{
+	return (a < b) ? a : b;
+}
+
+int input_dec_cmp(input_dec_t a, input_dec_t b)
+{
+	const int32_t e0 = exp_min(a.exp, b.exp);
+	sbig_t x;
+	sbig_t y;
+
+	HAL_REQUIRE(input_dec_valid(a) && input_dec_valid(b));
+	x = dec_scaled(a, e0);
+	y = dec_scaled(b, e0);
+	return sbig_cmp(&x, &y);
+}
+
+int input_conv_raw_bounds(input_dec_t factor, input_dec_t offset, input_dec_t min,
+			  input_dec_t max, input_dec_t step_max, input_raw_bounds_t *b)
+{
+	int32_t e0;
+	sbig_t f;
+	sbig_t o;
+	sbig_t lo;
+	sbig_t hi;
+	sbig_t st;
+	sbig_t n_lo;
+	sbig_t n_hi;
+
+	HAL_REQUIRE(b != NULL);
+	if (!input_dec_valid(factor) || !input_dec_valid(offset) || !input_dec_valid(min) ||
+	    !input_dec_valid(max) || !input_dec_valid(step_max) || (factor.mant == 0) ||
+	    (step_max.mant <= 0)) {
+		return SQ_EINVAL;
+	}
+	e0 = exp_min(exp_min(exp_min(factor.exp, offset.exp), exp_min(min.exp, max.exp)),
+		     step_max.exp);
+	f = dec_scaled(factor, e0);
+	o = dec_scaled(offset, e0);
+	lo = dec_scaled(min, e0);
+	hi = dec_scaled(max, e0);
+	st = dec_scaled(step_max, e0);
+	/* min <= raw f + o <= max: raw in [(min - o) / f, (max - o) / f],
+	 * the ends swapped for a negative factor */
+	n_lo = sbig_sub(f.neg ? &hi : &lo, &o);
+	n_hi = sbig_sub(f.neg ? &lo : &hi, &o);
+	b->raw_min = sbig_div_clamped(&n_lo, &f, true);
+	b->raw_max = sbig_div_clamped(&n_hi, &f, false);
+	f.neg = false;
+	b->raw_step = sbig_div_clamped(&st, &f, false);
+	return (b->raw_min <= b->raw_max) ? SQ_OK : SQ_EINVAL;
 }
 
 /* ---- units ---------------------------------------------------------------- */
@@ -145,72 +535,148 @@ bool input_unit_is_pressure(input_unit_t unit)
 	return (unit >= INPUT_UNIT_BAR) && (unit <= INPUT_UNIT_PSI);
 }
 
-/* physical unit -> output unit (um/s, mN, mNm) */
-static int unit_scale(input_unit_t unit, const input_geom_t *g, frac_t *k)
+/* physical unit -> output unit (um/s, mN, mNm) as an exact fraction
+ * kn / kd, the share included (below 2^112 / 2^67) */
+static void unit_scale(input_unit_t unit, const input_geom_t *g, uint32_t share_ppm,
+		       big_t *kn, big_t *kd)
 {
-	const frac_t pad_over_wheel = frac_of(g->pad_radius_um, g->wheel_radius_um);
-	/* pi ~ 103993 / 33102 (error 2e-10): rpm -> rad/s = pi / 30 */
-	const frac_t rpm_to_radps = frac_of(103993, 33102LL * 30);
-	/* Pa -> mN per 0.01 mm^2 x 1e-6 eta x 1e-6 k:
-	 * N = p[Pa] A[mm^2] 1e-6 eta k; mN = 1e3 N */
-	frac_t press = frac_of(g->piston_area_cmm2, 100LL * 1000);
-
-	press = frac_mul(press, frac_of(g->efficiency_ppm, 1000000));
-	press = frac_mul(press, frac_of(g->axle_factor_ppm, 1000000));
+	big_set(kn, 1U);
+	big_set(kd, 1U);
 	switch (unit) {
 	case INPUT_UNIT_KMH:
-		*k = frac_mul(frac_of(10000000, 36), pad_over_wheel);
+		big_mul_u32(kn, 10000000U);   /* km/h -> um/s: 1e9 / 3600 */
+		big_mul_u32(kd, 36U);
 		break;
 	case INPUT_UNIT_MPS:
-		*k = frac_mul(frac_of(1000000, 1), pad_over_wheel);
+		big_mul_u32(kn, 1000000U);
 		break;
 	case INPUT_UNIT_MPH:
-		*k = frac_mul(frac_of(447040, 1), pad_over_wheel);
-		break;
-	case INPUT_UNIT_RADPS:
-		*k = frac_of(g->pad_radius_um, 1);
+		big_mul_u32(kn, 447040U);     /* 0.44704 m/s exactly */
 		break;
 	case INPUT_UNIT_RPM:
-		*k = frac_mul(rpm_to_radps, frac_of(g->pad_radius_um, 1));
-		break;
-	case INPUT_UNIT_N:
-	case INPUT_UNIT_NM:
-		*k = frac_of(1000, 1);
+		/* pi ~ 103993 / 33102 (error 2e-10): rpm -> rad/s = pi / 30 */
+		big_mul_u32(kn, 103993U);
+		big_mul_u32(kd, 33102U * 30U);
 		break;
 	case INPUT_UNIT_KN:
-		*k = frac_of(1000000, 1);
+		big_mul_u32(kn, 1000000U);
 		break;
 	case INPUT_UNIT_BAR:
-		*k = frac_mul(frac_of(100000, 1), press);
+		big_mul_u32(kn, 100000U);     /* Pa */
 		break;
 	case INPUT_UNIT_KPA:
-		*k = frac_mul(frac_of(1000, 1), press);
+		big_mul_u32(kn, 1000U);
 		break;
 	case INPUT_UNIT_MPA:
-		*k = frac_mul(frac_of(1000000, 1), press);
+		big_mul_u32(kn, 1000000U);
 		break;
 	case INPUT_UNIT_PSI:
-		*k = frac_mul(frac_of(6894757, 1000), press);
+		big_mul_u32(kn, 6894757U);
+		big_mul_u32(kd, 1000U);
 		break;
 	default:
-		return SQ_EINVAL;
+		/* N, Nm -> mN, mNm; rad/s needs only the pad radius below */
+		if (unit != INPUT_UNIT_RADPS) {
+			big_mul_u32(kn, 1000U);
+		}
+		break;
 	}
-	return SQ_OK;
+	if (input_unit_qty(unit) == INPUT_QTY_SPEED) {
+		/* linear speeds at the wheel's rim: x r_p / r_w; angular: x r_p */
+		big_mul_u32(kn, g->pad_radius_um);
+		if ((unit == INPUT_UNIT_KMH) || (unit == INPUT_UNIT_MPS) || (unit == INPUT_UNIT_MPH)) {
+			big_mul_u32(kd, g->wheel_radius_um);
+		}
+	}
+	if (input_unit_is_pressure(unit)) {
+		/* Pa -> mN: N = p[Pa] A[mm^2] 1e-6 eta k, A in 0.01 mm^2, eta and k
+		 * in 1e-6; mN = 1e3 N */
+		big_mul_u32(kn, g->piston_area_cmm2);
+		big_mul_u32(kn, g->efficiency_ppm);
+		big_mul_u32(kn, g->axle_factor_ppm);
+		big_mul_u32(kd, 100000U);
+		big_mul_u32(kd, PPM);
+		big_mul_u32(kd, PPM);
+	}
+	if (share_ppm != PPM) {
+		big_mul_u32(kn, share_ppm);
+		big_mul_u32(kd, PPM);
+	}
 }
 
-int input_conv_make(int32_t f_mant, int8_t f_exp, int32_t o_mant, int8_t o_exp,
+/* |d| x kn / kd, reduced (n may be 0: then d = 1) */
+static void dec_times(input_dec_t d, const big_t *kn, const big_t *kd, big_t *n, big_t *den)
+{
+	big_set(n, mag64(d.mant));
+	*den = *kd;
+	if (big_is_zero(n)) {
+		big_set(den, 1U);
+		return;
+	}
+	big_mul_pow10((d.exp >= 0) ? n : den, (uint32_t)((d.exp >= 0) ? d.exp : -(int32_t)d.exp));
+	/* kn < 2^112 is multiplied in 32-bit words */
+	{
+		big_t t;
+		big_t acc;
+		uint32_t i;
+
+		big_set(&acc, 0U);
+		for (i = BIG_LIMBS; i > 0U; i--) {
+			big_shl(&acc, 32U);
+			t = *n;
+			big_mul_u32(&t, kn->w[i - 1U]);
+			big_add(&acc, &t);
+		}
+		*n = acc;
+	}
+	big_reduce(n, den);
+}
+
+/* The 128-bit two's complement of a signed big (|v| <= 2^96 after the
+ * clamp), as high and low words. */
+static void to_words(const big_t *mag, bool neg, int64_t *hi, uint64_t *lo)
+{
+	uint64_t h = (uint64_t)mag->w[2] | ((uint64_t)mag->w[3] << 32);
+	uint64_t l = big_low64(mag);
+
+	if (neg && ((h | l) != 0U)) {
+		l = ~l + 1U;
+		h = ~h + ((l == 0U) ? 1U : 0U);
+	}
+	/* two's complement bits -> int64 without implementation-defined
+	 * conversion */
+	*hi = (h <= (uint64_t)INT64_MAX) ? (int64_t)h : (-(int64_t)(~h) - 1);
+	*lo = l;
+}
+
+int input_conv_make(int64_t f_mant, int8_t f_exp, int64_t o_mant, int8_t o_exp,
 		    input_unit_t unit, const input_geom_t *geom, input_conv_t *conv)
 {
-	frac_t k;
-	frac_t scale;
-	frac_t offs;
+	return input_conv_make_share(f_mant, f_exp, o_mant, o_exp, unit, geom, PPM, conv);
+}
+
+int input_conv_make_share(int64_t f_mant, int8_t f_exp, int64_t o_mant, int8_t o_exp,
+			  input_unit_t unit, const input_geom_t *geom, uint32_t share_ppm,
+			  input_conv_t *conv)
+{
+	const input_dec_t f = { f_mant, f_exp };
+	const input_dec_t o = { o_mant, o_exp };
+	big_t kn;
+	big_t kd;
+	big_t sn;
+	big_t sd;
+	big_t on;
+	big_t od;
+	big_t mul;
+	big_t div;
+	big_t add;
 
 	HAL_REQUIRE((geom != NULL) && (conv != NULL));
 	/* the values are calibration data: calib_map checks them with this */
-	if ((f_mant == 0) ||
-	    (f_exp < -12) || (f_exp > 12) || (o_exp < -12) || (o_exp > 12) ||
+	if ((f_mant == 0) || !input_dec_valid(f) || !input_dec_valid(o) ||
 	    (geom->pad_radius_um == 0U) || (geom->wheel_radius_um == 0U) ||
-	    ((uint32_t)unit >= (uint32_t)INPUT_UNIT_COUNT)) {
+	    ((uint32_t)unit >= (uint32_t)INPUT_UNIT_COUNT) || (share_ppm < 1U) ||
+	    (share_ppm > PPM)) {
 		return SQ_EINVAL;
 	}
 	if (input_unit_is_pressure(unit) &&
@@ -218,33 +684,99 @@ int input_conv_make(int32_t f_mant, int8_t f_exp, int32_t o_mant, int8_t o_exp,
 	     (geom->axle_factor_ppm == 0U))) {
 		return SQ_EINVAL;
 	}
-	if (unit_scale(unit, geom, &k) != SQ_OK) {
-		return SQ_EINVAL;
-	}
-	scale = frac_mul(frac_mul(frac_of(f_mant, 1), frac_pow10(f_exp)), k);
-	offs = frac_mul(frac_mul(frac_of(o_mant, 1), frac_pow10(o_exp)), k);
-	conv->mul = scale.n;
-	conv->div = scale.d;
-	/* add = offset x div, rounded: offs.n x scale.d / offs.d */
-	{
-		const int64_t g = gcd64(offs.d, scale.d);
-		const int64_t num = offs.n * (scale.d / g); /* < 2^60 */
-		const int64_t den = offs.d / g;
-		int64_t add = (num >= 0) ? ((num + den / 2) / den) : -((-num + den / 2) / den);
+	unit_scale(unit, geom, share_ppm, &kn, &kd);
+	dec_times(f, &kn, &kd, &sn, &sd);
+	dec_times(o, &kn, &kd, &on, &od);
+	/* one raw step must stay below the int32 output range: beyond that
+	 * every reading but one saturates, a calibration mistake */
+	if (big_bitlen(&sn) > (big_bitlen(&sd) + (uint32_t)SCALE_MAX_BITS - 1U)) {
+		big_t q;
+		big_t r;
+		big_t lim;
 
-		if (add > ADD_LIMIT) {
-			add = ADD_LIMIT;
+		big_divmod(&sn, &sd, &q, &r);
+		big_set(&lim, (uint64_t)1U << (uint32_t)SCALE_MAX_BITS);
+		if (big_cmp(&q, &lim) >= 0) {
+			return SQ_EINVAL;
 		}
-		if (add < -ADD_LIMIT) {
-			add = -ADD_LIMIT;
-		}
-		conv->add = add;
 	}
-	{
-		const input_qty_t qty = input_unit_qty(unit);
+	if ((big_bitlen(&sn) <= BITS_62) && (big_bitlen(&sd) <= BITS_62)) {
+		/* exact scale; the offset over a common denominator when that
+		 * fits too (then every output is the exact value rounded) */
+		big_t g;
+		big_t m;
+		big_t r;
 
-		conv->qty = (uint8_t)qty;
+		mul = sn;
+		div = sd;
+		if (big_is_zero(&on)) {
+			big_set(&add, 0U);
+		} else {
+			big_gcd(&sd, &od, &g);
+			big_divmod(&od, &g, &m, &r);   /* m = od / g */
+			{
+				big_t l = sd;
+				big_t sm = sn;
+				const bool small = big_bitlen(&m) <= BITS_62;
+
+				if (small) {
+					big_mul_big64(&l, &m);  /* sd m, sn m < 2^124 */
+					big_mul_big64(&sm, &m);
+				}
+				if (small && (big_bitlen(&l) <= BITS_62) &&
+				    (big_bitlen(&sm) <= BITS_62)) {
+					big_t k;
+
+					mul = sm;
+					div = l;
+					big_divmod(&sd, &g, &k, &r); /* add = on x (sd / g) */
+					add = on;
+					big_mul_big64(&add, &k);
+				} else {
+					add = on;
+					big_mul_big64(&add, &sd);
+					{
+						const big_t n = add;
+
+						big_div_round(&n, &od, &add);
+					}
+				}
+			}
+		}
+	} else {
+		/* approximation: div = 2^k, mul = round(scale 2^k) with
+		 * k = min(60 - t, 62) for scale in [2^(t-1), 2^(t+1)):
+		 * mul in [2^59, 2^61] (relative error <= 2^-60) or k = 62;
+		 * t <= 31 by the check above, so k >= 29 */
+		const int32_t t = (int32_t)big_bitlen(&sn) - (int32_t)big_bitlen(&sd);
+		const int32_t k0 = 60 - t;
+		const uint32_t k = (uint32_t)((k0 > 62) ? 62 : k0);
+		big_t n = sn;
+
+		big_shl(&n, k);
+		big_div_round(&n, &sd, &mul);
+		big_set(&div, (uint64_t)1U << k);
+		n = on;
+		big_shl(&n, k);
+		big_div_round(&n, &od, &add);
 	}
+	if (big_bitlen(&add) > ADD_BITS) {
+		/* |value mul| < 2^94: beyond 2^96 the output saturates either way */
+		big_set(&add, 0U);
+		add.w[ADD_BITS / 32U] = 1U;
+	}
+	conv->mul = (int64_t)big_low64(&mul);
+	conv->mul = (f_mant < 0) ? -conv->mul : conv->mul;
+	conv->div = (int64_t)big_low64(&div);
+	to_words(&add, o_mant < 0, &conv->add_hi, &conv->add_lo);
+	conv->wide = (uint8_t)(((conv->mul >= FAST_MUL_LIMIT) || (conv->mul <= -FAST_MUL_LIMIT) ||
+				(big_bitlen(&add) > 61U)) ? 1U : 0U);
+	conv->add = 0;
+	if (conv->wide == 0U) {
+		conv->add = (int64_t)big_low64(&add);
+		conv->add = (o_mant < 0) ? -conv->add : conv->add;
+	}
+	conv->qty = (uint8_t)input_unit_qty(unit);
 	return SQ_OK;
 }
 
@@ -256,19 +788,156 @@ static int32_t sat32(int64_t v)
 	return (v < INT32_MIN) ? INT32_MIN : (int32_t)v;
 }
 
+/* ---- 128-bit helpers (per frame, wide conversions only) ---------------------- */
+
+typedef struct {
+	uint64_t hi;
+	uint64_t lo;
+} u128_t;
+
+static u128_t mul64x64(uint64_t a, uint64_t b)
+{
+	const uint64_t a0 = a & 0xFFFFFFFFU;
+	const uint64_t a1 = a >> 32;
+	const uint64_t b0 = b & 0xFFFFFFFFU;
+	const uint64_t b1 = b >> 32;
+	const uint64_t p00 = a0 * b0;
+	const uint64_t p01 = a0 * b1;
+	const uint64_t p10 = a1 * b0;
+	const uint64_t p11 = a1 * b1;
+	const uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFU) + (p10 & 0xFFFFFFFFU);
+	u128_t r;
+
+	r.lo = (mid << 32) | (p00 & 0xFFFFFFFFU);
+	r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+	return r;
+}
+
+static u128_t add128(u128_t a, u128_t b)
+{
+	u128_t r;
+
+	r.lo = a.lo + b.lo;
+	r.hi = a.hi + b.hi + ((r.lo < a.lo) ? 1U : 0U);
+	return r;
+}
+
+static u128_t neg128(u128_t a)
+{
+	u128_t r;
+
+	r.lo = ~a.lo + 1U;
+	r.hi = ~a.hi + ((r.lo == 0U) ? 1U : 0U);
+	return r;
+}
+
+static uint32_t nlz64(uint64_t v)
+{
+	uint32_t n = 0U;
+
+	while ((n < 64U) && ((v & ((uint64_t)1U << 63)) == 0U)) {
+		v <<= 1;
+		n++;
+	}
+	return n;
+}
+
+/*
+ * (hi 2^64 + lo) / d for hi < d (the quotient fits 64 bits): Knuth's
+ * algorithm D with 32-bit digits (Hacker's Delight, divlu), each digit
+ * estimate corrected at most twice.
+ */
+static uint64_t div128by64(uint64_t hi, uint64_t lo, uint64_t d)
+{
+	const uint64_t b = (uint64_t)1U << 32;
+	const uint32_t s = nlz64(d);
+	uint64_t vn1;
+	uint64_t vn0;
+	uint64_t un32;
+	uint64_t un10;
+	uint64_t un1;
+	uint64_t un0;
+	uint64_t un21;
+	uint64_t q1;
+	uint64_t q0;
+	uint64_t rhat;
+	uint32_t guard;
+
+	HAL_REQUIRE((d != 0U) && (hi < d));
+	d <<= s;
+	vn1 = d >> 32;
+	vn0 = d & 0xFFFFFFFFU;
+	un32 = (s == 0U) ? hi : ((hi << s) | (lo >> (64U - s)));
+	un10 = lo << s;
+	un1 = un10 >> 32;
+	un0 = un10 & 0xFFFFFFFFU;
+	q1 = un32 / vn1;
+	rhat = un32 - (q1 * vn1);
+	for (guard = 0U; (guard < 2U) && ((q1 >= b) || ((q1 * vn0) > ((b * rhat) + un1))); guard++) {
+		q1--;
+		rhat += vn1;
+		if (rhat >= b) {
+			break;
+		}
+	}
+	un21 = (un32 * b) + un1 - (q1 * d);
+	q0 = un21 / vn1;
+	rhat = un21 - (q0 * vn1);
+	for (guard = 0U; (guard < 2U) && ((q0 >= b) || ((q0 * vn0) > ((b * rhat) + un0))); guard++) {
+		q0--;
+		rhat += vn1;
+		if (rhat >= b) {
+			break;
+		}
+	}
+	return (q1 * b) + q0;
+}
+
+static int32_t apply_wide(const input_conv_t *conv, int64_t value)
+{
+	const bool neg_p = (value < 0) != (conv->mul < 0);
+	const u128_t add = { (uint64_t)conv->add_hi, conv->add_lo };
+	const uint64_t div = (uint64_t)conv->div;
+	u128_t x = mul64x64(mag64(value), mag64(conv->mul)); /* < 2^94 */
+	bool neg;
+	uint64_t q;
+
+	if (neg_p) {
+		x = neg128(x);
+	}
+	x = add128(x, add);                 /* |x| < 2^97 */
+	neg = (x.hi >> 63) != 0U;
+	if (neg) {
+		x = neg128(x);
+	}
+	/* halves away from zero: floor((|x| + div / 2) / div) */
+	x = add128(x, (u128_t){ 0U, div / 2U });
+	if (x.hi >= div) {
+		return neg ? INT32_MIN : INT32_MAX;  /* quotient >= 2^64 */
+	}
+	q = div128by64(x.hi, x.lo, div);
+	if (q > (uint64_t)INT32_MAX) {
+		return neg ? INT32_MIN : INT32_MAX;
+	}
+	return neg ? -(int32_t)q : (int32_t)q;
+}
+
 int32_t input_conv_apply(const input_conv_t *conv, int64_t value)
 {
 	int64_t x;
 
 	/* only a conversion input_conv_make() built */
 	HAL_REQUIRE((conv != NULL) && (conv->div > 0));
-	/* |value| < 2^32, |mul| < 2^30, |add| <= 2^61: no overflow */
 	if (value > (int64_t)UINT32_MAX) {
 		value = (int64_t)UINT32_MAX;
 	}
 	if (value < -(int64_t)UINT32_MAX) {
 		value = -(int64_t)UINT32_MAX;
 	}
+	if (conv->wide != 0U) {
+		return apply_wide(conv, value);
+	}
+	/* |value| < 2^32, |mul| < 2^30, |add| <= 2^61: no overflow */
 	x = value * conv->mul + conv->add;
 	x = (x >= 0) ? ((x + conv->div / 2) / conv->div) :
 		-((-x + conv->div / 2) / conv->div);

@@ -8,8 +8,6 @@
 #include "hal.h"
 #include "sq_status.h"
 
-#define POW10_MAX 9 /* 10^9 x 2^31 < 2^63 */
-
 static const char *const reason_names[INPUT_RX_REASON_COUNT] = {
 	"ok", "dlc", "na", "qualifier", "crc", "counter", "repeated", "implausible"
 };
@@ -19,85 +17,38 @@ const char *input_rx_reason_name(input_rx_reason_t r)
 	return ((uint32_t)r < (uint32_t)INPUT_RX_REASON_COUNT) ? reason_names[r] : "?";
 }
 
-/* mant x 10^(exp - e0) for exp >= e0, or false when it would overflow */
-static bool dec_scaled(calib_dec_t d, int32_t e0, int64_t *out)
-{
-	int64_t v = d.mant;
-	int32_t i;
-
-	if ((int32_t)d.exp - e0 > POW10_MAX) {
-		return false;
-	}
-	for (i = e0; i < (int32_t)d.exp; i++) {
-		v *= 10;
-	}
-	*out = v;
-	return true;
-}
-
-static int64_t floor_div(int64_t n, int64_t d)
-{
-	int64_t q = n / d;
-
-	if (((n % d) != 0) && ((n < 0) != (d < 0))) {
-		q--;
-	}
-	return q;
-}
-
-static int64_t ceil_div(int64_t n, int64_t d)
-{
-	return -floor_div(-n, d);
-}
-
-static int32_t min_exp(int32_t a, int32_t b)
-{
-	return (a < b) ? a : b;
-}
-
-/* Plausible raw range: min <= raw x F + O <= max; |d raw| x |F| <= step. */
-static int raw_bounds(const calib_input_t *in, input_rx_cfg_t *cfg)
-{
-	const int32_t e0 = min_exp(min_exp(in->max.exp, in->min.exp),
-				   min_exp(min_exp(in->offset.exp, in->factor.exp), in->step_max.exp));
-	int64_t mx;
-	int64_t mn;
-	int64_t o;
-	int64_t f;
-	int64_t st;
-
-	if (!dec_scaled(in->max, e0, &mx) || !dec_scaled(in->min, e0, &mn) ||
-	    !dec_scaled(in->offset, e0, &o) || !dec_scaled(in->factor, e0, &f) ||
-	    !dec_scaled(in->step_max, e0, &st) || (f == 0)) {
-		return SQ_EINVAL;
-	}
-	if (f > 0) {
-		cfg->raw_min = ceil_div(mn - o, f);
-		cfg->raw_max = floor_div(mx - o, f);
-	} else {
-		cfg->raw_min = ceil_div(mx - o, f);
-		cfg->raw_max = floor_div(mn - o, f);
-	}
-	cfg->raw_step = floor_div(st, (f > 0) ? f : -f);
-	return SQ_OK;
-}
-
 int input_rx_setup(const calib_input_t *desc, const input_geom_t *geom,
 		   input_rx_cfg_t *cfg)
 {
 	const char *why = NULL;
+	input_raw_bounds_t b;
 
 	/* descriptors come from a validated calibration */
 	HAL_REQUIRE((desc != NULL) && (geom != NULL) && (cfg != NULL));
 	HAL_REQUIRE(calib_input_check(desc, &why) == SQ_OK);
 	cfg->desc = *desc;
-	if ((input_conv_make(desc->factor.mant, desc->factor.exp, desc->offset.mant,
-			     desc->offset.exp, (input_unit_t)desc->unit, geom,
-			     &cfg->conv) != SQ_OK) ||
-	    (raw_bounds(desc, cfg) != SQ_OK)) {
+	/* the one preparation calib_validate() also runs for every corner */
+	if (calib_input_prepare(desc, geom, &cfg->conv, &b, &why) != SQ_OK) {
 		return SQ_EINVAL;
 	}
+	cfg->raw_min = b.raw_min;
+	cfg->raw_max = b.raw_max;
+	cfg->raw_step = b.raw_step;
 	return SQ_OK;
+}
+
+/* One selector condition: the raw selector within lo .. hi, or a frame too
+ * short to hold it (it matches, then fails the DLC check). */
+static bool selector_holds(const can_signal_t *sel, uint32_t lo, uint32_t hi,
+			   const hal_can_frame_t *f)
+{
+	uint32_t v;
+
+	if (f->dlc < can_signal_min_dlc(sel)) {
+		return true;
+	}
+	v = can_signal_get(sel, f->data);
+	return (v >= lo) && (v <= hi);
 }
 
 bool input_rx_matches(const input_rx_cfg_t *cfg, const hal_can_frame_t *f, bool *id_only)
@@ -118,10 +69,13 @@ bool input_rx_matches(const input_rx_cfg_t *cfg, const hal_can_frame_t *f, bool 
 		*id_only = true;
 		return false;
 	}
-	if (((in->flags & CALIB_IN_MUX) != 0U) && (f->dlc >= can_signal_min_dlc(&in->mux))) {
-		return can_signal_get(&in->mux, f->data) == in->mux_value;
+	/* every condition given must hold */
+	if (((in->flags & CALIB_IN_MUX) != 0U) &&
+	    !selector_holds(&in->mux, in->mux_value, in->mux_value_max, f)) {
+		return false;
 	}
-	return true;
+	return ((in->flags & CALIB_IN_MUX2) == 0U) ||
+	       selector_holds(&in->mux2, in->mux2_value, in->mux2_value_max, f);
 }
 
 /* The protection's verdict; *st the E2E status. */

@@ -4,7 +4,7 @@
  * the only thing the monitor calls for its inputs, and the same code that
  * `squeal-sim decode --inputs-csv` uses to show what the monitor sees:
  *
- *   input_rx_matches()  identifier, 11/29-bit and multiplexer value
+ *   input_rx_matches()  identifier, 11/29-bit and every selector's range
  *   input_rx_frame()    DLC -> protection (none, P01, P02, counter) ->
  *                       raw value -> "not available" -> qualifier bit
  *   input_rx_plausible() range and rate in the raw domain (the physical
@@ -57,17 +57,18 @@ typedef struct {
  * calibration is validated before its inputs are set up). Frames are data:
  * whatever they hold gives a reason, never a contract failure.
  *
- * Prepare an input for a corner's geometry: conversion and raw bounds.
- * SQ_OK or SQ_EINVAL (the conversion cannot be built for this geometry,
- * e.g. a pressure for a corner without piston area, or the plausible range
- * does not fit the raw domain).
+ * Prepare an input for a corner's geometry: conversion and raw bounds,
+ * through calib_input_prepare() (which calib_validate() runs for every
+ * corner: a validated calibration always sets up). SQ_OK or SQ_EINVAL (a
+ * geometry the calibration does not give, e.g. a pressure for a corner
+ * without piston area).
  */
 int input_rx_setup(const calib_input_t *desc, const input_geom_t *geom,
 		   input_rx_cfg_t *cfg);
 
-/* Does this frame carry the input (identifier, EXT flag, mux value)?
- * Remote frames never do. A frame too short for the selector matches (and
- * then fails the DLC check). *id_only is set when only the identifier
+/* Does this frame carry the input (identifier, EXT flag, and each given
+ * selector's raw value within its range)? Remote frames never do. A frame
+ * too short for a selector matches (and then fails the DLC check). *id_only is set when only the identifier
  * (not the frame format) matched, so the caller can count it. */
 bool input_rx_matches(const input_rx_cfg_t *cfg, const hal_can_frame_t *f, bool *id_only);
 

@@ -10,13 +10,43 @@
  *     (the error buffer is an exactly-sized heap block: ASan checks);
  *   - an accepted file gives a calibration that validates, whose stored
  *     block encodes, and whose calib_text_write() output parses back to the
- *     identical block (the writer's "shortest form that parses back").
+ *     identical block (the writer's "shortest form that parses back");
+ *   - an accepted file sets up: every corner's inputs through
+ *     input_rx_setup() (as calib_corner_view() gives them) and every
+ *     corner's monitor (monitor_init_corner() keeps the calibration, no
+ *     fall-back to the factory defaults). Built for both numeric builds
+ *     (fuzz_calib_text, fuzz_calib_text_fixed).
  */
 #include "fuzz_common.h"
 
 #include "calib.h"
+#include "calib_map.h"
 #include "calib_text.h"
+#include "input_rx.h"
+#include "monitor.h"
 #include "sq_status.h"
+
+/* What validates sets up: the monitor's path for every corner. */
+static void check_sets_up(const calib_t *cal)
+{
+	static monitor_t mon;
+	uint32_t k;
+
+	for (k = 0U; k < calib_corner_count(cal); k++) {
+		calib_corner_t c;
+		calib_input_t sp;
+		calib_input_t fo;
+		input_rx_cfg_t rx;
+		input_geom_t g;
+
+		FUZZ_REQUIRE(calib_corner_view(cal, k, &c, &sp, &fo) == SQ_OK);
+		g = calib_corner_geom(&c);
+		FUZZ_REQUIRE(input_rx_setup(&sp, &g, &rx) == SQ_OK);
+		FUZZ_REQUIRE(input_rx_setup(&fo, &g, &rx) == SQ_OK);
+		FUZZ_REQUIRE(monitor_init_corner(&mon, cal, k, false, 0U, 0U) == SQ_OK);
+		FUZZ_REQUIRE(mon.cal == cal);
+	}
+}
 
 static void check_roundtrip(const calib_t *cal)
 {
@@ -82,6 +112,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		FUZZ_REQUIRE(memchr(err, '\0', errlen) != NULL);
 	} else {
 		check_roundtrip(&cal);
+		check_sets_up(&cal);
 	}
 	free(err);
 	return 0;

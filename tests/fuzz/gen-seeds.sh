@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 gen=${1:-build/host/tests/fuzz/gen_seeds}
 for t in fuzz_model_float fuzz_model_fixed fuzz_msgs fuzz_calib_block fuzz_monitor \
-	fuzz_monitor_fixed fuzz_candump fuzz_calib_text; do
+	fuzz_monitor_fixed fuzz_candump fuzz_calib_text fuzz_calib_text_fixed; do
 	mkdir -p "tests/fuzz/corpus/$t"
 	rm -f "tests/fuzz/corpus/$t"/seed-*
 done
@@ -21,6 +21,8 @@ cp tests/fuzz/corpus/fuzz_monitor/seed-* tests/fuzz/corpus/fuzz_monitor_fixed/
 for f in tests/inputmap/*.cal; do
 	[ -f "$f" ] && cp "$f" "tests/fuzz/corpus/fuzz_calib_text/seed-$(basename "$f" .cal)"
 done
+# the calibration text means the same in both numeric builds
+cp tests/fuzz/corpus/fuzz_calib_text/seed-* tests/fuzz/corpus/fuzz_calib_text_fixed/
 for d in tests/fuzz/corpus/*/; do
 	echo "$(basename "$d"): $(ls "$d" | wc -l) files"
 done

@@ -144,7 +144,7 @@ static void test_rejects_with_line_numbers(void **state)
 	expect_error("speed_max_radps = 655.35\n", "t.cal:1: speed_max_radps = 655.35 is out of range");
 	/* whole-file checks */
 	expect_error("status_id = 0x110\n", "t.cal: the six CAN identifiers");
-	expect_error("mu_inf = 0.1\ndelta_mu = -0.2\n", "t.cal: mu_inf + delta_mu");
+	expect_error("mu_inf = 0.1\ndelta_mu = -0.2\n", "t.cal:2: mu_inf + delta_mu");
 }
 
 static void test_long_line_rejected(void **state)

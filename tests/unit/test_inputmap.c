@@ -443,7 +443,7 @@ static void test_conversion_contracts(void **state)
 {
 	input_unit_t u;
 	input_conv_t c;
-	const input_conv_t unmade = { 1, 0, 0, 0U }; /* div 0: not from input_conv_make */
+	const input_conv_t unmade = { 1, 0, 0, 0U, 0U, 0, 0U }; /* div 0: not from input_conv_make */
 
 	(void)state;
 	expect_assert_failure(input_unit_parse(NULL, &u));

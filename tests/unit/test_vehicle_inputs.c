@@ -441,6 +441,361 @@ static void test_bad_calibrations(void **state)
 	refused("[brake FL]\n", "car.cal:1: unknown section 'brake'");
 }
 
+static const char good_input_with_corner[] =
+	"[input S]\nid = 0x100\nstart_bit = 8\nlength = 16\nbyte_order = intel\n"
+	"factor = 0.01\nunit = rad/s\nperiod_ms = 10\nmax = 400\nstep_max = 10\n"
+	"[input F]\nid = 0x101\nstart_bit = 16\nlength = 16\nbyte_order = intel\n"
+	"factor = 0.5\nunit = N\nperiod_ms = 10\nmax = 30000\nstep_max = 10000\n"
+	"[corner FL]\nspeed = S\nforce = F\n";
+
+/* ---- calibrations that set up exactly as written ---------------------------------- */
+
+static void parse_text(const char *text)
+{
+	FILE *f = fmemopen((void *)(uintptr_t)text, strlen(text), "r");
+	char err[300] = "";
+
+	assert_non_null(f);
+	if (calib_text_parse_map(f, "car.cal", &cal, &names, err, sizeof(err)) != SQ_OK) {
+		fclose(f);
+		fail_msg("%s", err);
+	}
+	fclose(f);
+}
+
+/* corner k's speed (0) or force (1) input, set up as the monitor does it:
+ * calib_corner_view() (which carries the torque share) and its geometry */
+static input_rx_cfg_t corner_input(uint32_t k, int which)
+{
+	calib_corner_t c;
+	calib_input_t sp;
+	calib_input_t fo;
+	input_geom_t g;
+	input_rx_cfg_t cfg;
+
+	assert_int_equal(calib_validate(&cal), SQ_OK);
+	assert_int_equal(calib_corner_view(&cal, k, &c, &sp, &fo), SQ_OK);
+	g = calib_corner_geom(&c);
+	assert_int_equal(input_rx_setup((which == 0) ? &sp : &fo, &g, &cfg), SQ_OK);
+	return cfg;
+}
+
+/* One input N (newtons, so that the conversion is x 1000 to mN) with the
+ * given factor/offset/range lines on a 32-bit raw (bytes 0..3, Intel), and
+ * a plain speed; corner FL. */
+static void force_input(const char *lines)
+{
+	char buf[1024];
+
+	snprintf(buf, sizeof(buf),
+		 "[input S]\nid = 0x100\nstart_bit = 0\nlength = 16\nbyte_order = intel\n"
+		 "factor = 0.01\nunit = rad/s\nperiod_ms = 10\nmax = 400\nstep_max = 10\n"
+		 "[input F]\nid = 0x101\nperiod_ms = 10\nbyte_order = intel\n%s"
+		 "[corner FL]\nspeed = S\nforce = F\n", lines);
+	parse_text(buf);
+}
+
+static void test_exact_dbc_factors(void **state)
+{
+	input_rx_cfg_t cfg;
+
+	(void)state;
+	/* 2^-10 N (a Toyota-style factor) on 16 bits, max 63.99 N: refused at
+	 * set-up before (10 digits beyond the old exponent span). mN =
+	 * raw x 1000 / 1024 = raw x 125 / 128: 1000 -> 976.5625 -> 977, 64 ->
+	 * 62.5 -> 63 (halves away from zero); plausible raws: 0 .. floor(63.99
+	 * x 1024) = floor(65525.76) = 65525 */
+	force_input("start_bit = 0\nlength = 16\nfactor = 0.0009765625\nunit = N\n"
+		    "max = 63.99\nstep_max = 63.99\n");
+	assert_int_equal(cal.inputs[1].factor.mant, 9765625);
+	assert_int_equal(cal.inputs[1].factor.exp, -10);
+	cfg = corner_input(0U, 1);
+	assert_int_equal(input_conv_apply(&cfg.conv, 1000), 977);
+	assert_int_equal(input_conv_apply(&cfg.conv, 64), 63);
+	assert_true(cfg.raw_min == 0);
+	assert_true(cfg.raw_max == 65525);
+	/* 1e-07 kN on a 32-bit unsigned raw: 4294967295 x 1e-7 kN =
+	 * 429.4967295 kN = 429496729.5 mN -> 429496730 (a tie, away from 0) */
+	force_input("start_bit = 0\nlength = 32\nfactor = 1e-07\nunit = kN\n"
+		    "max = 2147483647\nstep_max = 1e3\n");
+	assert_int_equal(cal.inputs[1].factor.mant, 1);
+	assert_int_equal(cal.inputs[1].factor.exp, -7);
+	assert_int_equal(cal.inputs[1].max.mant, 2147483647);
+	cfg = corner_input(0U, 1);
+	assert_int_equal(input_conv_apply(&cfg.conv, 4294967295LL), 429496730);
+	assert_true(cfg.raw_max >= 4294967295LL); /* every raw is plausible */
+	/* 17 significant digits, as repr() writes 1/3: 0.33333333333333331 N
+	 * = 33333333333333331 / 10^17 N; mN = raw x 33333333333333331 / 10^14:
+	 * 3 -> 999.99999999999993 -> 1000; 1234567 -> 411522333.33.. ->
+	 * 411522333; 3000000 -> 999999999.99999993 -> 1000000000 */
+	force_input("start_bit = 0\nlength = 32\nfactor = 0.33333333333333331\nunit = N\n"
+		    "max = 2e9\nstep_max = 2e9\n");
+	assert_true(cal.inputs[1].factor.mant == 33333333333333331LL);
+	assert_int_equal(cal.inputs[1].factor.exp, -17);
+	cfg = corner_input(0U, 1);
+	assert_int_equal(input_conv_apply(&cfg.conv, 3), 1000);
+	assert_int_equal(input_conv_apply(&cfg.conv, 1234567), 411522333);
+	assert_int_equal(input_conv_apply(&cfg.conv, 3000000), 1000000000);
+	/* the same in kN on a signed 16-bit raw: raw x mul passes 2^63 (the
+	 * 128-bit path): 6000 -> 1999999999.9999998 -> 2000000000, -6000 ->
+	 * -2000000000, 5999 -> 1999666666.67 -> 1999666667; 7000 saturates */
+	force_input("start_bit = 0\nlength = 16\nsigned = yes\nfactor = 0.33333333333333331\n"
+		    "unit = kN\nmin = -1e4\nmax = 1e4\nstep_max = 1e4\n");
+	cfg = corner_input(0U, 1);
+	assert_int_equal(cfg.conv.wide, 1);
+	assert_int_equal(input_conv_apply(&cfg.conv, 6000), 2000000000);
+	assert_int_equal(input_conv_apply(&cfg.conv, -6000), -2000000000);
+	assert_int_equal(input_conv_apply(&cfg.conv, 5999), 1999666667);
+	assert_int_equal(input_conv_apply(&cfg.conv, 7000), INT32_MAX);
+	assert_int_equal(input_conv_apply(&cfg.conv, -7000), INT32_MIN);
+	/* negative offsets in exponent notation: 0.5 N, offset -4.5e1 N:
+	 * raw 100 -> 50 - 45 = 5 N = 5000 mN, raw 0 -> -45000 mN; and 2^-10 N
+	 * with -1.25e-1 N: raw 1000 -> 0.9765625 - 0.125 = 0.8515625 N ->
+	 * 851.5625 -> 852 mN (offset and scale over one denominator) */
+	force_input("start_bit = 0\nlength = 16\nfactor = 0.5\noffset = -4.5e1\nunit = N\n"
+		    "min = -45\nmax = 1e4\nstep_max = 1e4\n");
+	assert_int_equal(cal.inputs[1].offset.mant, -45);
+	assert_int_equal(cal.inputs[1].offset.exp, 0);
+	cfg = corner_input(0U, 1);
+	assert_int_equal(input_conv_apply(&cfg.conv, 100), 5000);
+	assert_int_equal(input_conv_apply(&cfg.conv, 0), -45000);
+	force_input("start_bit = 0\nlength = 16\nfactor = 0.0009765625\noffset = -1.25e-1\n"
+		    "unit = N\nmin = -1\nmax = 64\nstep_max = 64\n");
+	cfg = corner_input(0U, 1);
+	assert_int_equal(input_conv_apply(&cfg.conv, 1000), 852);
+	/* min -1 N: raw >= ceil((-1 + 0.125) x 1024) = ceil(-896) = -896,
+	 * raw <= floor(64.125 x 1024) = 65664 */
+	assert_true(cfg.raw_min == -896);
+	assert_true(cfg.raw_max == 65664);
+}
+
+static void test_refused_at_its_line(void **state)
+{
+	char buf[2048];
+
+	(void)state;
+	/* max below min: the text parser took it and the corner never set
+	 * up; now refused at the max line (line 9 here: input S's max) */
+	snprintf(buf, sizeof(buf), "[input S]\nid = 0x100\nstart_bit = 8\nlength = 16\n"
+		 "byte_order = intel\nfactor = 0.01\nunit = rad/s\nperiod_ms = 10\nmax = 10\n"
+		 "min = 20\nstep_max = 10\n%s[corner FL]\nspeed = S\nforce = F\n",
+		 good_input + strlen("[input S]\nid = 0x100\nstart_bit = 8\nlength = 16\n"
+				     "byte_order = intel\nfactor = 0.01\nunit = rad/s\n"
+				     "period_ms = 10\nmax = 400\nstep_max = 10\n"));
+	refused(buf, "car.cal:9: [input S] max is below min");
+	/* a range between two raw steps holds no raw value: 0.1 .. 0.3 N in
+	 * raw steps of 0.5 N */
+	snprintf(buf, sizeof(buf), "%.*smax = 0.3\nmin = 0.1\nstep_max = 10000\n"
+		 "[corner FL]\nspeed = S\nforce = F\n",
+		 (int)(strstr(good_input, "max = 30000") - good_input), good_input);
+	refused(buf, "car.cal:19: [input F] max: no raw value");
+	/* one raw step of 2^31 mN or more cannot convert: at the factor */
+	snprintf(buf, sizeof(buf), "%s[input T]\nid = 0x102\nstart_bit = 0\nlength = 8\n"
+		 "byte_order = intel\nfactor = 3e6\nunit = N\nperiod_ms = 10\nmax = 1e9\n"
+		 "step_max = 1e9\n[corner FL]\nspeed = S\nforce = T\n", good_input);
+	refused(buf, "car.cal:26: [input T] factor: one raw step");
+	/* more than 17 significant digits, exponent beyond 30 */
+	snprintf(buf, sizeof(buf), "[input S]\nid = 1\nstart_bit = 8\nlength = 8\n"
+		 "byte_order = intel\nfactor = 0.123456789012345678\n");
+	refused(buf, "car.cal:6: [input S] factor needs a decimal number");
+	snprintf(buf, sizeof(buf), "[input S]\nid = 1\nstart_bit = 8\nlength = 8\n"
+		 "byte_order = intel\nfactor = 1e-31\n");
+	refused(buf, "car.cal:6: [input S] factor needs a decimal number");
+	/* torque_share outside (0, 1], or on an input that is no torque */
+	snprintf(buf, sizeof(buf), "%s[corner FL]\nspeed = S\nforce = F\ntorque_share = 0.5\n",
+		 good_input);
+	refused(buf, "car.cal:24: [corner FL] torque_share for a force input that is not a torque");
+	snprintf(buf, sizeof(buf), "%s[corner FL]\nspeed = S\nforce = F\ntorque_share = 1.5\n",
+		 good_input);
+	refused(buf, "car.cal:24: [corner FL] torque_share = 1.5 must be in (0, 1]");
+	/* input_iface: 1..15 of A-Z a-z 0-9 _ . - */
+	refused("input_iface = can0/x\n", "car.cal:1: input_iface = 'can0/x'");
+	refused("input_iface = can0\ninput_iface = can1\n", "car.cal:2: duplicate key 'input_iface'");
+	/* signal: printable, no blanks, 1..63 */
+	snprintf(buf, sizeof(buf), "%ssignal = %s\n", good_input,
+		 "M.SSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSSS");
+	refused(buf, "car.cal:21: [input F] signal: the DBC name");
+}
+
+/* A qualifier bit beyond min_dlc: the monitor would read a byte the frame
+ * need not have. Refused by the input map (calib_input_needed_dlc counts
+ * the bit), for the block as for the text. */
+static void test_qualifier_beyond_min_dlc(void **state)
+{
+	calib_input_t in;
+	const char *why = NULL;
+
+	(void)state;
+	parse_text(good_input_with_corner);
+	in = cal.inputs[1];                 /* F: bytes 2..3, min_dlc 4 */
+	assert_int_equal(in.min_dlc, 4);
+	in.flags |= CALIB_IN_QUALIFIER;
+	in.qualifier_bit = 7;               /* byte 0: within min_dlc 4 */
+	assert_int_equal(calib_input_check(&in, &why), SQ_OK);
+	in.qualifier_bit = 40;              /* byte 5: beyond it */
+	assert_int_equal(calib_input_check(&in, &why), SQ_EINVAL);
+	assert_string_equal(why, "a signal beyond min_dlc");
+	cal.inputs[1] = in;
+	assert_int_equal(calib_validate(&cal), SQ_EINVAL);
+	in.min_dlc = 6;
+	assert_int_equal(calib_input_check(&in, &why), SQ_OK);
+}
+
+static void test_extended_multiplexing(void **state)
+{
+	static const char text[] =
+		"[input S]\nid = 0x100\nstart_bit = 8\nlength = 16\nbyte_order = intel\n"
+		"factor = 0.01\nunit = rad/s\nperiod_ms = 10\nmax = 400\nstep_max = 10\n"
+		"[input F]\n"                       /* 11 */
+		"id = 0x3C0\nstart_bit = 16\nlength = 16\nbyte_order = intel\n"
+		"factor = 0.5\nunit = N\nperiod_ms = 10\nmax = 30000\nstep_max = 30000\n"
+		"signal = BRAKE_PAGE.PadForce\n"
+		/* outer selector bits 0..3: pages 2..3; inner bits 56..59: 5..7 */
+		"mux_start_bit = 0\nmux_length = 4\nmux_byte_order = intel\nmux_value = 2\n"
+		"mux_value_max = 3\n"
+		"mux2_start_bit = 56\nmux2_length = 4\nmux2_byte_order = intel\nmux2_value = 5\n"
+		"mux2_value_max = 7\n"
+		"[corner FL]\nspeed = S\nforce = F\n";
+	/* page pairs (outer, inner) and whether the frame carries F */
+	static const struct {
+		uint8_t outer;
+		uint8_t inner;
+		bool carries;
+	} pages[] = {
+		{ 2U, 5U, true }, { 3U, 7U, true }, { 2U, 6U, true },
+		{ 1U, 5U, false }, { 4U, 6U, false }, { 15U, 7U, false },
+		{ 2U, 4U, false }, { 3U, 8U, false }, { 0U, 0U, false },
+	};
+	input_rx_cfg_t cfg;
+	bool id_only = false;
+	uint32_t i;
+
+	(void)state;
+	parse_text(text);
+	assert_string_equal(names.signal[1], "BRAKE_PAGE.PadForce");
+	assert_string_equal(names.signal[0], "");
+	assert_int_equal(cal.inputs[1].min_dlc, 8); /* the inner selector in byte 7 */
+	cfg = corner_input(0U, 1);
+	for (i = 0U; i < sizeof(pages) / sizeof(pages[0]); i++) {
+		uint8_t d[8] = { 0 };
+		hal_can_frame_t f;
+
+		d[0] = pages[i].outer;
+		d[7] = pages[i].inner;
+		d[2] = 0x10;                        /* raw 0x0010 = 16 -> 8 N */
+		f = frame(0x3C0, false, 8U, d);
+		if (input_rx_matches(&cfg, &f, &id_only) != pages[i].carries) {
+			fail_msg("page %u/%u: carries %d", pages[i].outer, pages[i].inner,
+				 (int)pages[i].carries);
+		}
+		if (pages[i].carries) {
+			e2e_p01_rx_t rx;
+			input_rx_result_t r;
+
+			e2e_p01_rx_init(&rx);
+			r = input_rx_frame(&cfg, &rx, &f);
+			assert_int_equal(r.reason, INPUT_RX_OK);
+			assert_int_equal(input_conv_apply(&cfg.conv, r.value), 8000);
+		}
+	}
+	/* too short for the inner selector: matches, then a bad DLC */
+	{
+		const uint8_t d[8] = { 2U, 0U, 0x10U, 0U, 0U, 0U, 0U, 0U };
+		const hal_can_frame_t f = frame(0x3C0, false, 4U, d);
+		e2e_p01_rx_t rx;
+
+		assert_true(input_rx_matches(&cfg, &f, &id_only));
+		e2e_p01_rx_init(&rx);
+		assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, INPUT_RX_DLC);
+	}
+	/* written back and parsed again: the same block */
+	{
+		char *out = NULL;
+		size_t len = 0;
+		FILE *w = open_memstream(&out, &len);
+		calib_t first = cal;
+		uint8_t a[CALIB_BLOCK_LEN];
+		uint8_t b[CALIB_BLOCK_LEN];
+
+		assert_int_equal(calib_text_write_map(w, &cal, &names), SQ_OK);
+		fclose(w);
+		assert_non_null(strstr(out, "mux2_value_max = 7\n"));
+		assert_non_null(strstr(out, "signal = BRAKE_PAGE.PadForce\n"));
+		parse_text(out);
+		free(out);
+		assert_int_equal(calib_encode(&first, a, sizeof(a)), SQ_OK);
+		assert_int_equal(calib_encode(&cal, b, sizeof(b)), SQ_OK);
+		assert_memory_equal(a, b, sizeof(a));
+	}
+	/* selectors: not overlapping each other, the value or the E2E header;
+	 * value_max not below value; a second selector needs the first */
+	{
+		char buf[2048];
+		char *p;
+
+		snprintf(buf, sizeof(buf), "%s", text);
+		p = strstr(buf, "mux2_start_bit = 56");
+		memcpy(p, "mux2_start_bit = 02", 19U);
+		refused(buf, "car.cal:27: [input F] mux2_start_bit: the two selectors overlap");
+		snprintf(buf, sizeof(buf), "%s", text);
+		p = strstr(buf, "mux_value_max = 3");
+		memcpy(p, "mux_value_max = 1", 17U);
+		refused(buf, "car.cal:26: [input F] mux_value_max below mux_value");
+		snprintf(buf, sizeof(buf), "%s", text);
+		p = strstr(buf, "mux2_value_max = 7");
+		memcpy(p, "mux2_value_max = 4", 18U);
+		refused(buf, "car.cal:31: [input F] mux2_value_max below mux2_value or beyond");
+		snprintf(buf, sizeof(buf), "%s", text);
+		p = strstr(buf, "mux_start_bit = 0\nmux_length = 4\nmux_byte_order = intel\nmux_value = 2\nmux_value_max = 3\n");
+		memset(p, ' ', strlen("mux_start_bit = 0\nmux_length = 4\nmux_byte_order = intel\nmux_value = 2\nmux_value_max = 3"));
+		/* (the blanked selector lines are one line now: mux2 on line 23) */
+		refused(buf, "car.cal:23: [input F] mux2_start_bit: a second selector needs the first");
+	}
+}
+
+static void test_torque_share(void **state)
+{
+	static const char text[] =
+		"[input W]\nid = 0x240\nstart_bit = 0\nlength = 16\nbyte_order = intel\n"
+		"factor = 0.01\nunit = rad/s\nperiod_ms = 10\nmax = 400\nstep_max = 100\n"
+		"[input T]\nid = 0x241\nstart_bit = 16\nlength = 16\nbyte_order = intel\n"
+		"factor = 1\nunit = Nm\nperiod_ms = 10\nmax = 20000\nstep_max = 20000\n"
+		"[corner FL]\nspeed = W\nforce = T\ntorque_share = 0.6\n"
+		"[corner FR]\nspeed = W\nforce = T\ntorque_share = 0.4\n";
+	input_rx_cfg_t fl;
+	input_rx_cfg_t fr;
+
+	(void)state;
+	parse_text(text);
+	assert_int_equal(cal.corners[0].torque_share_ppm, 600000);
+	assert_int_equal(cal.corners[1].torque_share_ppm, 400000);
+	/* the front axle's total torque 1000 Nm: FL 0.6 x 1000 Nm = 600000
+	 * mNm, FR 400000 mNm; the input's plausibility is the total's */
+	fl = corner_input(0U, 1);
+	fr = corner_input(1U, 1);
+	assert_int_equal(input_conv_apply(&fl.conv, 1000), 600000);
+	assert_int_equal(input_conv_apply(&fr.conv, 1000), 400000);
+	assert_int_equal(input_conv_apply(&fl.conv, 3), 1800);
+	assert_true(fl.raw_max == 20000);
+	/* the stored input itself (no corner) converts the whole value */
+	{
+		const input_geom_t g = calib_corner_geom(&cal.corners[0]);
+		input_rx_cfg_t whole;
+
+		assert_int_equal(input_rx_setup(&cal.inputs[1], &g, &whole), SQ_OK);
+		assert_int_equal(input_conv_apply(&whole.conv, 1000), 1000000);
+	}
+	/* through the block and back */
+	{
+		uint8_t a[CALIB_BLOCK_LEN];
+		calib_t back;
+
+		assert_int_equal(calib_encode(&cal, a, sizeof(a)), SQ_OK);
+		assert_int_equal(calib_decode(a, sizeof(a), &back, NULL), SQ_OK);
+		assert_int_equal(back.corners[0].torque_share_ppm, 600000);
+	}
+}
+
 static void test_written_map_parses_back(void **state)
 {
 	char *text = NULL;
@@ -586,6 +941,11 @@ int main(void)
 		cmocka_unit_test(test_corner_deviations),
 		cmocka_unit_test(test_written_map_parses_back),
 		cmocka_unit_test(test_input_rx_contracts),
+		cmocka_unit_test(test_exact_dbc_factors),
+		cmocka_unit_test(test_refused_at_its_line),
+		cmocka_unit_test(test_qualifier_beyond_min_dlc),
+		cmocka_unit_test(test_extended_multiplexing),
+		cmocka_unit_test(test_torque_share),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
