@@ -10,9 +10,16 @@
 #   tests/vehicle/test_vehicle_crosscheck.py  decode --calib --inputs-csv == canmatrix, random frames
 #   tests/vehicle/test_vehicle_e2e.py       drive -> replay --calib -> outputs vs the reference
 #   tests/vehicle/test_vehicle_unseen.py    issue 11's Done-when layout (tests/vehicle/unseen/)
-# The last three run the sanitizer builds of squeal-sim (float and fixed).
+#   tests/vehicle/test_realcan_sweep.py     every integer signal of the real DBC files in
+#                                           ../shared/realcan (a counted skip without them)
+# The crosscheck, e2e and unseen tests run the sanitizer builds of squeal-sim
+# (float and fixed), each also as the tool's calib-check; the sweep runs
+# build/host/squeal-sim, the tool's default checker.
 VEHICLE_SIM_TESTS := tests/vehicle/test_vehicle_crosscheck.py tests/vehicle/test_vehicle_e2e.py \
 	tests/vehicle/test_vehicle_unseen.py
 $(VEHICLE_SIM_TESTS): build/test/squeal-sim build/test-fixed/squeal-sim
 
-TEST_PROGS += tests/vehicle/test_vehicle_calib.py tests/vehicle/test_vehicle_field.py $(VEHICLE_SIM_TESTS)
+tests/vehicle/test_realcan_sweep.py: build/host/squeal-sim
+
+TEST_PROGS += tests/vehicle/test_vehicle_calib.py tests/vehicle/test_vehicle_field.py $(VEHICLE_SIM_TESTS) \
+	tests/vehicle/test_realcan_sweep.py

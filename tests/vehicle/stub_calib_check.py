@@ -17,6 +17,9 @@ def main(argv):
         sys.stderr.write("usage: stub_calib_check.py calib-check FILE\n")
         return 1
     path = argv[1]
+    if path == "--help":
+        print("usage: stub_calib_check.py calib-check FILE")
+        return 0
     with open(path) as f:
         text = f.read()
     _, inputs, corners = vehref.parse_calib(text)

@@ -346,6 +346,8 @@ def check_references(r, tmp):
     total = 0
     for name, layout in vehref.LAYOUTS.items():
         total += xcheck.run_layout(r, name, layout, tmp, 2000, True) or 0
+    for name, layout in vehref.FIELD_LAYOUTS.items():   # extended, cascaded, independent multiplexing
+        total += xcheck.run_field(r, name, layout, tmp, 3000, True) or 0
     print("cross-check harness self-test: %d frame-input pairs" % total)
     layout = vehref.LAYOUTS["esc_motorola"]
     rc, text, _ = vehref.run_tool(vehref.calib_command(layout))

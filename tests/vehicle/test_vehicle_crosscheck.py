@@ -76,8 +76,33 @@ def random_frames(layout, db, inputs, n, seed):
     return out
 
 
-def canmatrix_rows(db, inputs, frames):
-    """The expectation from canmatrix: {(t, input): (raw, physical) or 'dlc'}."""
+def cm_carries(fr, sig, data):
+    """canmatrix's rule for the page that carries a signal: what decode()
+    returns, for plain and simple multiplexing; for extended multiplexing
+    (SG_MUL_VAL_) the signal's chain of selectors (muxer_for_signal) with
+    canmatrix's multiplexer_value_in_range on unpack()'s raw values: decode()
+    follows the first multiplexor only, so the second of two independent
+    multiplexors needs the chain (consistency with decode() is checked)."""
+    if not fr.is_complex_multiplexed:
+        return sig.name in fr.decode(data)
+    raw = {n: v.raw_value for n, v in fr.unpack(data).items()}
+    s = sig
+    for _ in range(8):
+        if s.muxer_for_signal is None:
+            return s.mux_val is None
+        m = fr.signal_by_name(s.muxer_for_signal)
+        if not s.multiplexer_value_in_range(raw[m.name]):
+            return False
+        s = m
+    return False
+
+
+CM_CONSISTENCY = {"frames": 0, "bad": 0}
+
+
+def canmatrix_rows(db, inputs, frames, scale=None):
+    """The expectation from canmatrix: {(t, input): (raw, physical) or 'dlc'}
+    (physical times the layout's scale of the input's MSG.SIG)."""
     by_key = {}
     for fr in db.frames:
         by_key[(fr.arbitration_id.id, bool(fr.arbitration_id.extended))] = fr
@@ -91,20 +116,27 @@ def canmatrix_rows(db, inputs, frames):
         if fr is None:
             continue
         full = bytearray(data) + bytearray(fr.size - len(data))
-        decoded = fr.decode(full)       # multiplexed: only the page's signals
+        if fr.is_complex_multiplexed:
+            CM_CONSISTENCY["frames"] += 1
+            CM_CONSISTENCY["bad"] += sum(1 for n in fr.decode(full)
+                                         if not cm_carries(fr, fr.signal_by_name(n), full))
         for name, (f, sig) in sig_of.items():
-            if f is not fr or sig.name not in decoded:
+            if f is not fr or not cm_carries(fr, sig, full):
                 continue
             if len(data) < fr.size:
                 exp[(t, name)] = "dlc"
             else:
-                d = fr.decode(bytearray(data))[sig.name]
-                exp[(t, name)] = (int(d.raw_value), float(d.raw_value * sig.factor + sig.offset))
+                d = fr.unpack(bytearray(data))[sig.name]
+                k = (scale or {}).get(inputs[name].get("_ref"), 1.0)
+                exp[(t, name)] = (int(d.raw_value), float(d.raw_value * sig.factor + sig.offset) * k)
     return exp
 
 
 def fr_signal(fr, inp):
-    """The DBC signal an input was built from (same start bit, length, page)."""
+    """The DBC signal an input was built from: by its `signal` name, else the
+    same start bit, length and page."""
+    if "signal" in inp and fr.signal_by_name(inp["signal"].split(".", 1)[1]) is not None:
+        return fr.signal_by_name(inp["signal"].split(".", 1)[1])
     for s in fr.signals:
         if (s.get_startbit(bit_numbering=1) == vehref.ival(inp, "start_bit") and s.size == vehref.ival(inp, "length")
                 and (s.mux_val is None) == ("mux_value" not in inp)
@@ -210,6 +242,39 @@ def run_layout(r, name, layout, tmp, n, self_test):
     return compare(r, name, out, exp, inputs)
 
 
+def run_field(r, name, layout, tmp, n, self_test):
+    """A field layout: the tool's arguments as a user gives them, random
+    frames with every page of every selector, the rows vs canmatrix's."""
+    path = os.path.join(vehref.HERE, layout["dbc"])
+    db = vehref.load_dbc(path)
+    cal = os.path.join(tmp, name + ".cal")
+    rc, _, err = vehref.run_tool([vehref.PY, vehref.TOOL, "--dbc", path] + layout["args"] + ["-o", cal])
+    notes, other = vehref.notes_of(err)
+    if not r.check(rc == 0, "%s: vehicle_calib.py builds the calibration: %s" % (name, other)):
+        return 0
+    with open(cal) as f:
+        text = f.read()
+    _, inputs, _ = vehref.parse_calib(text)
+    for inp in inputs.values():   # the scale is the layout's, by the input's signal = MSG.SIG
+        inp["_ref"] = inp.get("signal")
+    frames = random_frames(layout, db, inputs, n, seed=zlib.crc32(name.encode()))
+    exp = canmatrix_rows(db, inputs, frames, layout["scale"])
+    logp = os.path.join(tmp, name + "-random.log")
+    with open(logp, "w") as f:
+        for t, cid, ext, data in frames:
+            f.write("(%s) can0 %s#%s\n" % (t, ("%08X" if ext else "%03X") % cid, data.hex().upper()))
+    if self_test:
+        out = reference_csv(text, frames)
+    else:
+        rc, out, err = sim_rows(cal, logp)
+        if rc != 0:
+            vehref.sim_missing(r, "%s: decode --calib %s --inputs-csv" % (name, os.path.basename(cal)), rc, err)
+            return 0
+    r.check(CM_CONSISTENCY["bad"] == 0, "%s: the page rule agrees with canmatrix's decode() (%d frames, %d not)"
+            % (name, CM_CONSISTENCY["frames"], CM_CONSISTENCY["bad"]))
+    return compare(r, name, out, exp, inputs)
+
+
 def main(argv):
     self_test = "--self-test" in argv
     n = FRAMES_PER_LAYOUT
@@ -227,8 +292,12 @@ def main(argv):
                 c = run_layout(r, name, layout, tmp, n, self_test)
                 total += c or 0
                 print("%s: %d frame-input pairs compared (%s)" % (name, c or 0, sim or "pure-Python reference"))
+            for name, layout in vehref.FIELD_LAYOUTS.items():
+                c = run_field(r, name, layout, tmp, n, self_test)
+                total += c or 0
+                print("%s: %d frame-input pairs compared (%s)" % (name, c or 0, sim or "pure-Python reference"))
     print("cross-check: %d frame-input pairs over %d layouts and %d build(s)"
-          % (total, len(vehref.LAYOUTS), len(sims)))
+          % (total, len(vehref.LAYOUTS) + len(vehref.FIELD_LAYOUTS), len(sims)))
     r.finish()
 
 

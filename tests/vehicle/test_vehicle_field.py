@@ -332,6 +332,16 @@ def check_mux(r, tmp):
     refused(r, "three selectors", base + ["--speed", "WhlMux_Indep.WMI_Plain", "--force", "BrkMux_Casc.BMC_DeepVal",
                                           "--force-unit", "bar", "--piston-area-mm2", "2000", "--period-ms", "10"],
             ["three or more cascaded selectors"])
+    r.check(qual_of(one("qualifier on another page", "WhlMux_Ext.WME_Front")) is None,
+            "WME_Front_Q (page 3) does not qualify WME_Front (pages 0-2)")
+    r.check(qual_of(one("qualifier on the same pages", "WhlMux_Ext.WME_Rear")) == (61, 1),
+            "WME_Rear_Flt (pages 3-5) qualifies WME_Rear (pages 3-5)")
+    refused(r, "--qualifier on another page", base + ["--speed", "WhlMux_Indep.WMI_Plain", "--force",
+                                                      "WhlMux_Ext.WME_Front", "--force-unit", "bar",
+                                                      "--piston-area-mm2", "2000", "--period-ms", "10",
+                                                      "--qualifier", "WhlMux_Ext.WME_Front=WhlMux_Ext.WME_Front_Q"
+                                                      ":invalid-when=1"],
+            ["WME_Front_Q is not in every frame that carries WME_Front (another page)"])
     # periods from a log: pages 0..6 take turns every 10 ms
     log = os.path.join(tmp, "mux.log")
     with open(log, "w") as f:

@@ -102,6 +102,37 @@ UNSEEN = {
     "period_from": "GenMsgCycleTime",
 }
 
+# Field layouts (tests/vehicle/field/): cross-checked only (decode vs
+# canmatrix); the tool's arguments as a user gives them, and the scale the
+# tool folds into an input, by its signal = MSG.SIG (canmatrix's physical
+# value times it).
+FIELD_LAYOUTS = {
+    "field_esc": {
+        "dbc": os.path.join("field", "field_esc.dbc"),
+        "args": ["--corner", "FL", "--speed", "WhlRad.WhlRad_FL", "--force", "Brems_7.BS7_Hauptdruck",
+                 "--piston-area-mm2", "2290",
+                 "--corner", "FR", "--speed", "WhlRad.WhlRad_FR", "--force", "Brk_Torque.BrkTot_Tq",
+                 "--torque-share", "0.35",
+                 "--corner", "RL", "--speed", "WSL.WSL_FL", "--force", "Pedal_Stat.BrkPedal_Pos",
+                 "--force-unit", "bar", "--unit-scale", "2", "--piston-area-mm2", "2000",
+                 "--corner", "RR", "--speed", "VehSpd.VehSpd_Disp", "--speed-scale", "1.5",
+                 "--force", "Brk_Torque.BrkTot_Tq", "--torque-share", "0.15"],
+        "scale": {"Pedal_Stat.BrkPedal_Pos": 2.0, "VehSpd.VehSpd_Disp": 1.5},
+    },
+    "field_mux": {
+        "dbc": os.path.join("field", "field_mux.dbc"),
+        "args": ["--corner", "FL", "--speed", "WhlMux_Ext.WME_Front", "--force", "WhlMux_Ext.WME_Press",
+                 "--piston-area-mm2", "2290",
+                 "--corner", "FR", "--speed", "WhlMux_Ext.WME_Rear", "--force", "BrkMux_Casc.BMC_PressFront",
+                 "--piston-area-mm2", "2290",
+                 "--corner", "RL", "--speed", "BrkMux_Casc.BMC_Speed", "--force", "BrkMux_Casc.BMC_PressRear",
+                 "--piston-area-mm2", "1500",
+                 "--corner", "RR", "--speed", "WhlMux_Indep.WMI_SpeedA1", "--force", "WhlMux_Indep.WMI_PressB23",
+                 "--piston-area-mm2", "1500", "--period-ms", "10"],
+        "scale": {},
+    },
+}
+
 
 def layout_dbc(layout):
     return os.path.join(HERE, layout["dbc"])
