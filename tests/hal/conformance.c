@@ -13,9 +13,9 @@
  * frame rule (an undefined or error flag, DLC > 8, an id out of range:
  * SQ_EINVAL everywhere, also in listen-only), listen-only (nothing sent,
  * refusals counted, receiving goes on, the other bus keeps working, the
- * mode survives a bus-off), that no frame of one bus appears on the other, SQ_ENODEV for a
- * bus the backend lacks, and that a bad bus index or NULL goes to the
- * contract handler. Every check prints one line:
+ * mode survives a bus-off), that no frame of one bus appears on the
+ * other, SQ_ENODEV for a bus the backend lacks, and that a bad bus index or
+ * NULL goes to the contract handler. Every check prints one line:
  *   PASS  hal-conformance [vbus] bus 0: ...
  *   FAIL  hal-conformance [vbus] bus 0: ... (what was seen)
  *   SKIP: hal-conformance [socketcan] bus 0: ... (why)
