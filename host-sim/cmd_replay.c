@@ -600,9 +600,9 @@ static bool bus_of_frame(replay_t *r, const held_t *h, const hal_can_frame_t *hf
 			r->auto_iface = h->iface;
 		} else if (!r->multi_reported) {
 			r->multi_reported = true;
-			fprintf(stderr, "%s:%llu: the input identifiers arrive on %s and %s: the inputs are taken from %s (the first that carried one), the other's are ignored; --bus NAME or input_iface chooses\n",
+			fprintf(stderr, "%s:%llu: the input identifiers arrive on %s and %s (0x%X here): the inputs are taken from %s (the first that carried one), the other's are ignored; --bus NAME or input_iface chooses\n",
 				a->log_name, (unsigned long long)h->line_no, r->ifaces[r->auto_iface],
-				name, r->ifaces[r->auto_iface]);
+				name, (unsigned)h->id, r->ifaces[r->auto_iface]);
 		}
 	}
 	if (h->iface != r->auto_iface) {

@@ -310,7 +310,7 @@ const char *msg_squeal_state_name(uint8_t state);
  * tools that count time or changes per state index their tables with it.
  */
 #define MSG_SQUEAL_STATE_SLOTS      5U
-#define MSG_SQUEAL_STATE_SLOT_FAULT 4U
+#define MSG_SQUEAL_STATE_SLOT_FAULT (MSG_SQUEAL_STATE_SLOTS - 1U)
 uint32_t msg_squeal_state_slot(uint32_t state);
 
 /*

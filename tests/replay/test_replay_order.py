@@ -268,8 +268,9 @@ def test_buses(tmp, db):
     rc, so, err = run(["replay", p])
     first = [x[1] for x in both].index(noise[0][1]) + 1
     R.check(rc == 0 and so == want, "two interfaces, no choice: the inputs of can0 (the first), same output")
-    R.check(re.findall(r"input identifiers arrive on (\S+) and (\S+): the inputs are taken from (\S+)", err) ==
-            [("can0", "can1", "can0")] and ("%s:%d: the input identifiers" % (p, first)) in err,
+    R.check(re.findall(r"input identifiers arrive on (\S+) and (\S+) \(0x(\w+) here\): the inputs are taken from (\S+)",
+                       err) == [("can0", "can1", "%X" % enc.force_id, "can0")] and
+            ("%s:%d: the input identifiers" % (p, first)) in err,
             "two interfaces: said once, at the first other interface's input frame")
     R.check(value(err, "other_iface_inputs") == "300",
             "two interfaces: the 300 input frames of can1 ignored and counted (%s)" % value(err, "other_iface_inputs"))

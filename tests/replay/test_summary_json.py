@@ -173,6 +173,16 @@ def compare(doc, frames, end_us, what, base=(0x300, 0x301, 0x303)):
     return episodes
 
 
+def read_log_ifaces(path):
+    """(line, interface) of every frame line of a candump -L log."""
+    out = []
+    with open(path) as f:
+        for ln in f:
+            if ln.startswith("("):
+                out.append((ln, ln.split()[1]))
+    return out
+
+
 def text_summary(stderr):
     """The text summary's numbers: {key: [numbers...]} and state times."""
     out = {}
@@ -235,6 +245,23 @@ def check_log(tmp, name, plant_args):
     R.check(nums(t["state_changes"])[0] == doc["state_changes"]["total"], name + ": state_changes")
     R.check(nums(t["output_frames"])[0] == doc["output_frames"]["total"] == len(frames),
             name + ": output_frames")
+    # the keys added for the corners' inputs agree with the older ones (one
+    # legacy corner: its inputs are DiscSpeed and PadForce)
+    ic = doc["inputs_by_corner"]
+    R.check(len(ic) == 1 and ic[0]["corner"] == "FL" and
+            ic[0]["state_time_s"] == doc["state_time_s"] and
+            ic[0]["final_state"] == doc["final_state"] and
+            [ic[0]["speed"]["label"], ic[0]["force"]["label"]] == ["DiscSpeed", "PadForce"] and
+            ic[0]["speed"]["used"] == doc["frames_used"]["DiscSpeed"] and
+            ic[0]["force"]["used"] == doc["frames_used"]["PadForce"] and
+            ic[0]["speed"]["rejected"]["crc"] == doc["rejected"]["e2e_wrong_crc"]["DiscSpeed"] and
+            ic[0]["force"]["rejected"]["crc"] == doc["rejected"]["e2e_wrong_crc"]["PadForce"] and
+            ic[0]["speed"]["rejected"]["dlc"] == doc["rejected"]["bad_dlc"]["DiscSpeed"] and
+            ic[0]["speed"]["stale_events"] == doc["stale_events"]["DiscSpeed"],
+            name + ": inputs_by_corner agrees with state_time_s, frames_used and rejected")
+    R.check(doc["buses"]["interfaces"] == sorted({f[1] for f in read_log_ifaces(log)}) and
+            doc["reordered"]["frames"] == 0 and doc["time_backwards"] == 0,
+            name + ": buses lists the log's interface, nothing reordered in a plant log")
     # --no-output: no frames, the same document
     p2 = run(["replay", log, "--no-output", "--summary-json", "-"])
     doc2 = load_strict(p2.stdout.decode())

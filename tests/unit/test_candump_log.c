@@ -642,6 +642,84 @@ static void test_strerror_covers_every_code(void **state)
 	assert_string_equal(candump_strerror(CANDUMP_ERR_COUNT), "unknown error");
 }
 
+/* What the pending messages wrote to a temporary file, NUL-terminated. */
+static void pending_text(FILE *fp, char *buf, size_t len)
+{
+	size_t n;
+
+	assert_int_equal(fflush(fp), 0);
+	rewind(fp);
+	n = fread(buf, 1U, len - 1U, fp);
+	buf[n] = '\0';
+}
+
+static void test_pending_messages_wait_for_the_first_frame(void **state)
+{
+	static candump_pending_t p;
+	FILE *fp = tmpfile();
+	char buf[512];
+
+	(void)state;
+	assert_non_null(fp);
+	candump_pending_init(&p, fp, "x.log");
+	candump_pending_report(&p, "x.log:%d: bad", 1);
+	candump_pending_report(&p, "x.log:%d: worse", 2);
+	pending_text(fp, buf, sizeof(buf));
+	assert_string_equal(buf, ""); /* held back */
+	candump_pending_frame(&p);
+	candump_pending_frame(&p); /* once only */
+	candump_pending_report(&p, "x.log:%d: after", 4);
+	assert_false(candump_pending_no_frames(&p));
+	pending_text(fp, buf, sizeof(buf));
+	assert_string_equal(buf, "x.log:1: bad\nx.log:2: worse\nx.log:4: after\n");
+	fclose(fp);
+}
+
+static void test_pending_without_a_frame_is_one_line(void **state)
+{
+	static candump_pending_t p;
+	FILE *fp = tmpfile();
+	char buf[512];
+	unsigned i;
+
+	(void)state;
+	assert_non_null(fp);
+	candump_pending_init(&p, fp, "README.md");
+	for (i = 0U; i < 1000U; i++) {
+		candump_pending_report(&p, "README.md:%u: not a frame", i + 1U);
+	}
+	assert_true(candump_pending_no_frames(&p));
+	pending_text(fp, buf, sizeof(buf));
+	assert_string_equal(buf, "no CAN frames in README.md\n");
+	fclose(fp);
+}
+
+static void test_pending_beyond_its_room_is_counted(void **state)
+{
+	static candump_pending_t p;
+	FILE *fp = tmpfile();
+	char buf[4096];
+	char want[4096];
+	size_t off = 0U;
+	unsigned i;
+
+	(void)state;
+	assert_non_null(fp);
+	candump_pending_init(&p, fp, "y.log");
+	for (i = 0U; i < CANDUMP_PENDING_MAX + 3U; i++) {
+		candump_pending_report(&p, "y.log:%u: bad", i + 1U);
+	}
+	candump_pending_frame(&p);
+	for (i = 0U; i < CANDUMP_PENDING_MAX; i++) {
+		off += (size_t)snprintf(want + off, sizeof(want) - off, "y.log:%u: bad\n", i + 1U);
+	}
+	(void)snprintf(want + off, sizeof(want) - off,
+		       "y.log: 3 more malformed lines before the first frame\n");
+	pending_text(fp, buf, sizeof(buf));
+	assert_string_equal(buf, want);
+	fclose(fp);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -667,6 +745,9 @@ int main(void)
 		cmocka_unit_test(test_writer_parser_round_trip_random_frames),
 		cmocka_unit_test(test_reader_lines_numbers_long_lines_and_nul),
 		cmocka_unit_test(test_strerror_covers_every_code),
+		cmocka_unit_test(test_pending_messages_wait_for_the_first_frame),
+		cmocka_unit_test(test_pending_without_a_frame_is_one_line),
+		cmocka_unit_test(test_pending_beyond_its_room_is_counted),
 	};
 
 	return cmocka_run_group_tests_name("candump_log", tests, NULL, NULL);
