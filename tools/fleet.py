@@ -358,7 +358,7 @@ def main():
     args.sim = os.path.abspath(args.sim)
     args.calib = os.path.abspath(args.calib) if args.calib else None
     if args.calib:  # one clear error instead of the same one for every log
-        chk = subprocess.run([args.sim, "replay", "-", "--no-output", "--calib", args.calib],
+        chk = subprocess.run([args.sim, "calib-check", args.calib],
                              stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
                              stderr=subprocess.PIPE)
         if chk.returncode != 0:
