@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """Acceptance sweep of tools/vehicle_calib.py over real community DBC files
-(../shared/realcan/dbc beside the repository; a counted skip where it is
-absent): every integer signal of 1..32 bits of every file, made into a
+(the dbc/ folder of the realcan collection of real vehicle files beside the
+repository; a counted skip where it is absent): every integer signal of 1..32 bits of every file, made into a
 speed input with --speed-unit km/h beside a fixed force input of the same
 file (--force-unit N), either sets up (the written file passes
 `squeal-sim calib-check`, run here once more) or is refused with one line.
@@ -69,7 +69,7 @@ def run(vc, argv):
 def main():
     r = vehref.Results()
     if not os.path.isdir(REALCAN):
-        print("SKIP: realcan sweep (no ../shared/realcan beside the repository)")
+        print("SKIP: realcan sweep (no realcan collection beside the repository)")
         print("RESULT: 0 passed, 0 failed, 1 skipped")
         return 0
     if not vehref.has_calib_check(CHECKER):
