@@ -10,8 +10,9 @@
 #   tests/vehicle/test_vehicle_crosscheck.py  decode --calib --inputs-csv == canmatrix, random frames
 #   tests/vehicle/test_vehicle_e2e.py       drive -> replay --calib -> outputs vs the reference
 #   tests/vehicle/test_vehicle_unseen.py    issue 11's Done-when layout (tests/vehicle/unseen/)
-#   tests/vehicle/test_realcan_sweep.py     every integer signal of the real DBC files in
-#                                           ../shared/realcan (a counted skip without them)
+#   tests/vehicle/test_realcan_sweep.py     every integer signal of the real DBC files of the
+#                                           realcan collection beside the repository (a counted
+#                                           skip without it)
 # The crosscheck, e2e and unseen tests run the sanitizer builds of squeal-sim
 # (float and fixed), each also as the tool's calib-check; the sweep runs
 # build/host/squeal-sim, the tool's default checker.

@@ -38,6 +38,9 @@ NAME = r"[A-Za-z_][A-Za-z0-9_]*"
 STR = r'"(?:[^"\\]|\\.)*"'
 EXT_FLAG = 0x80000000
 BLOCK_KINDS = ("BO_", "SG_")   # a bad one of these takes its whole message along
+MULTILINE = ("CM_", "BA_", "BA_DEF_", "BA_DEF_DEF_", "BA_DEF_REL_", "BA_REL_", "EV_")
+STARTS = re.compile(r"^\s*(?:BO_|SG_|CM_|BA_|BA_DEF_|BA_DEF_DEF_|VAL_|VAL_TABLE_|SG_MUL_VAL_|SIG_VALTYPE_|"
+                    r"BO_TX_BU_|EV_|BU_|BS_|NS_|VERSION|SIG_GROUP_) ")
 
 GRAMMAR = {
     "BO_": re.compile(r"^BO_ +(\d+) +(%s) *: *(\d+) +(%s)\s*$" % (NAME, NAME)),
@@ -97,7 +100,11 @@ def _statements(lines):
             out.append(Statement(first, i, "NS_"))
             i += 1
             continue
-        while _open_quote(text) and i + 1 < n:
+        # only comments and attribute texts run over lines; a quote left open
+        # elsewhere (a bad line) ends with its line, and so does one before
+        # a line that starts a statement
+        while (_open_quote(text) and i + 1 < n and text.split(None, 1)[0] in MULTILINE
+               and not STARTS.match(lines[i + 1])):
             i += 1
             text += "\n" + lines[i].rstrip("\r")
         out.append(Statement(first, i, text))

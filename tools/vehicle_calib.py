@@ -409,7 +409,7 @@ def build_input(dbc, ref, role, c, args, log_frames, manual, notes):
          "min_dlc": int(frame.size), "start_bit": dbc_start_bit(sig), "length": int(sig.size),
          "byte_order": order(sig), "signed": bool(sig.is_signed), "factor": factor, "offset": offset,
          "unit": unit}
-    if len(cid_text) <= SIGNAL_MAX:
+    if re.match(r"^[!-~]{1,%d}$" % SIGNAL_MAX, cid_text):   # the key takes 1..63 printable non-blanks
         d["signal"] = cid_text
     for k, (sel, (lo, hi)) in enumerate(conds):
         p = "mux" if k == 0 else "mux2"

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """Acceptance sweep of tools/vehicle_calib.py over real community DBC files
-(../shared/realcan/dbc beside the repository; a counted skip where it is
-absent): every integer signal of 1..32 bits of every file, made into a
+(the dbc/ folder of the realcan collection of real vehicle files beside the
+repository; a counted skip where it is absent): every integer signal of 1..32 bits of every file, made into a
 speed input with --speed-unit km/h beside a fixed force input of the same
 file (--force-unit N), either sets up (the written file passes
 `squeal-sim calib-check`, run here once more) or is refused with one line.
@@ -19,6 +19,7 @@ import contextlib
 import hashlib
 import io
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -43,6 +44,18 @@ def candidates(db):
     return out
 
 
+def reason_of(err):
+    """A refusal line without its file, line and signal: what it says."""
+    why = err.strip()
+    why = why[len("vehicle_calib.py: "):] if why.startswith("vehicle_calib.py: ") else why
+    if why.startswith("the firmware refuses the calibration: "):
+        rest = why[len("the firmware refuses the calibration: "):]
+        return "calib-check: " + re.sub(r"^\S+?:\d+: ", "", rest)[:70]
+    why = re.sub(r"^--(?:speed|force) \S+: ", "", why)
+    why = re.sub(r"^\S+\.dbc:\d+: ", "", why)
+    return re.sub(r"\d+", "N", why)[:70]
+
+
 def run(vc, argv):
     err, out = io.StringIO(), io.StringIO()
     try:
@@ -56,7 +69,7 @@ def run(vc, argv):
 def main():
     r = vehref.Results()
     if not os.path.isdir(REALCAN):
-        print("SKIP: realcan sweep (no ../shared/realcan beside the repository)")
+        print("SKIP: realcan sweep (no realcan collection beside the repository)")
         print("RESULT: 0 passed, 0 failed, 1 skipped")
         return 0
     if not vehref.has_calib_check(CHECKER):
@@ -92,19 +105,24 @@ def main():
             if not name.lower().endswith(".dbc"):
                 continue
             path = os.path.join(REALCAN, name)
-            db = vehref.load_dbc(path)
+            # the signals as the tool reads the file (canmatrix alone hands the signals
+            # of a refused BO_ line to the message before it)
+            try:
+                db = dt.load(path, [])[0]
+            except dt.DbcRefusal as e:
+                r.check(False, "%s: the file reads: %s" % (name, e))
+                continue
             cands = candidates(db)
             force = None
-            for ref, s, f in cands:   # the first 8..32-bit plain signal that sets up as a force
-                if s.size < 8 or s.mux_val is not None or s.is_multiplexer:
-                    continue
-                speed = next((c for c in cands if c[0] != ref), None)
-                if speed is None:
-                    continue
-                rc, _ = run(vc, ["--dbc", path, "--corner", "FL", "--speed", speed[0], "--speed-unit", "km/h",
-                                 "--force", ref, "--force-unit", "N", "--period-ms", "10", "-o", out])
-                if rc == 0:
-                    force = ref
+            plain = [c for c in cands if c[1].size >= 8 and c[1].mux_val is None and not c[1].is_multiplexer]
+            for ref, s, f in plain[:60]:   # the first 8..32-bit plain signal that sets up as a force
+                for speed in [c for c in plain if c[0] != ref][:8]:   # beside a speed that sets up
+                    rc, _ = run(vc, ["--dbc", path, "--corner", "FL", "--speed", speed[0], "--speed-unit", "km/h",
+                                     "--force", ref, "--force-unit", "N", "--period-ms", "10", "-o", out])
+                    if rc == 0:
+                        force = ref
+                        break
+                if force is not None:
                     break
             if not r.check(force is not None, "%s: a force signal that sets up" % name):
                 continue
@@ -128,9 +146,7 @@ def main():
                     first_bad.append((ref, "written but refused: " + p.stderr.decode("utf-8", "replace")[:200]))
                 elif rc == 1 and err.count("\n") == 1 and "Traceback" not in err and not os.path.exists(out):
                     refused += 1
-                    why = err.split(": ", 2)[-1]
-                    reasons[why.split(":")[0][:60] if "firmware refuses" not in why
-                            else "calib-check: " + why.split(": ", 2)[-1].split(":", 1)[-1][:60]] += 1
+                    reasons[reason_of(err)] += 1
                 else:
                     bad += 1
                     first_bad.append((ref, rc, err[:300]))

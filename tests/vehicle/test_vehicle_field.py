@@ -262,6 +262,26 @@ def check_tolerant(r, tmp):
         f.write("\n".join(lines[:k] + [" SG_ BS7_Stillstand : 28|1@1+ (1,0 [0|1] \"\" GW"] + lines[k + 1:]) + "\n")
     refused(r, "bad SG_ line in the requested message", ["--dbc", broken, "--corner", "FL"] + SPEED + PRESS,
             ["broken_req.dbc:%d: not a valid SG_ statement, in message Brems_7" % (k + 1)])
+    # a bad VAL_ of a requested message refuses (its codes matter), a bad comment of one is skipped
+    k = lines.index('VAL_ 1176 BS7_Druckvalid 0 "invalid" 1 "valid" ;')
+    badval = os.path.join(tmp, "badval.dbc")
+    with open(badval, "w", encoding="latin-1") as f:
+        f.write("\n".join(lines[:k] + ['VAL_ 1176 BS7_Druckvalid 0 "invalid 1 "valid" ;'] + lines[k + 1:]) + "\n")
+    refused(r, "bad VAL_ of the requested message", ["--dbc", badval, "--corner", "FL"] + SPEED + PRESS,
+            ["badval.dbc:%d: not a valid VAL_ statement, of message Brems_7 which is asked for" % (k + 1)])
+    _, _, notes, _ = calib(r, "bad comment of the requested message", base)
+    r.check(any("field_esc.dbc:%d: skipped (not a valid CM_ statement)" % cm_line in x for x in notes),
+            "a bad comment of a requested message (Brems_7) is skipped, not refused")
+    # a quote left open in a bad line of another message ends with its line
+    k = lines.index('VAL_ 535 WhlRad_FR 32766 "Unknown" 0 "Stopped" ;')
+    openq = os.path.join(tmp, "openquote.dbc")
+    with open(openq, "w", encoding="latin-1") as f:
+        f.write("\n".join(lines[:k] + ['VAL_ 1040 VehSpd_Disp_Stat 0 "Valid 1 "Invalid" ;'] + lines[k:]) + "\n")
+    inputs, _, notes, _ = calib(r, "an open quote", ["--dbc", openq, "--corner", "FL"] + SPEED + PRESS)
+    r.check(na_of(by_signal(inputs, "WhlRad.WhlRad_FR")) == [32766]
+            and any("openquote.dbc:%d: skipped (not a valid VAL_ statement)" % (k + 1) in x for x in notes),
+            "a bad VAL_ with an open quote is skipped alone: the next line is still read (%s)"
+            % [x for x in notes if "openquote" in x])
     # the requested signals decode as canmatrix decodes them from a hand-fixed copy
     fixed = os.path.join(tmp, "fixed.dbc")
     drop = set()
