@@ -435,7 +435,9 @@ static void put_le(uint8_t *p, uint64_t v, uint32_t size)
 	uint32_t i;
 
 	for (i = 0U; i < size; i++) {
-		p[i] = (uint8_t)(v >> (8U * i));
+		const uint32_t sh = 8U * i;
+
+		p[i] = (uint8_t)(v >> sh);
 	}
 }
 
@@ -445,7 +447,9 @@ static uint64_t get_le(const uint8_t *p, uint32_t size)
 	uint32_t i;
 
 	for (i = 0U; i < size; i++) {
-		v |= (uint64_t)p[i] << (8U * i);
+		const uint32_t sh = 8U * i;
+
+		v |= (uint64_t)p[i] << sh;
 	}
 	return v;
 }
