@@ -287,8 +287,12 @@ static void field_set(calib_t *cal, const calib_field_t *f, uint32_t k, uint64_t
 	case 8U:
 		/* two's complement bits -> int64 without implementation-
 		 * defined conversion */
-		*(int64_t *)(void *)base = (raw64 <= (uint64_t)INT64_MAX) ?
-			(int64_t)raw64 : (-(int64_t)(~raw64) - 1);
+		{
+			const uint64_t inv = ~raw64;
+
+			*(int64_t *)(void *)base = (raw64 <= (uint64_t)INT64_MAX) ?
+				(int64_t)raw64 : (-(int64_t)inv - 1);
+		}
 		break;
 	default:
 		if (f->is_signed != 0U) {

@@ -16,7 +16,6 @@
 #define BITS_62 62U
 #define ADD_BITS 96U                 /* |add| clamped to 2^96 (see make)     */
 #define FAST_MUL_LIMIT ((int64_t)1 << 30)
-#define FAST_ADD_LIMIT ((int64_t)1 << 61)
 #define RAW_LIMIT ((int64_t)1 << 40) /* raw bounds clamp: beyond 32-bit raws */
 #define SCALE_MAX_BITS 31            /* one raw step must be < 2^31 outputs  */
 #define PPM 1000000U
@@ -349,10 +348,11 @@ bool input_dec_valid(input_dec_t d)
 /* d x 10^-e0 as an integer (d.exp >= e0) */
 static sbig_t dec_scaled(input_dec_t d, int32_t e0)
 {
+	const int32_t de = (int32_t)d.exp - e0;
 	sbig_t s;
 
 	big_set(&s.m, mag64(d.mant));
-	big_mul_pow10(&s.m, (uint32_t)((int32_t)d.exp - e0));
+	big_mul_pow10(&s.m, (uint32_t)de);
 	s.neg = (d.mant < 0);
 	return s;
 }
@@ -615,14 +615,21 @@ static void to_words(const big_t *mag, bool neg, int64_t *hi, uint64_t *lo)
 
 	if (neg && ((h | l) != 0U)) {
 		/* -x = ~x + 1: the high word takes the carry when l was 0 */
-		const uint64_t carry = (l == 0U) ? 1U : 0U;
+		uint64_t carry = 0U;
 
+		if (l == 0U) {
+			carry = 1U;
+		}
 		l = ~l + 1U;
 		h = ~h + carry;
 	}
 	/* two's complement bits -> int64 without implementation-defined
 	 * conversion */
-	*hi = (h <= (uint64_t)INT64_MAX) ? (int64_t)h : (-(int64_t)(~h) - 1);
+	{
+		const uint64_t nh = ~h;
+
+		*hi = (h <= (uint64_t)INT64_MAX) ? (int64_t)h : (-(int64_t)nh - 1);
+	}
 	*lo = l;
 }
 
@@ -812,9 +819,12 @@ static u128_t add128(u128_t a, u128_t b)
 
 static u128_t neg128(u128_t a)
 {
-	const uint64_t carry = (a.lo == 0U) ? 1U : 0U;
+	uint64_t carry = 0U;
 	u128_t r;
 
+	if (a.lo == 0U) {
+		carry = 1U;
+	}
 	r.lo = ~a.lo + 1U;
 	r.hi = ~a.hi + carry;
 	return r;
