@@ -771,7 +771,11 @@ int input_conv_make_share(int64_t f_mant, int8_t f_exp, int64_t o_mant, int8_t o
 		conv->add = (int64_t)big_low64(&on);
 		conv->add = (o_mant < 0) ? -conv->add : conv->add;
 	}
-	conv->qty = (uint8_t)input_unit_qty(unit);
+	{
+		const input_qty_t qty = input_unit_qty(unit); /* no cast of a call's result */
+
+		conv->qty = (uint8_t)qty;
+	}
 	return SQ_OK;
 }
 
