@@ -287,8 +287,12 @@ static void field_set(calib_t *cal, const calib_field_t *f, uint32_t k, uint64_t
 	case 8U:
 		/* two's complement bits -> int64 without implementation-
 		 * defined conversion */
-		*(int64_t *)(void *)base = (raw64 <= (uint64_t)INT64_MAX) ?
-			(int64_t)raw64 : (-(int64_t)(~raw64) - 1);
+		{
+			const uint64_t inv = ~raw64;
+
+			*(int64_t *)(void *)base = (raw64 <= (uint64_t)INT64_MAX) ?
+				(int64_t)raw64 : (-(int64_t)inv - 1);
+		}
 		break;
 	default:
 		if (f->is_signed != 0U) {
@@ -435,7 +439,9 @@ static void put_le(uint8_t *p, uint64_t v, uint32_t size)
 	uint32_t i;
 
 	for (i = 0U; i < size; i++) {
-		p[i] = (uint8_t)(v >> (8U * i));
+		const uint32_t sh = 8U * i;
+
+		p[i] = (uint8_t)(v >> sh);
 	}
 }
 
@@ -445,7 +451,9 @@ static uint64_t get_le(const uint8_t *p, uint32_t size)
 	uint32_t i;
 
 	for (i = 0U; i < size; i++) {
-		v |= (uint64_t)p[i] << (8U * i);
+		const uint32_t sh = 8U * i;
+
+		v |= (uint64_t)p[i] << sh;
 	}
 	return v;
 }

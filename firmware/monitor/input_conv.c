@@ -16,7 +16,6 @@
 #define BITS_62 62U
 #define ADD_BITS 96U                 /* |add| clamped to 2^96 (see make)     */
 #define FAST_MUL_LIMIT ((int64_t)1 << 30)
-#define FAST_ADD_LIMIT ((int64_t)1 << 61)
 #define RAW_LIMIT ((int64_t)1 << 40) /* raw bounds clamp: beyond 32-bit raws */
 #define SCALE_MAX_BITS 31            /* one raw step must be < 2^31 outputs  */
 #define PPM 1000000U
@@ -136,9 +135,10 @@ static void big_sub(big_t *a, const big_t *b)
 
 static void big_mul_u64(big_t *a, uint64_t v)
 {
-	big_t hi = *a;
+	big_t hi;
 	uint32_t i;
 
+	hi = *a;
 	big_mul_u32(a, (uint32_t)v);
 	big_mul_u32(&hi, (uint32_t)(v >> 32));
 	HAL_REQUIRE(hi.w[BIG_LIMBS - 1U] == 0U);
@@ -159,19 +159,16 @@ static void big_mul_big64(big_t *a, const big_t *b)
 
 static void big_mul_pow10(big_t *a, uint32_t n)
 {
+	/* in steps of at most 10^9, the largest power of ten below 2^32 */
+	static const uint32_t pow10[10] = { 1U, 10U, 100U, 1000U, 10000U, 100000U, 1000000U,
+					    10000000U, 100000000U, 1000000000U };
 	uint32_t left = n;
 	uint32_t guard;
 
-	/* in steps of 10^9, the largest power of ten below 2^32 */
 	for (guard = 0U; (left > 0U) && (guard < 64U); guard++) {
-		uint32_t p = 1U;
-		uint32_t k;
 		const uint32_t step = (left > 9U) ? 9U : left;
 
-		for (k = 0U; k < step; k++) {
-			p *= 10U;
-		}
-		big_mul_u32(a, p);
+		big_mul_u32(a, pow10[step]);
 		left -= step;
 	}
 }
@@ -274,11 +271,13 @@ static void big_div_round(const big_t *n, const big_t *d, big_t *q)
 /* binary gcd of two non-zero values (each step drops a bit of one) */
 static void big_gcd(const big_t *x, const big_t *y, big_t *g)
 {
-	big_t a = *x;
-	big_t b = *y;
+	big_t a;
+	big_t b;
 	uint32_t k = 0U;
 	uint32_t guard;
 
+	a = *x;
+	b = *y;
 	HAL_REQUIRE(!big_is_zero(&a) && !big_is_zero(&b));
 	if ((big_bitlen(&a) <= 64U) && (big_bitlen(&b) <= 64U)) {
 		/* Euclid in 64 bits: fewer than 93 steps below 2^64 */
@@ -349,10 +348,11 @@ bool input_dec_valid(input_dec_t d)
 /* d x 10^-e0 as an integer (d.exp >= e0) */
 static sbig_t dec_scaled(input_dec_t d, int32_t e0)
 {
+	const int32_t de = (int32_t)d.exp - e0;
 	sbig_t s;
 
 	big_set(&s.m, mag64(d.mant));
-	big_mul_pow10(&s.m, (uint32_t)((int32_t)d.exp - e0));
+	big_mul_pow10(&s.m, (uint32_t)de);
 	s.neg = (d.mant < 0);
 	return s;
 }
@@ -435,9 +435,11 @@ int input_dec_cmp(input_dec_t a, input_dec_t b)
 /* floor or ceil of (x - o) / f for the decimal x, clamped */
 static int64_t bound_of(input_dec_t x, const sbig_t *o, const sbig_t *f, int32_t e0, bool up)
 {
-	const sbig_t v = dec_scaled(x, e0);
-	const sbig_t n = sbig_sub(&v, o);
+	sbig_t v;
+	sbig_t n;
 
+	v = dec_scaled(x, e0);
+	n = sbig_sub(&v, o);
 	return sbig_div_clamped(&n, f, up);
 }
 
@@ -612,12 +614,22 @@ static void to_words(const big_t *mag, bool neg, int64_t *hi, uint64_t *lo)
 	uint64_t l = big_low64(mag);
 
 	if (neg && ((h | l) != 0U)) {
+		/* -x = ~x + 1: the high word takes the carry when l was 0 */
+		uint64_t carry = 0U;
+
+		if (l == 0U) {
+			carry = 1U;
+		}
 		l = ~l + 1U;
-		h = ~h + ((l == 0U) ? 1U : 0U);
+		h = ~h + carry;
 	}
 	/* two's complement bits -> int64 without implementation-defined
 	 * conversion */
-	*hi = (h <= (uint64_t)INT64_MAX) ? (int64_t)h : (-(int64_t)(~h) - 1);
+	{
+		const uint64_t nh = ~h;
+
+		*hi = (h <= (uint64_t)INT64_MAX) ? (int64_t)h : (-(int64_t)nh - 1);
+	}
 	*lo = l;
 }
 
@@ -759,7 +771,11 @@ int input_conv_make_share(int64_t f_mant, int8_t f_exp, int64_t o_mant, int8_t o
 		conv->add = (int64_t)big_low64(&on);
 		conv->add = (o_mant < 0) ? -conv->add : conv->add;
 	}
-	conv->qty = (uint8_t)input_unit_qty(unit);
+	{
+		const input_qty_t qty = input_unit_qty(unit); /* no cast of a call's result */
+
+		conv->qty = (uint8_t)qty;
+	}
 	return SQ_OK;
 }
 
@@ -807,10 +823,14 @@ static u128_t add128(u128_t a, u128_t b)
 
 static u128_t neg128(u128_t a)
 {
+	uint64_t carry = 0U;
 	u128_t r;
 
+	if (a.lo == 0U) {
+		carry = 1U;
+	}
 	r.lo = ~a.lo + 1U;
-	r.hi = ~a.hi + ((r.lo == 0U) ? 1U : 0U);
+	r.hi = ~a.hi + carry;
 	return r;
 }
 
@@ -850,7 +870,12 @@ static uint64_t div128by64(uint64_t hi, uint64_t lo, uint64_t d)
 	d <<= s;
 	vn1 = d >> 32;
 	vn0 = d & 0xFFFFFFFFU;
-	un32 = (s == 0U) ? hi : ((hi << s) | (lo >> (64U - s)));
+	un32 = hi;
+	if (s != 0U) {
+		const uint32_t rs = 64U - s;
+
+		un32 = (hi << s) | (lo >> rs);
+	}
 	un10 = lo << s;
 	un1 = un10 >> 32;
 	un0 = un10 & 0xFFFFFFFFU;

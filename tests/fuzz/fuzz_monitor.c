@@ -89,6 +89,7 @@ static void vehicle_map(calib_t *cal)
 	pr->unit = (uint8_t)INPUT_UNIT_BAR;
 	pr->mux = (can_signal_t){ 12U, 2U, (uint8_t)CAN_SIGNAL_INTEL, 0U };
 	pr->mux_value = 1U;
+	pr->mux_value_max = 1U; /* the selector range is the one page */
 	pr->na_raw = 0xFFFU;
 	pr->protection = (uint8_t)CALIB_PROT_P02;
 	for (i = 0U; i < CALIB_DATA_ID_LIST_LEN; i++) {
