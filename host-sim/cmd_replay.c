@@ -139,7 +139,6 @@ static const char *const fault_bit_names[N_FAULT_BITS] = {
 	"stale", "e2e", "implausible", "never_seen"
 };
 typedef struct {
-	uint64_t reason[2][INPUT_RX_REASON_COUNT]; /* [speed, force][reason] */
 	uint64_t state_us[N_STATES];
 	uint64_t fault_us[2][N_FAULT_BITS];
 	uint64_t fault_other_us;   /* FAULT without an input fault (calibration, platform) */
@@ -612,47 +611,6 @@ static bool bus_of_frame(replay_t *r, const held_t *h, const hal_can_frame_t *hf
 	return true;
 }
 
-/* What the input stage makes of a frame for one input of corner c, from
- * the monitor's own E2E and rate state before it takes the frame (the
- * same functions in the same order as monitor.c's input_frame). */
-static void count_reason(corner_stats_t *cs, unsigned j, const input_rx_cfg_t *cfg,
-			 const input_t *in, const hal_can_frame_t *f)
-{
-	e2e_p01_rx_t e2e = in->e2e;
-	bool has_prev = in->has_prev_raw;
-	int64_t prev = in->prev_raw;
-	bool id_only = false;
-	input_rx_result_t res;
-	input_rx_reason_t why;
-
-	if (!input_rx_matches(cfg, f, &id_only)) {
-		return;
-	}
-	res = input_rx_frame(cfg, &e2e, f);
-	why = (input_rx_reason_t)res.reason;
-	if ((why == INPUT_RX_OK) && !input_rx_plausible(cfg, &has_prev, &prev, res.value)) {
-		why = INPUT_RX_IMPLAUSIBLE;
-	}
-	if ((uint32_t)why < (uint32_t)INPUT_RX_REASON_COUNT) {
-		cs->reason[j][why]++;
-	}
-}
-
-static void count_reasons(replay_t *r, const hal_can_frame_t *f)
-{
-	uint32_t k;
-
-	if ((f->flags & HAL_CAN_FLAG_ERR) != 0U) {
-		return;
-	}
-	for (k = 0U; (k < squeal_app_corner_count()) && (k < CALIB_MAX_CORNERS); k++) {
-		const monitor_t *c = squeal_app_corner(k);
-
-		count_reason(&r->cs[k], 0U, &c->speed_rx, &c->speed, f);
-		count_reason(&r->cs[k], 1U, &c->force_rx, &c->force, f);
-	}
-}
-
 static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 {
 	const calib_t *cal = squeal_app_monitor()->cal;
@@ -707,9 +665,6 @@ static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 		return;
 	}
 	r->pushed++;
-	if (bus == cal->input_bus) {
-		count_reasons(r, &hf);
-	}
 	(void)squeal_app_poll();
 	after_poll(r);
 }
@@ -1109,7 +1064,7 @@ static void corner_summary(FILE *o, const replay_t *r, uint32_t k)
 		fprintf(o, "    %s: frames %u, used %u, rejected", label, cnt[j]->frames, cnt[j]->used);
 		for (q = 1U; q < (unsigned)INPUT_RX_REASON_COUNT; q++) {
 			fprintf(o, " %s %llu", input_rx_reason_name((input_rx_reason_t)q),
-				(unsigned long long)cs->reason[j][q]);
+				(unsigned long long)cnt[j]->verdict[q]);
 		}
 		fprintf(o, ", stale events %u\n", cnt[j]->stale_events);
 	}
@@ -1379,7 +1334,7 @@ static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
 			json_key(w, "rejected");
 			json_begin_object(w);
 			for (q = 1U; q < (unsigned)INPUT_RX_REASON_COUNT; q++) {
-				json_kv_u64(w, input_rx_reason_name((input_rx_reason_t)q), cs->reason[j][q]);
+				json_kv_u64(w, input_rx_reason_name((input_rx_reason_t)q), cnt[j]->verdict[q]);
 			}
 			json_end_object(w);
 			json_kv_u64(w, "stale_events", cnt[j]->stale_events);

@@ -247,6 +247,7 @@ static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 
 	sat_inc(&in->count.frames);
 	sat_inc(verdict_counter(&in->count, why));
+	sat_inc(&in->count.verdict[r.reason]);
 	in->faults |= fault;
 	if ((fault != INPUT_FAULT_E2E) && (r.e2e_status != (uint8_t)E2E_P01_STATUS_NONEWDATA)) {
 		sat_add(&in->count.e2e_lost, r.lost);

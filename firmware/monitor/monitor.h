@@ -66,6 +66,9 @@ typedef struct {
 	uint32_t e2e_lost;        /* frames reported lost by OKSOMELOST (sum)     */
 	uint32_t implausible;     /* not available / qualifier / range / rate     */
 	uint32_t stale_events;    /* transitions into stale                       */
+	/* frames per verdict of the input stage, by input_rx_reason_t
+	 * (verdict[INPUT_RX_OK] == used): what replay and decode report */
+	uint32_t verdict[INPUT_RX_REASON_COUNT];
 } input_counters_t;
 
 /* One conditioned input (speed or force). */
