@@ -241,17 +241,13 @@ void squeal_model_log_terms(const squeal_params_t *p,
 		ln_field(p->delta_mu, SQUEAL_Q_MU);
 	/* s = a v0: Q24 * Q20 = Q44 -> Q32; < 2000 * 2^32 by the domain */
 	t->s = ((int64_t)p->slope_spm * point->v0_mps) >> 12;
-	t->stable_lhs = 0;
-	t->stable_rhs = 0;
-	t->stable_dh = 0;
-	t->has_border = false;
+	t->has_border = false; /* the stable border: squeal_model_stable_border */
 }
 
-void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+/* The stable border of the criterion into t (one source for the
+ * classification, which inlines it, and squeal_model_stable_border). */
+static inline void stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
 {
-	if (t->has_border) {
-		return;
-	}
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
 		/* ln 2Q >= ln(1 + s^2/8); s in Q16 keeps s^2 in 64 bits */
 		const uint64_t s16 = (uint64_t)t->s >> 16;
@@ -282,6 +278,13 @@ void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criter
 		t->stable_dh = dh;
 	}
 	t->has_border = true;
+}
+
+void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+{
+	if (!t->has_border) {
+		stable_border(t, criterion);
+	}
 }
 
 void squeal_model_classify_sliding(const squeal_params_t *p,
@@ -329,7 +332,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 		out->state = SQUEAL_STATE_UNSTABLE;
 		return;
 	}
-	squeal_model_stable_border(t, criterion);
+	stable_border(t, criterion);
 	stable = t->stable_lhs >= t->stable_rhs;
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
 

@@ -72,7 +72,8 @@ typedef struct {
 void squeal_model_bessel_g(float x, float *g_out, float *dg_out, float *h_out);
 #endif
 
-/* c2, s (and the fixed build's logarithms); has_border false. */
+/* c2, s (and the fixed build's logarithms); has_border false (the
+ * stable_* fields are set only by squeal_model_stable_border). */
 void squeal_model_log_terms(const squeal_params_t *p,
 			    const squeal_point_t *point,
 			    squeal_log_terms_t *t);

@@ -90,6 +90,7 @@ int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
 		rc = SQ_EINVAL;
 	}
 	calib_corner_params(&me->corner, &me->params);
+	calib_corner_sd(&me->corner, &me->sd);
 	me->sigma_on = sd_nonzero(&me->corner.sd);
 	me->margin_q16 = MODEL_MARGIN_NONE;
 	me->platform_faults = platform_faults;
@@ -398,40 +399,38 @@ static void debounce(monitor_t *me, uint8_t cls)
  * One classification of the fresh input pair, with its uncertainty in the
  * same pass when deviations are calibrated (model_adapter_eval_sd: the
  * model's case and terms once, the corner's own criterion's borders).
- * *sig_ok: sig holds this classification's borders.
+ * sig->state is a class (STABLE, BISTABLE, UNSTABLE) when sig holds this
+ * classification's borders, INVALID when nothing was propagated.
  */
-static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig, bool *sig_ok)
+static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig)
 {
 	const int32_t v0 = me->speed.value;
 	const int32_t force = me->force.value;
-	uint8_t cls = (uint8_t)SQUEAL_STATE_NOT_SLIDING;
-	int rc;
+	uint8_t cls;
+	int rc = SQ_OK;
 
 	sat_inc(&me->count.classifications);
 	me->speed.fresh = false;
 	me->force.fresh = false;
-	*sig_ok = false;
+	sig->state = SQUEAL_STATE_INVALID;
 	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
+		/* below the thresholds: not sliding, without the model */
 		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
-		me->have_eval = true;
+	} else if (me->sigma_on) {
+		rc = model_adapter_eval_sd(&me->params, &me->sd, (squeal_criterion_t)me->corner.criterion,
+					   v0, force, &me->eval, sig);
 	} else {
-		squeal_param_sd_t sd;
-
-		if (me->sigma_on) {
-			calib_corner_sd(&me->corner, &sd);
-		}
-		rc = model_adapter_eval_sd(&me->params, me->sigma_on ? &sd : NULL,
-					   (squeal_criterion_t)me->corner.criterion, v0, force,
-					   &me->eval, me->sigma_on ? sig : NULL);
-		*sig_ok = me->sigma_on && (rc == SQ_OK) && (sig->state != SQUEAL_STATE_INVALID) &&
-			  (sig->state != SQUEAL_STATE_NOT_SLIDING);
-		me->have_eval = rc == SQ_OK;
-		if (rc != SQ_OK) {
-			sat_inc(&me->count.model_invalid);
-			cls = MONITOR_STATE_FAULT;
-		} else {
-			cls = (uint8_t)me->eval.state;
-		}
+		rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
+					v0, force, &me->eval);
+	}
+	if (rc != SQ_OK) {
+		/* the model refused the point: no class */
+		sat_inc(&me->count.model_invalid);
+		me->have_eval = false;
+		cls = MONITOR_STATE_FAULT;
+	} else {
+		me->have_eval = true;
+		cls = (uint8_t)me->eval.state;
 	}
 	return cls;
 }
@@ -829,12 +828,16 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 		me->have_eval = false;
 		update_uncertainty(me, NULL, false);
 	} else if (may_classify && me->speed.fresh && me->force.fresh) {
-		squeal_sigma_result_t sig = { 0 };
-		bool sig_ok;
-		const uint8_t cls = classify_pair(me, &sig, &sig_ok);
+		squeal_sigma_result_t sig;
+		const uint8_t cls = classify_pair(me, &sig);
 
 		debounce(me, cls);
-		update_uncertainty(me, &sig, sig_ok);
+		if (me->sigma_on) {
+			/* without deviations nothing is uncertain and there is
+			 * no margin (as set at start, and on every fault); sig
+			 * holds borders when it is a class's (sliding, valid) */
+			update_uncertainty(me, &sig, sig.state <= SQUEAL_STATE_UNSTABLE);
+		}
 	} else {
 		/* no fault and no new input pair: nothing to classify */
 	}
