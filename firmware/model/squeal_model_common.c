@@ -64,8 +64,8 @@ void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state)
 	out->basin_ratio = 0;
 }
 
-squeal_case_t squeal_model_case(const squeal_params_t *params,
-				const squeal_point_t *point)
+/* Which domain rule the calibration and point fall under. */
+static squeal_case_t model_case(const squeal_params_t *params, const squeal_point_t *point)
 {
 	if ((squeal_model_params_check(params) != SQ_OK) ||
 	    (squeal_model_point_check(point) != SQ_OK)) {
@@ -84,7 +84,7 @@ squeal_case_t squeal_model_case(const squeal_params_t *params,
 }
 
 /*
- * The domain rules of squeal_model.h (squeal_model_case); the sliding case
+ * The domain rules of squeal_model.h (model_case); the sliding case
  * itself is each build's squeal_model_classify_sliding(). One source for
  * both entry points below, inlined into each (the 1 ms step calls
  * squeal_model_classify: no extra call layer).
@@ -94,7 +94,7 @@ static inline squeal_case_t classify_case(const squeal_params_t *params,
 					  squeal_criterion_t criterion,
 					  squeal_result_t *out, squeal_log_terms_t *t)
 {
-	squeal_case_t c = squeal_model_case(params, point);
+	squeal_case_t c = model_case(params, point);
 
 	if ((c == SQUEAL_CASE_INVALID) ||
 	    ((criterion != SQUEAL_CRITERION_EXACT) &&

@@ -167,25 +167,6 @@ static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
 		f->timestamp_us : me->now_us;
 }
 
-/*
- * The fault each verdict raises. A frame that fails its length or its
- * protection is an E2E fault; one that passed the protection but carries
- * no usable value ("not available", qualifier, range, step) makes the input
- * implausible until a usable value arrives; a repeated counter is no new
- * data, not an error: a frozen sender goes stale.
- */
-static const uint8_t verdict_fault[INPUT_RX_REASON_COUNT] = {
-	0U,                            /* ok        */
-	(uint8_t)INPUT_FAULT_E2E,      /* dlc       */
-	(uint8_t)INPUT_FAULT_E2E,      /* crc       */
-	(uint8_t)INPUT_FAULT_E2E,      /* counter   */
-	0U,                            /* repeated  */
-	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* na     */
-	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* qualifier */
-	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* range  */
-	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* step   */
-};
-
 /* The counter of each verdict. */
 static uint32_t *verdict_counter(input_counters_t *c, input_rx_reason_t why)
 {
@@ -240,6 +221,24 @@ static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64
 static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 			const hal_can_frame_t *f)
 {
+	/*
+	 * The fault each verdict raises. A frame that fails its length or its
+	 * protection is an E2E fault; one that passed the protection but carries
+	 * no usable value ("not available", qualifier, range, step) makes the input
+	 * implausible until a usable value arrives; a repeated counter is no new
+	 * data, not an error: a frozen sender goes stale.
+	 */
+	static const uint8_t verdict_fault[INPUT_RX_REASON_COUNT] = {
+		0U,                            /* ok        */
+		(uint8_t)INPUT_FAULT_E2E,      /* dlc       */
+		(uint8_t)INPUT_FAULT_E2E,      /* crc       */
+		(uint8_t)INPUT_FAULT_E2E,      /* counter   */
+		0U,                            /* repeated  */
+		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* na     */
+		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* qualifier */
+		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* range  */
+		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* step   */
+	};
 	/* the reason is an input_rx_reason_t below INPUT_RX_REASON_COUNT */
 	const input_rx_result_t r = input_rx_judge(cfg, &in->rx, f);
 	const input_rx_reason_t why = (input_rx_reason_t)r.reason;
