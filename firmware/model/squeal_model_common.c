@@ -64,8 +64,8 @@ void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state)
 	out->basin_ratio = 0;
 }
 
-squeal_case_t squeal_model_case(const squeal_params_t *params,
-				const squeal_point_t *point)
+/* Which domain rule the calibration and point fall under. */
+static squeal_case_t model_case(const squeal_params_t *params, const squeal_point_t *point)
 {
 	if ((squeal_model_params_check(params) != SQ_OK) ||
 	    (squeal_model_point_check(point) != SQ_OK)) {
@@ -83,12 +83,18 @@ squeal_case_t squeal_model_case(const squeal_params_t *params,
 	return SQUEAL_CASE_SLIDING;
 }
 
-squeal_case_t squeal_model_classify_case(const squeal_params_t *params,
-					 const squeal_point_t *point,
-					 squeal_criterion_t criterion,
-					 squeal_result_t *out, squeal_log_terms_t *t)
+/*
+ * The domain rules of squeal_model.h (model_case); the sliding case
+ * itself is each build's squeal_model_classify_sliding(). One source for
+ * both entry points below, inlined into each (the 1 ms step calls
+ * squeal_model_classify: no extra call layer).
+ */
+static inline squeal_case_t classify_case(const squeal_params_t *params,
+					  const squeal_point_t *point,
+					  squeal_criterion_t criterion,
+					  squeal_result_t *out, squeal_log_terms_t *t)
 {
-	squeal_case_t c = squeal_model_case(params, point);
+	squeal_case_t c = model_case(params, point);
 
 	if ((c == SQUEAL_CASE_INVALID) ||
 	    ((criterion != SQUEAL_CRITERION_EXACT) &&
@@ -106,10 +112,14 @@ squeal_case_t squeal_model_classify_case(const squeal_params_t *params,
 	return c;
 }
 
-/*
- * The domain rules of squeal_model.h (squeal_model_case); the sliding case
- * itself is each build's squeal_model_classify_sliding().
- */
+squeal_case_t squeal_model_classify_case(const squeal_params_t *params,
+					 const squeal_point_t *point,
+					 squeal_criterion_t criterion,
+					 squeal_result_t *out, squeal_log_terms_t *t)
+{
+	return classify_case(params, point, criterion, out, t);
+}
+
 int squeal_model_classify(const squeal_params_t *params,
 			  const squeal_point_t *point,
 			  squeal_criterion_t criterion,
@@ -118,6 +128,6 @@ int squeal_model_classify(const squeal_params_t *params,
 	squeal_log_terms_t t;
 
 	HAL_REQUIRE((params != NULL) && (point != NULL) && (out != NULL));
-	return (squeal_model_classify_case(params, point, criterion, out, &t) ==
-		SQUEAL_CASE_INVALID) ? SQ_EINVAL : SQ_OK;
+	return (classify_case(params, point, criterion, out, &t) == SQUEAL_CASE_INVALID) ?
+		SQ_EINVAL : SQ_OK;
 }

@@ -229,8 +229,9 @@ static int64_t cycle_ln_x(int64_t lq2, squeal_criterion_t criterion,
 	}
 }
 
-void squeal_model_log_terms(const squeal_params_t *p,
-			    const squeal_point_t *point,
+/* c2, s and the logarithms kept; has_border false (the stable_* fields
+ * are set only with it). */
+static void log_terms_fixed(const squeal_params_t *p, const squeal_point_t *point,
 			    squeal_log_terms_t *t)
 {
 	t->ln_a = ln_field(p->slope_spm, SQUEAL_Q_SLOPE);
@@ -241,17 +242,13 @@ void squeal_model_log_terms(const squeal_params_t *p,
 		ln_field(p->delta_mu, SQUEAL_Q_MU);
 	/* s = a v0: Q24 * Q20 = Q44 -> Q32; < 2000 * 2^32 by the domain */
 	t->s = ((int64_t)p->slope_spm * point->v0_mps) >> 12;
-	t->stable_lhs = 0;
-	t->stable_rhs = 0;
-	t->stable_dh = 0;
-	t->has_border = false;
+	t->has_border = false; /* the stable border: squeal_model_stable_border */
 }
 
-void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+/* The stable border of the criterion into t (one source for the
+ * classification, which inlines it, and squeal_model_stable_border). */
+static inline void stable_border_fixed(squeal_log_terms_t *t, squeal_criterion_t criterion)
 {
-	if (t->has_border) {
-		return;
-	}
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
 		/* ln 2Q >= ln(1 + s^2/8); s in Q16 keeps s^2 in 64 bits */
 		const uint64_t s16 = (uint64_t)t->s >> 16;
@@ -259,10 +256,11 @@ void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criter
 		/* (s/4) / (1 + s^2/8) in Q32: s/4 < 2^41 shifted up by 21, the
 		 * Q32 divisor (>= 2^32) down by 11 */
 		const uint64_t q = (((uint64_t)t->s >> 2) << 21) / (u >> 11);
+		const uint64_t one_minus_q = ((uint64_t)1 << 32) - q; /* q < 2^32 */
 
 		t->stable_lhs = t->c2 + t->s;
 		t->stable_rhs = fx_ln_u64(u, 32);
-		t->stable_dh = (int64_t)q - Q32_ONE;
+		t->stable_dh = -(int64_t)one_minus_q;
 	} else {
 		int64_t h;
 		int64_t dh;
@@ -284,6 +282,13 @@ void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criter
 	t->has_border = true;
 }
 
+void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+{
+	if (!t->has_border) {
+		stable_border_fixed(t, criterion);
+	}
+}
+
 void squeal_model_classify_sliding(const squeal_params_t *p,
 				   const squeal_point_t *point,
 				   squeal_criterion_t criterion,
@@ -299,7 +304,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 	bool stable;
 	bool sat;
 
-	squeal_model_log_terms(p, point, t);
+	log_terms_fixed(p, point, t);
 	ln_a = t->ln_a;
 	ln_w0 = t->ln_w0;
 	ln_force = t->ln_force;
@@ -329,7 +334,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 		out->state = SQUEAL_STATE_UNSTABLE;
 		return;
 	}
-	squeal_model_stable_border(t, criterion);
+	stable_border_fixed(t, criterion);
 	stable = t->stable_lhs >= t->stable_rhs;
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
 

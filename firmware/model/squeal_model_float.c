@@ -260,27 +260,23 @@ static void fill_cycle(const squeal_params_t *p, const squeal_point_t *pt,
 			       out, SQUEAL_SAT_BASIN);
 }
 
-void squeal_model_log_terms(const squeal_params_t *p,
-			    const squeal_point_t *point,
+/* c2, s; has_border false (the stable_* fields are set only with it). */
+static void log_terms_float(const squeal_params_t *p, const squeal_point_t *point,
 			    squeal_log_terms_t *t)
 {
 	t->s = p->slope_spm * point->v0_mps;
 	t->c2 = SQ_LN2F + sq_lnf(p->damping) + sq_lnf(p->omega0_radps) +
 		sq_lnf(p->mass_kg) - sq_lnf(p->slope_spm) -
 		sq_lnf(point->force_n) - sq_lnf(p->delta_mu);
-	t->stable_lhs = 0.0f;
-	t->stable_rhs = 0.0f;
-	t->stable_dh = 0.0f;
-	t->has_border = false;
+	t->has_border = false; /* the stable border: squeal_model_stable_border */
 }
 
-void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+/* The stable border of the criterion into t (one source for the
+ * classification, which inlines it, and squeal_model_stable_border). */
+static inline void stable_border_float(squeal_log_terms_t *t, squeal_criterion_t criterion)
 {
 	const float s = t->s;
 
-	if (t->has_border) {
-		return;
-	}
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
 		/* ln 2Q >= ln(1 + s^2/8) */
 		t->stable_lhs = t->c2 + s;
@@ -300,6 +296,13 @@ void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criter
 	t->has_border = true;
 }
 
+void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+{
+	if (!t->has_border) {
+		stable_border_float(t, criterion);
+	}
+}
+
 void squeal_model_classify_sliding(const squeal_params_t *p,
 				   const squeal_point_t *point,
 				   squeal_criterion_t criterion,
@@ -309,7 +312,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 	float lq2;
 	bool stable;
 
-	squeal_model_log_terms(p, point, t);
+	log_terms_float(p, point, t);
 	c2 = t->c2;
 	lq2 = c2 + t->s;
 	out->ln_q = lq2 - SQ_LN2F;
@@ -333,7 +336,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 		out->state = SQUEAL_STATE_UNSTABLE;
 		return;
 	}
-	squeal_model_stable_border(t, criterion);
+	stable_border_float(t, criterion);
 	stable = t->stable_lhs >= t->stable_rhs;
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
 	fill_cycle(p, point, lq2, criterion, out);

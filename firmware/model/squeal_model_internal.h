@@ -17,9 +17,6 @@ typedef enum {
 	SQUEAL_CASE_SLIDING      /* v0, N, a, dmu > 0: the borders exist    */
 } squeal_case_t;
 
-squeal_case_t squeal_model_case(const squeal_params_t *params,
-				const squeal_point_t *point);
-
 /* A result with this state, no flags and every value 0. */
 void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state);
 
@@ -71,11 +68,6 @@ typedef struct {
 /* G(x) = ln(2 I1(x)/x), G'(x) and (h_out may be NULL) H = G - x, x >= 0. */
 void squeal_model_bessel_g(float x, float *g_out, float *dg_out, float *h_out);
 #endif
-
-/* c2, s (and the fixed build's logarithms); has_border false. */
-void squeal_model_log_terms(const squeal_params_t *p,
-			    const squeal_point_t *point,
-			    squeal_log_terms_t *t);
 
 /* The stable border of `criterion` (exact or cubic) at t's point, once:
  * nothing when t->has_border is already set. */

@@ -90,7 +90,10 @@ int model_adapter_eval_sd(const squeal_params_t *params, const squeal_param_sd_t
 		force_mn = -1;
 	}
 	point_from_int(v0_umps, force_mn, &pt);
-	rc = squeal_sigma_classify(params, sd, &pt, criterion, &r, sig);
+	/* without deviations the classification alone (the 1 ms step's
+	 * common case: no propagation layer to pass through) */
+	rc = (sd == NULL) ? squeal_model_classify(params, &pt, criterion, &r) :
+		squeal_sigma_classify(params, sd, &pt, criterion, &r, sig);
 	out->state = r.state;
 	out->has = has_if(&r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0, MODEL_EVAL_HAS_HOPF_V0) |
 		   has_if(&r, SQUEAL_HAS_HOPF_FORCE, 0U, MODEL_EVAL_HAS_HOPF_FORCE) |

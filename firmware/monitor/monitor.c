@@ -90,6 +90,7 @@ int monitor_init_corner(monitor_t *me, const calib_t *cal, uint32_t k,
 		rc = SQ_EINVAL;
 	}
 	calib_corner_params(&me->corner, &me->params);
+	calib_corner_sd(&me->corner, &me->sd);
 	me->sigma_on = sd_nonzero(&me->corner.sd);
 	me->margin_q16 = MODEL_MARGIN_NONE;
 	me->platform_faults = platform_faults;
@@ -166,25 +167,6 @@ static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
 		f->timestamp_us : me->now_us;
 }
 
-/*
- * The fault each verdict raises. A frame that fails its length or its
- * protection is an E2E fault; one that passed the protection but carries
- * no usable value ("not available", qualifier, range, step) makes the input
- * implausible until a usable value arrives; a repeated counter is no new
- * data, not an error: a frozen sender goes stale.
- */
-static const uint8_t verdict_fault[INPUT_RX_REASON_COUNT] = {
-	0U,                            /* ok        */
-	(uint8_t)INPUT_FAULT_E2E,      /* dlc       */
-	(uint8_t)INPUT_FAULT_E2E,      /* crc       */
-	(uint8_t)INPUT_FAULT_E2E,      /* counter   */
-	0U,                            /* repeated  */
-	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* na     */
-	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* qualifier */
-	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* range  */
-	(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* step   */
-};
-
 /* The counter of each verdict. */
 static uint32_t *verdict_counter(input_counters_t *c, input_rx_reason_t why)
 {
@@ -239,6 +221,24 @@ static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64
 static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 			const hal_can_frame_t *f)
 {
+	/*
+	 * The fault each verdict raises. A frame that fails its length or its
+	 * protection is an E2E fault; one that passed the protection but carries
+	 * no usable value ("not available", qualifier, range, step) makes the input
+	 * implausible until a usable value arrives; a repeated counter is no new
+	 * data, not an error: a frozen sender goes stale.
+	 */
+	static const uint8_t verdict_fault[INPUT_RX_REASON_COUNT] = {
+		0U,                            /* ok        */
+		(uint8_t)INPUT_FAULT_E2E,      /* dlc       */
+		(uint8_t)INPUT_FAULT_E2E,      /* crc       */
+		(uint8_t)INPUT_FAULT_E2E,      /* counter   */
+		0U,                            /* repeated  */
+		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* na     */
+		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* qualifier */
+		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* range  */
+		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* step   */
+	};
 	/* the reason is an input_rx_reason_t below INPUT_RX_REASON_COUNT */
 	const input_rx_result_t r = input_rx_judge(cfg, &in->rx, f);
 	const input_rx_reason_t why = (input_rx_reason_t)r.reason;
@@ -399,40 +399,38 @@ static void debounce(monitor_t *me, uint8_t cls)
  * One classification of the fresh input pair, with its uncertainty in the
  * same pass when deviations are calibrated (model_adapter_eval_sd: the
  * model's case and terms once, the corner's own criterion's borders).
- * *sig_ok: sig holds this classification's borders.
+ * sig->state is a class (STABLE, BISTABLE, UNSTABLE) when sig holds this
+ * classification's borders, INVALID when nothing was propagated.
  */
-static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig, bool *sig_ok)
+static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig)
 {
 	const int32_t v0 = me->speed.value;
 	const int32_t force = me->force.value;
-	uint8_t cls = (uint8_t)SQUEAL_STATE_NOT_SLIDING;
-	int rc;
+	uint8_t cls;
+	int rc = SQ_OK;
 
 	sat_inc(&me->count.classifications);
 	me->speed.fresh = false;
 	me->force.fresh = false;
-	*sig_ok = false;
+	sig->state = SQUEAL_STATE_INVALID;
 	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
+		/* below the thresholds: not sliding, without the model */
 		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
-		me->have_eval = true;
+	} else if (me->sigma_on) {
+		rc = model_adapter_eval_sd(&me->params, &me->sd, (squeal_criterion_t)me->corner.criterion,
+					   v0, force, &me->eval, sig);
 	} else {
-		squeal_param_sd_t sd;
-
-		if (me->sigma_on) {
-			calib_corner_sd(&me->corner, &sd);
-		}
-		rc = model_adapter_eval_sd(&me->params, me->sigma_on ? &sd : NULL,
-					   (squeal_criterion_t)me->corner.criterion, v0, force,
-					   &me->eval, me->sigma_on ? sig : NULL);
-		*sig_ok = me->sigma_on && (rc == SQ_OK) && (sig->state != SQUEAL_STATE_INVALID) &&
-			  (sig->state != SQUEAL_STATE_NOT_SLIDING);
-		me->have_eval = rc == SQ_OK;
-		if (rc != SQ_OK) {
-			sat_inc(&me->count.model_invalid);
-			cls = MONITOR_STATE_FAULT;
-		} else {
-			cls = (uint8_t)me->eval.state;
-		}
+		rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
+					v0, force, &me->eval);
+	}
+	if (rc != SQ_OK) {
+		/* the model refused the point: no class */
+		sat_inc(&me->count.model_invalid);
+		me->have_eval = false;
+		cls = MONITOR_STATE_FAULT;
+	} else {
+		me->have_eval = true;
+		cls = (uint8_t)me->eval.state;
 	}
 	return cls;
 }
@@ -830,12 +828,16 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 		me->have_eval = false;
 		update_uncertainty(me, NULL, false);
 	} else if (may_classify && me->speed.fresh && me->force.fresh) {
-		squeal_sigma_result_t sig = { 0 };
-		bool sig_ok;
-		const uint8_t cls = classify_pair(me, &sig, &sig_ok);
+		squeal_sigma_result_t sig;
+		const uint8_t cls = classify_pair(me, &sig);
 
 		debounce(me, cls);
-		update_uncertainty(me, &sig, sig_ok);
+		if (me->sigma_on) {
+			/* without deviations nothing is uncertain and there is
+			 * no margin (as set at start, and on every fault); sig
+			 * holds borders when it is a class's (sliding, valid) */
+			update_uncertainty(me, &sig, sig.state <= SQUEAL_STATE_UNSTABLE);
+		}
 	} else {
 		/* no fault and no new input pair: nothing to classify */
 	}

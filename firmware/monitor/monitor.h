@@ -131,6 +131,7 @@ typedef struct {
 	input_rx_cfg_t speed_rx;     /* the inputs as configured for this corner */
 	input_rx_cfg_t force_rx;
 	squeal_params_t params;
+	squeal_param_sd_t sd;        /* the corner's deviations, model formats */
 	bool calib_invalid;          /* defaults in use because the stored block was bad */
 	uint32_t platform_faults;    /* HAL_FAULT_* from the HAL                 */
 	bool bus_off_seen;           /* latched until reset                      */
