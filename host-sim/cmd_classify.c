@@ -398,9 +398,12 @@ int cmd_classify(int argc, char **argv)
 	(void)sim_point_to_model(a.v0_mps, a.force_n, &point);
 	rc = squeal_model_classify(&params, &point, a.criterion, &result);
 	if ((rc == SQ_OK) && (a.calib_path != NULL)) {
-		/* the margin of the class reported (the exact criterion's
-		 * borders, as the monitor's) */
-		have_sig = (squeal_sigma_eval(&params, &sd, &point, &sig) == SQ_OK) &&
+		/* the margin of the class reported, on the borders of the
+		 * criterion classified with (as the monitor's corner does) */
+		squeal_result_t again;
+
+		have_sig = (squeal_sigma_classify(&params, &sd, &point, a.criterion, &again,
+						  &sig) == SQ_OK) &&
 			   (squeal_sigma_margin(&sig, result.state, &sig.margin_sigma) == SQ_OK);
 	}
 	if (a.json) {
