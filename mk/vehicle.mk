@@ -13,6 +13,9 @@
 #   tests/vehicle/test_realcan_sweep.py     every integer signal of the real DBC files of the
 #                                           realcan collection beside the repository (a counted
 #                                           skip without it)
+#   tests/vehicle/test_realcan_drives.py    the recorded drives of that collection: calibrated
+#                                           from their DBC only, replayed, checked (a counted skip
+#                                           without it); --table prints the figures
 # The crosscheck, e2e and unseen tests run the sanitizer builds of squeal-sim
 # (float and fixed), each also as the tool's calib-check; the sweep runs
 # build/host/squeal-sim, the tool's default checker.
@@ -20,7 +23,7 @@ VEHICLE_SIM_TESTS := tests/vehicle/test_vehicle_crosscheck.py tests/vehicle/test
 	tests/vehicle/test_vehicle_unseen.py
 $(VEHICLE_SIM_TESTS): build/test/squeal-sim build/test-fixed/squeal-sim
 
-tests/vehicle/test_realcan_sweep.py: build/host/squeal-sim
+tests/vehicle/test_realcan_sweep.py tests/vehicle/test_realcan_drives.py: build/host/squeal-sim
 
 TEST_PROGS += tests/vehicle/test_vehicle_calib.py tests/vehicle/test_vehicle_field.py $(VEHICLE_SIM_TESTS) \
-	tests/vehicle/test_realcan_sweep.py
+	tests/vehicle/test_realcan_sweep.py tests/vehicle/test_realcan_drives.py

@@ -691,11 +691,11 @@ static void test_extended_multiplexing(void **state)
 				 (int)pages[i].carries);
 		}
 		if (pages[i].carries) {
-			e2e_p01_rx_t rx;
+			input_rx_state_t rx;
 			input_rx_result_t r;
 
-			e2e_p01_rx_init(&rx);
-			r = input_rx_frame(&cfg, &rx, &f);
+			input_rx_state_init(&rx);
+			r = input_rx_judge(&cfg, &rx, &f);
 			assert_int_equal(r.reason, INPUT_RX_OK);
 			assert_int_equal(input_conv_apply(&cfg.conv, r.value), 8000);
 		}
@@ -704,11 +704,11 @@ static void test_extended_multiplexing(void **state)
 	{
 		const uint8_t d[8] = { 2U, 0U, 0x10U, 0U, 0U, 0U, 0U, 0U };
 		const hal_can_frame_t f = frame(0x3C0, false, 4U, d);
-		e2e_p01_rx_t rx;
+		input_rx_state_t rx;
 
 		assert_true(input_rx_matches(&cfg, &f, &id_only));
-		e2e_p01_rx_init(&rx);
-		assert_int_equal(input_rx_frame(&cfg, &rx, &f).reason, INPUT_RX_DLC);
+		input_rx_state_init(&rx);
+		assert_int_equal(input_rx_judge(&cfg, &rx, &f).reason, INPUT_RX_DLC);
 	}
 	/* written back and parsed again: the same block */
 	{
