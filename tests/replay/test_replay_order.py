@@ -22,7 +22,7 @@ loggers write:
     calibration's input_iface choose;
   - the summary names each input by corner, quantity and DBC signal, and
     counts the rejected frames by the input stage's reasons as the log was
-    made (bad DLC, not available, implausible), text and JSON;
+    made (bad DLC, not available, out of range), text and JSON;
   - decode --calib names every corner's output messages.
 Prints "RESULT: N passed, M failed".
 """
@@ -360,7 +360,7 @@ def test_names(tmp):
     abs1 = db.frame_by_name("ABS_1")
     brk = db.frame_by_name("BRAKE_2")
     lines = []
-    expect = {"dlc": 0, "na": 0, "implausible": 0}
+    expect = {"dlc": 0, "na": 0, "range": 0}
     used = {"speed": 0, "force": 0}
     for k in range(400):
         t = 20 * 1000000 + k * 10000
@@ -378,7 +378,7 @@ def test_names(tmp):
         bar = 20.0
         if k in (120, 220):
             bar = 300.0  # beyond max = 200 bar
-            expect["implausible"] += 1
+            expect["range"] += 1
         else:
             used["force"] += 1
         lines.append(stamp(t + 5000, "can0", 0x1B0,
@@ -401,8 +401,8 @@ def test_names(tmp):
             rs.get("dlc") == 3 and rs.get("na") == 2 and sum(rs.values()) == 5,
             "names: the speed's 3 bad DLC and 2 not available frames by reason %s" % rs)
     R.check(int(fo.group(1)) == 400 and int(fo.group(2)) == used["force"] and
-            rf.get("implausible") == 2 and sum(rf.values()) == 2,
-            "names: the force's 2 implausible frames %s" % rf)
+            rf.get("range") == 2 and sum(rf.values()) == 2,
+            "names: the force's 2 frames beyond its range %s" % rf)
     R.check(re.search(r"frames_used\s+\d+ \(FL speed ABS_1\.WHEEL_SPEED_FL \d+, FL force brake \d+\)", err)
             is not None, "names: the totals in the vehicle's words, not DiscSpeed/PadForce")
     R.check(re.search(r"^  corner FL\s+final \w+, time stable [\d.]+ % bistable", err, re.M) is not None and
@@ -414,8 +414,8 @@ def test_names(tmp):
             c[0]["speed"]["label"] == "FL speed ABS_1.WHEEL_SPEED_FL" and
             c[0]["force"]["label"] == "FL force brake" and
             c[0]["speed"]["rejected"] == {"dlc": 3, "na": 2, "qualifier": 0, "crc": 0, "counter": 0,
-                                          "repeated": 0, "implausible": 0} and
-            c[0]["force"]["rejected"]["implausible"] == 2 and
+                                          "repeated": 0, "range": 0, "step": 0} and
+            c[0]["force"]["rejected"]["range"] == 2 and
             c[0]["speed"]["used"] == used["speed"] and
             sum(c[0]["state_share"].values()) in (Decimal("0.999999"), Decimal("1"), Decimal("1.000001")),
             "names: JSON inputs_by_corner %s" % json.dumps(c, default=str)[:300])
