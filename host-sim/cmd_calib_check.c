@@ -17,7 +17,7 @@
 #include "calib.h"
 #include "calib_map.h"
 #include "calib_text.h"
-#include "input_rx.h"
+#include "monitor.h"
 #include "sim_commands.h"
 #include "sq_status.h"
 
@@ -33,24 +33,16 @@ static void usage(FILE *f)
 		"Exit 2: bad usage. --help prints this.\n");
 }
 
-/* Every corner through input_rx_setup(), as monitor_init_corner() does. */
+/* Every corner set up by the monitor itself (monitor_init_corner(), what
+ * the ECU, replay and decode run): it keeps the calibration only when the
+ * corner sets up, and falls back to the factory defaults otherwise. */
 static int set_up_all(const calib_t *cal, uint32_t *bad_corner)
 {
+	static monitor_t mon;
 	uint32_t k;
 
 	for (k = 0U; k < calib_corner_count(cal); k++) {
-		calib_corner_t c;
-		calib_input_t sp;
-		calib_input_t fo;
-		input_rx_cfg_t rx;
-		input_geom_t g;
-
-		if (calib_corner_view(cal, k, &c, &sp, &fo) != SQ_OK) {
-			*bad_corner = k;
-			return -1;
-		}
-		g = calib_corner_geom(&c);
-		if ((input_rx_setup(&sp, &g, &rx) != SQ_OK) || (input_rx_setup(&fo, &g, &rx) != SQ_OK)) {
+		if ((monitor_init_corner(&mon, cal, k, false, 0U, 0U) != SQ_OK) || (mon.cal != cal)) {
 			*bad_corner = k;
 			return -1;
 		}
