@@ -1035,6 +1035,19 @@ static long vm_hwm_kb(void)
 	return kb;
 }
 
+/* A corner's replayed time: the sum of its time in each state (the base of
+ * the shares in the text and the JSON summary). */
+static uint64_t corner_time_us(const corner_stats_t *cs)
+{
+	uint64_t total = 0U;
+	unsigned s;
+
+	for (s = 0U; s < N_STATES; s++) {
+		total += cs->state_us[s];
+	}
+	return total;
+}
+
 /* One corner: final state, share of time per state, each input's frames
  * used and rejected by the input stage's reasons, the time in FAULT by
  * reason. */
@@ -1043,15 +1056,12 @@ static void corner_summary(FILE *o, const replay_t *r, uint32_t k)
 	const monitor_t *c = squeal_app_corner(k);
 	const corner_stats_t *cs = &r->cs[k];
 	const input_counters_t *cnt[2] = { &c->speed.count, &c->force.count };
-	uint64_t total = 0U;
+	const uint64_t total = corner_time_us(cs);
 	char label[96];
 	unsigned s;
 	unsigned j;
 	unsigned q;
 
-	for (s = 0U; s < N_STATES; s++) {
-		total += cs->state_us[s];
-	}
 	fprintf(o, "  corner %s              final %s, time", pos_names[c->corner.pos & 3U],
 		rs_state_name(msg_squeal_state_slot(c->state)));
 	for (s = 0U; s < N_STATES; s++) {
@@ -1298,15 +1308,12 @@ static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
 		const monitor_t *c = squeal_app_corner(k);
 		const corner_stats_t *cs = &r->cs[k];
 		const input_counters_t *cnt[2] = { &c->speed.count, &c->force.count };
-		uint64_t total = 0U;
+		const uint64_t total = corner_time_us(cs);
 		char label[96];
 		unsigned s;
 		unsigned j;
 		unsigned q;
 
-		for (s = 0U; s < N_STATES; s++) {
-			total += cs->state_us[s];
-		}
 		json_begin_object(w);
 		json_kv_string(w, "corner", pos_names[c->corner.pos & 3U]);
 		json_kv_string(w, "final_state", rs_state_name(msg_squeal_state_slot(c->state)));
