@@ -32,10 +32,41 @@
 
 #define HAL_CAN_MAX_DLEN 8U
 
+/* CAN FD (ISO 11898-1:2015): up to 64 data bytes. A frame's dlc field holds
+ * its data length in bytes; above 8 only the lengths of DLC codes 9..15 exist
+ * (12, 16, 20, 24, 32, 48, 64), any other length is malformed. */
+#define HAL_CAN_CLASSIC_MAX_DLEN 8U
+#define HAL_CAN_FD_MAX_DLEN 64U
+
 /* Flags of a hal_can_frame_t (Zephyr-like: one frame type for every backend). */
 #define HAL_CAN_FLAG_EXT (1U << 0) /* 29-bit identifier                      */
 #define HAL_CAN_FLAG_RTR (1U << 1) /* remote frame: no data                  */
 #define HAL_CAN_FLAG_ERR (1U << 2) /* error frame: id holds the error class  */
+#define HAL_CAN_FLAG_FDF (1U << 3) /* CAN FD frame format (FDF bit)          */
+#define HAL_CAN_FLAG_BRS (1U << 4) /* FD: bit rate switch in the data phase  */
+#define HAL_CAN_FLAG_ESI (1U << 5) /* FD: sender was error passive           */
+
+/* Data length in bytes of a DLC code 0..15 (codes 9..15: FD lengths). */
+static inline uint8_t hal_can_dlc_to_len(uint8_t dlc_code)
+{
+	static const uint8_t len_of_code[16] = { 0U, 1U, 2U, 3U, 4U, 5U, 6U, 7U, 8U,
+						 12U, 16U, 20U, 24U, 32U, 48U, 64U };
+	return len_of_code[dlc_code & 0x0FU];
+}
+
+/* DLC code 0..15 of a data length in bytes; 0xFF where no DLC code has
+ * exactly that length (13 bytes, 65 bytes: malformed). */
+static inline uint8_t hal_can_len_to_dlc(uint8_t len)
+{
+	uint8_t code;
+
+	for (code = 0U; code < 16U; code++) {
+		if (hal_can_dlc_to_len(code) == len) {
+			return code;
+		}
+	}
+	return 0xFFU;
+}
 
 #define HAL_CAN_STD_ID_MAX 0x7FFUL
 #define HAL_CAN_EXT_ID_MAX 0x1FFFFFFFUL
