@@ -53,7 +53,7 @@ build/$(1)/fw/%.o: %.c
 	$$(CC) $$(WARN) $$(FW_FLAGS) $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(if $$(filter fixed,$$(NUM_$(1))),$$(FIXED_ONLY_INT)) $$(FW_INC) -MMD -MP -c $$< -o $$@
 build/$(1)/app/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Ihal/vbus -Itests/support -MMD -MP -c $$< -o $$@
+	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Ihal/vbus -Itests/support -Itests/hal -MMD -MP -c $$< -o $$@
 build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS)) build/$(1)/app/$$(HAL_CONTRACT_HOST:.c=.o)
 	@rm -f $$@
 	ar rcs $$@ $$^

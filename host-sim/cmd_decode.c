@@ -7,7 +7,7 @@
  * calibration's input_iface with --calib, else every interface.
  *
  * Values come from the firmware's descriptor tables (msg_table,
- * msg_sig_table, checked against the DBC by tests/protocol/): physical =
+ * msg_sig_table, checked against the DBC by tests/firmware/protocol/): physical =
  * (raw * factor_num + offset_num) / factor_den, printed exactly in decimal
  * with as many digits as the factor needs (0.01 -> 2, 0.5 -> 1), "NA" for
  * the DBC's "not available" raw value.

@@ -1,33 +1,34 @@
 # SPDX-License-Identifier: MIT
 # Issue 12, calibrating a brake from measurements:
-#   build/test{,-fixed}/test_sigma    firmware/model/squeal_sigma.h against
-#                                     Monte Carlo (tests/golden/sigma_vectors.csv)
-#   tests/calibrate/test_fit_*.py     the fitting tools on synthetic data
+#   build/test{,-fixed}/tests/firmware/model/test_squeal_sigma    firmware/model/squeal_sigma.h against
+#                                     Monte Carlo (tests/support/golden/sigma_vectors.csv)
+#   tests/tools/test_fit_*.py         the fitting tools on synthetic data
 #                                     (recovery, 95 % coverage, bad files)
 #   make sigma-golden                 regenerate the Monte Carlo file
 
 SIGMA_TEST_VARIANTS := test test-fixed
 
 define sigma_test_rules
-build/$(1)/test_sigma: build/$(1)/app/tests/unit/test_sigma.o build/$(1)/app/tests/support/sq_num.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
+build/$(1)/tests/firmware/model/test_squeal_sigma: build/$(1)/app/tests/firmware/model/test_squeal_sigma.o build/$(1)/app/tests/support/sq_num.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
+	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(SIGMA_TEST_VARIANTS),$(eval $(call sigma_test_rules,$(v))))
 
-TEST_PROGS += $(foreach v,$(SIGMA_TEST_VARIANTS),build/$(v)/test_sigma) tests/reference/check_sigma_golden.py
+TEST_PROGS += $(foreach v,$(SIGMA_TEST_VARIANTS),build/$(v)/tests/firmware/model/test_squeal_sigma) tests/firmware/model/check_squeal_sigma_golden.py
 
 .PHONY: sigma-golden
 sigma-golden:
-	$(PYTHON) tests/reference/gen_sigma_reference.py -o tests/golden/sigma_vectors.csv
+	$(PYTHON) tests/support/reference/gen_sigma_reference.py -o tests/support/golden/sigma_vectors.csv
 
 # The fitting tools (numpy/scipy). The CLI test also runs today's
 # `squeal-sim replay --calib` on a written calibration.
-CALIB_FIT_TESTS := tests/calibrate/test_fit_friction.py tests/calibrate/test_fit_modal.py \
-	tests/calibrate/test_fit_cli.py tests/calibrate/test_classify_sigma.py \
-	tests/calibrate/test_done_when.py
-tests/calibrate/test_fit_cli.py: build/host/squeal-sim
+CALIB_FIT_TESTS := tests/tools/test_fit_friction.py tests/tools/test_fit_modal.py \
+	tests/tools/test_fit_friction_cli.py tests/host-sim/test_cmd_classify_sigma.py \
+	tests/tools/test_calibfit_user.py
+tests/tools/test_fit_friction_cli.py: build/host/squeal-sim
 # issue 12's "Done when": fits -> calibration -> classify/replay --calib, both builds
-tests/calibrate/test_classify_sigma.py tests/calibrate/test_done_when.py: build/host/squeal-sim \
+tests/host-sim/test_cmd_classify_sigma.py tests/tools/test_calibfit_user.py: build/host/squeal-sim \
 	build/host-fixed/squeal-sim
 TEST_PROGS += $(CALIB_FIT_TESTS)
 

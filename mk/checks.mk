@@ -8,23 +8,23 @@ TEST_PROGS += tests/support/test-run-tests.sh
 TEST_PROGS += tests/support/test-checks-lib.sh
 
 # run-ecu-boot.sh on a stub emulator: a bad boot fails exactly its six checks
-tests/target/test-ecu-boot-control.sh: build/stm32f4-ecutest/squeal-monitor.elf \
+tests/system/target/test-ecu-boot-control.sh: build/stm32f4-ecutest/squeal-monitor.elf \
 	build/stm32f4-faulttest/squeal-monitor.elf
-TEST_PROGS += tests/target/test-ecu-boot-control.sh
+TEST_PROGS += tests/system/target/test-ecu-boot-control.sh
 
 # check-calib-write-path.sh: an image that was not built is a counted skip
-TEST_PROGS += tests/static/test-calib-write-path-control.sh
+TEST_PROGS += tests/system/static/test-calib-write-path-control.sh
 
 # test_demo.sh with a demo that draws no picture (a stale one left in place)
-tests/demo/test-demo-control.sh: build/host/squeal-sim
-TEST_PROGS += tests/demo/test-demo-control.sh
+tests/system/demo/test-demo-control.sh: build/host/squeal-sim
+TEST_PROGS += tests/system/demo/test-demo-control.sh
 
 # cppcheck-misra.sh: a missing or failing addon, no files, a row over budget
-TEST_PROGS += tests/static/test-cppcheck-misra-control.sh
+TEST_PROGS += tests/system/static/test-cppcheck-misra-control.sh
 
 # test_unpack_crosscheck.py with an unpacker one bit off / accepting bad frames
-tests/protocol/test-unpack-crosscheck-control.sh: build/test/tests/protocol/unpack_random
-TEST_PROGS += tests/protocol/test-unpack-crosscheck-control.sh
+tests/firmware/protocol/test_squeal_msgs_unpack_control.sh: build/test/tests/firmware/protocol/unpack_random
+TEST_PROGS += tests/firmware/protocol/test_squeal_msgs_unpack_control.sh
 
 # the mutant list still applies to the sources (nothing is built or run)
 TEST_PROGS += tests/support/check-mutants.sh

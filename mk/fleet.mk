@@ -3,17 +3,17 @@
 #   tools/fleet.py            replay --summary-json over many logs (Dask)
 #   tools/gen_fleet_logs.py   a generated test fleet, a few logs broken
 #   tools/live_view.py        the operating point live over the map
-#   tests/fleet/test_fleet.py 16 logs, LocalCluster + a separate cluster
-#   tests/fleet/bench_fleet.py  make bench: logs/s on 1, 2 workers, cluster
-#   tests/fleet/test_drive_corners.py  both tools on a two-corner vehicle calibration
-tests/fleet/test_fleet.py: build/host/squeal-sim
-TEST_PROGS += tests/fleet/test_fleet.py
-tests/fleet/bench_fleet.py: build/host/squeal-sim
-BENCH_PROGS += tests/fleet/bench_fleet.py
-tests/fleet/test_live_view.py: build/host/squeal-sim
-TEST_PROGS += tests/fleet/test_live_view.py
-tests/fleet/test_drive_corners.py: build/host/squeal-sim
-TEST_PROGS += tests/fleet/test_drive_corners.py
+#   tests/tools/test_fleet.py 16 logs, LocalCluster + a separate cluster
+#   tests/tools/bench_fleet.py  make bench: logs/s on 1, 2 workers, cluster
+#   tests/tools/test_fleet_corners.py  both tools on a two-corner vehicle calibration
+tests/tools/test_fleet.py: build/host/squeal-sim
+TEST_PROGS += tests/tools/test_fleet.py
+tests/tools/bench_fleet.py: build/host/squeal-sim
+BENCH_PROGS += tests/tools/bench_fleet.py
+tests/tools/test_live_view.py: build/host/squeal-sim
+TEST_PROGS += tests/tools/test_live_view.py
+tests/tools/test_fleet_corners.py: build/host/squeal-sim
+TEST_PROGS += tests/tools/test_fleet_corners.py
 
 # One command: a generated fleet of 110 logs (6 broken) and its report
 # (build/fleet-report/index.html).

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# libFuzzer targets (tests/fuzz/), built with clang and ASan+UBSan:
+# libFuzzer targets (tests/support/fuzz/), built with clang and ASan+UBSan:
 #   build/fuzz/bin/fuzz_model_float  model, float build: any bit pattern
 #   build/fuzz/bin/fuzz_model_fixed  model, fixed build: any int32
 #   build/fuzz/bin/fuzz_msgs         every unpack, E2E P01 check, receive
@@ -10,10 +10,10 @@
 #
 #   make fuzz                 each target FUZZ_SECONDS (300) on its corpus,
 #                             prints execs/s and coverage (cov/ft)
-#   make test                 runs tests/fuzz/run-fuzz.sh: each target
+#   make test                 runs tests/support/fuzz/run-fuzz.sh: each target
 #                             FUZZ_TEST_SECONDS (10); any crash, timeout,
 #                             leak or sanitizer report fails
-#   make fuzz-seeds           regenerate tests/fuzz/corpus/ (gen-seeds.sh)
+#   make fuzz-seeds           regenerate tests/support/fuzz/corpus/ (gen-seeds.sh)
 #   make fuzz-coverage        line coverage reached by the seeds + corpora
 # Firmware objects get their own clang variants build/fuzz{,-fixed}/ so the
 # gcc builds are not touched.
@@ -46,7 +46,7 @@ build/$(1)/fw/%.o: %.c
 	$$(FUZZ_CC) $$(WARN) $$(FW_FLAGS) $$(CFLAGS_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -MMD -MP -c $$< -o $$@
 build/$(1)/app/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(FUZZ_CC) $$(WARN) -D_GNU_SOURCE $$(CFLAGS_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -Itests/fuzz -MMD -MP -c $$< -o $$@
+	$$(FUZZ_CC) $$(WARN) -D_GNU_SOURCE $$(CFLAGS_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Ihost-sim -Ihal/linux -Itests/support -Itests/support/fuzz -MMD -MP -c $$< -o $$@
 build/$(1)/libfirmware.a: $$(patsubst %.c,build/$(1)/fw/%.o,$$(FW_SRCS)) build/$(1)/app/$$(HAL_CONTRACT_HOST:.c=.o)
 	@rm -f $$@
 	ar rcs $$@ $$^
@@ -68,53 +68,54 @@ endef
 
 FUZZ_TARGETS :=
 FUZZ_COV_TARGETS :=
-$(eval $(call fuzz_target,fuzz_model_float,fuzz,tests/fuzz/fuzz_model.c))
-$(eval $(call fuzz_target,fuzz_model_fixed,fuzz-fixed,tests/fuzz/fuzz_model.c))
-$(eval $(call fuzz_target,fuzz_msgs,fuzz,tests/fuzz/fuzz_msgs.c))
-$(eval $(call fuzz_target,fuzz_calib_block,fuzz,tests/fuzz/fuzz_calib_block.c))
-$(eval $(call fuzz_target,fuzz_monitor,fuzz,tests/fuzz/fuzz_monitor.c))
-$(eval $(call fuzz_target,fuzz_monitor_fixed,fuzz-fixed,tests/fuzz/fuzz_monitor.c))
+$(eval $(call fuzz_target,fuzz_model_float,fuzz,tests/firmware/model/fuzz_squeal_model.c))
+$(eval $(call fuzz_target,fuzz_model_fixed,fuzz-fixed,tests/firmware/model/fuzz_squeal_model.c))
+$(eval $(call fuzz_target,fuzz_msgs,fuzz,tests/firmware/protocol/fuzz_squeal_msgs.c))
+$(eval $(call fuzz_target,fuzz_calib_block,fuzz,tests/firmware/monitor/fuzz_calib.c))
+$(eval $(call fuzz_target,fuzz_monitor,fuzz,tests/firmware/monitor/fuzz_monitor.c))
+$(eval $(call fuzz_target,fuzz_monitor_fixed,fuzz-fixed,tests/firmware/monitor/fuzz_monitor.c))
 # host-sim's parsers (once they exist)
-ifeq ($(words $(wildcard host-sim/candump_log.c tests/fuzz/fuzz_candump.c)),2)
-$(eval $(call fuzz_target,fuzz_candump,fuzz,tests/fuzz/fuzz_candump.c,build/fuzz/app/host-sim/candump_log.o))
+ifeq ($(words $(wildcard host-sim/candump_log.c tests/host-sim/fuzz_candump_log.c)),2)
+$(eval $(call fuzz_target,fuzz_candump,fuzz,tests/host-sim/fuzz_candump_log.c,build/fuzz/app/host-sim/candump_log.o))
 endif
-ifeq ($(words $(wildcard host-sim/calib_text.c tests/fuzz/fuzz_calib_text.c)),2)
-$(eval $(call fuzz_target,fuzz_calib_text,fuzz,tests/fuzz/fuzz_calib_text.c,build/fuzz/app/host-sim/calib_text.o build/fuzz/app/host-sim/calib_sections.o))
+ifeq ($(words $(wildcard host-sim/calib_text.c tests/host-sim/fuzz_calib_text.c)),2)
+$(eval $(call fuzz_target,fuzz_calib_text,fuzz,tests/host-sim/fuzz_calib_text.c,build/fuzz/app/host-sim/calib_text.o build/fuzz/app/host-sim/calib_sections.o))
 # the same properties in the fixed build ("what validates sets up" in both)
-$(eval $(call fuzz_target,fuzz_calib_text_fixed,fuzz-fixed,tests/fuzz/fuzz_calib_text.c,build/fuzz-fixed/app/host-sim/calib_text.o build/fuzz-fixed/app/host-sim/calib_sections.o))
+$(eval $(call fuzz_target,fuzz_calib_text_fixed,fuzz-fixed,tests/host-sim/fuzz_calib_text.c,build/fuzz-fixed/app/host-sim/calib_text.o build/fuzz-fixed/app/host-sim/calib_sections.o))
 endif
 
 export FUZZ_TARGETS
 
 .PHONY: fuzz fuzz-build fuzz-seeds fuzz-coverage
 # Line coverage of the code under test, from the seeds and the corpora that
-# make fuzz grew (build/fuzz-corpus/): tests/fuzz/fuzz-coverage.sh
+# make fuzz grew (build/fuzz-corpus/): tests/support/fuzz/fuzz-coverage.sh
 fuzz-coverage: $(FUZZ_COV_TARGETS)
-	tests/fuzz/fuzz-coverage.sh $(FUZZ_COV_TARGETS)
+	tests/support/fuzz/fuzz-coverage.sh $(FUZZ_COV_TARGETS)
 fuzz-build: $(FUZZ_TARGETS)
 fuzz: $(FUZZ_TARGETS)
-	tests/fuzz/run-fuzz.sh --mode fuzz --seconds $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+	tests/support/fuzz/run-fuzz.sh --mode fuzz --seconds $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 # Seed corpora: written by a small C program through the firmware's own
 # encoders (valid frames and blocks are the interesting starting points).
-FUZZ_SEEDGEN := build/host/tests/fuzz/gen_seeds
-$(FUZZ_SEEDGEN): build/host/app/tests/fuzz/gen_seeds.o build/host/app/host-sim/candump_log.o \
+FUZZ_SEEDGEN := build/host/tests/support/fuzz/gen_seeds
+$(FUZZ_SEEDGEN): build/host/app/tests/support/fuzz/gen_seeds.o build/host/app/host-sim/candump_log.o \
 		build/host/app/host-sim/calib_text.o build/host/app/host-sim/calib_sections.o build/host/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_host) -o $@ $^ -lm
 fuzz-seeds: $(FUZZ_SEEDGEN)
-	tests/fuzz/gen-seeds.sh $(FUZZ_SEEDGEN)
+	tests/support/fuzz/gen-seeds.sh $(FUZZ_SEEDGEN)
 
 # make test: every target for a short, bounded time.
-tests/fuzz/run-fuzz.sh: $(FUZZ_TARGETS)
-TEST_PROGS += tests/fuzz/run-fuzz.sh
+tests/support/fuzz/run-fuzz.sh: $(FUZZ_TARGETS)
+TEST_PROGS += tests/support/fuzz/run-fuzz.sh
 
 # Calibration write protection (cmocka, the whole app on the test HAL under
 # a flood of random and spoofed frames), both numeric builds, ASan+UBSan.
 # --wrap counts every call of hal_calib_write.
 define calib_wp_rules
-build/$(1)/test_calib_write_protection: build/$(1)/app/tests/fuzz/test_calib_write_protection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
+build/$(1)/tests/firmware/app/test_squeal_app_calib_write: build/$(1)/app/tests/firmware/app/test_squeal_app_calib_write.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
+	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -Wl,--wrap=hal_calib_write -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,test test-fixed,$(eval $(call calib_wp_rules,$(v))))
-TEST_PROGS += build/test/test_calib_write_protection build/test-fixed/test_calib_write_protection
+TEST_PROGS += build/test/tests/firmware/app/test_squeal_app_calib_write build/test-fixed/tests/firmware/app/test_squeal_app_calib_write

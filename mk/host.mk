@@ -22,8 +22,8 @@ demo: deps-demo build/host/squeal-sim
 	@tools/demo.sh
 
 # firmware/ builds for both MCUs; the fixed build has no floating point
-TEST_PROGS += tests/firmware/check_portable.sh
+TEST_PROGS += tests/system/static/check_portable.sh
 
 # the README's main job (tools/demo.sh) end to end
-TEST_PROGS += tests/demo/test_demo.sh
-tests/demo/test_demo.sh: build/host/squeal-sim
+TEST_PROGS += tests/system/demo/test_demo.sh
+tests/system/demo/test_demo.sh: build/host/squeal-sim

@@ -1,30 +1,30 @@
 # SPDX-License-Identifier: MIT
 # firmware/protocol tests (the protocol sources themselves are compiled into
 # libfirmware.a by the top-level Makefile):
-#   build/test/tests/unit/test_protocol     cmocka, ASan+UBSan
-#   build/test/tests/protocol/emit_frames   packs+protects frames, prints the
+#   build/test/tests/firmware/protocol/test_squeal_msgs     cmocka, ASan+UBSan
+#   build/test/tests/firmware/protocol/emit_frames   packs+protects frames, prints the
 #                                           C descriptor table (host helper)
-#   tests/protocol/check_dbc_vs_c.py        C defines/descriptors == DBC
-#   tests/protocol/test_canmatrix_crosscheck.py  canmatrix decodes our frames
-#   tests/protocol/test_unpack_crosscheck.py     our input unpackers == canmatrix
+#   tests/firmware/protocol/check_squeal_msgs_dbc.py        C defines/descriptors == DBC
+#   tests/firmware/protocol/test_squeal_msgs_canmatrix.py  canmatrix decodes our frames
+#   tests/firmware/protocol/test_squeal_msgs_unpack.py     our input unpackers == canmatrix
 #                                           on random frames (unpack_random.c)
 
-PROTOCOL_TEST_BIN := build/test/tests/unit/test_protocol
-PROTOCOL_EMIT := build/test/tests/protocol/emit_frames
+PROTOCOL_TEST_BIN := build/test/tests/firmware/protocol/test_squeal_msgs
+PROTOCOL_EMIT := build/test/tests/firmware/protocol/emit_frames
 
-$(PROTOCOL_TEST_BIN): build/test/app/tests/unit/test_protocol.o build/test/app/tests/support/test_contract.o build/test/libfirmware.a
+$(PROTOCOL_TEST_BIN): build/test/app/tests/firmware/protocol/test_squeal_msgs.o build/test/app/tests/support/test_contract.o build/test/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
 
-$(PROTOCOL_EMIT): build/test/app/tests/protocol/emit_frames.o build/test/libfirmware.a
+$(PROTOCOL_EMIT): build/test/app/tests/firmware/protocol/emit_frames.o build/test/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^
 
 # The Python checks run the emitter: build it first.
-tests/protocol/check_dbc_vs_c.py tests/protocol/test_canmatrix_crosscheck.py: $(PROTOCOL_EMIT)
+tests/firmware/protocol/check_squeal_msgs_dbc.py tests/firmware/protocol/test_squeal_msgs_canmatrix.py: $(PROTOCOL_EMIT)
 
-TEST_PROGS += $(PROTOCOL_TEST_BIN) tests/protocol/check_dbc_vs_c.py \
-	tests/protocol/test_canmatrix_crosscheck.py
+TEST_PROGS += $(PROTOCOL_TEST_BIN) tests/firmware/protocol/check_squeal_msgs_dbc.py \
+	tests/firmware/protocol/test_squeal_msgs_canmatrix.py
 
 # The protocol layer must build for the ECUs too (freestanding, hard-float
 # Cortex-M4F and soft Cortex-M3), with the same warnings.
@@ -42,16 +42,16 @@ build/arm-check/protocol.stamp: $(PROTOCOL_SRCS) $(wildcard firmware/protocol/*.
 ALL_TARGETS += build/arm-check/protocol.stamp
 
 # Host figures (release build): make bench
-PROTOCOL_BENCH := build/host/tests/protocol/bench_protocol
-$(PROTOCOL_BENCH): build/host/app/tests/protocol/bench_protocol.o build/host/libfirmware.a
+PROTOCOL_BENCH := build/host/tests/firmware/protocol/bench_squeal_msgs
+$(PROTOCOL_BENCH): build/host/app/tests/firmware/protocol/bench_squeal_msgs.o build/host/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_host) -o $@ $^
 BENCH_PROGS += $(PROTOCOL_BENCH)
 
-# Input unpackers on random frames vs canmatrix (tests/protocol/unpack_random.c)
-PROTOCOL_UNPACK_RANDOM := build/test/tests/protocol/unpack_random
-$(PROTOCOL_UNPACK_RANDOM): build/test/app/tests/protocol/unpack_random.o build/test/libfirmware.a
+# Input unpackers on random frames vs canmatrix (tests/firmware/protocol/unpack_random.c)
+PROTOCOL_UNPACK_RANDOM := build/test/tests/firmware/protocol/unpack_random
+$(PROTOCOL_UNPACK_RANDOM): build/test/app/tests/firmware/protocol/unpack_random.o build/test/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^
-tests/protocol/test_unpack_crosscheck.py: $(PROTOCOL_UNPACK_RANDOM)
-TEST_PROGS += tests/protocol/test_unpack_crosscheck.py
+tests/firmware/protocol/test_squeal_msgs_unpack.py: $(PROTOCOL_UNPACK_RANDOM)
+TEST_PROGS += tests/firmware/protocol/test_squeal_msgs_unpack.py

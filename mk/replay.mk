@@ -4,16 +4,16 @@
 #   host-sim/cmd_replay.c    squeal-sim replay LOG|-   (virtual time, hal/vbus;
 #                            program build/<v>/squeal-replay)
 #   host-sim/cmd_decode.c    squeal-sim decode [LOG|-|--iface IF] [--csv]
-#   build/test/test_candump_log     cmocka, ASan+UBSan
-#   tests/replay/test_replay.py     replay/decode end to end (python-can,
+#   build/test/tests/host-sim/test_candump_log     cmocka, ASan+UBSan
+#   tests/host-sim/test_cmd_replay.py     replay/decode end to end (python-can,
 #                                   canmatrix, the reference model)
-#   tests/replay/test_replay_order.py  out-of-order blocks, restarts, gaps,
+#   tests/host-sim/test_cmd_replay_order.py  out-of-order blocks, restarts, gaps,
 #                                   two interfaces, names and reasons
-#   tests/replay/bench-replay.sh    make bench: replay vs python-can+canmatrix,
+#   tests/host-sim/bench_cmd_replay.sh    make bench: replay vs python-can+canmatrix,
 #                                   with and without frame output
 #   host-sim/replay_summary.c, json_writer.c   replay --summary-json (issue 13)
-#   build/test/test_json_writer     cmocka: the JSON writer's output and misuse
-#   tests/replay/test_summary_json.py  the JSON vs Python's json + canmatrix
+#   build/test/tests/host-sim/test_json_writer     cmocka: the JSON writer's output and misuse
+#   tests/host-sim/test_replay_summary.py  the JSON vs Python's json + canmatrix
 REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_decode.c host-sim/decode_inputs.c
 SIM_SRCS += $(REPLAY_SIM_SRCS)
 
@@ -28,37 +28,41 @@ REPLAY_SRCS := host-sim/squeal_replay.c host-sim/cmd_replay.c host-sim/candump_l
 	host-sim/calib_text.c host-sim/calib_sections.c host-sim/replay_summary.c host-sim/json_writer.c
 define replay_program
 build/$(1)/squeal-replay: $$(patsubst %.c,build/$(1)/app/%.o,$$(REPLAY_SRCS)) build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
+	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lm
 build/$(1)/squeal-sim: build/$(1)/squeal-replay
 endef
 $(foreach v,$(VARIANTS),$(eval $(call replay_program,$(v))))
 ALL_TARGETS += build/host/squeal-replay build/host-fixed/squeal-replay
 
-build/test/test_candump_log: build/test/app/tests/unit/test_candump_log.o build/test/app/host-sim/candump_log.o
+build/test/tests/host-sim/test_candump_log: build/test/app/tests/host-sim/test_candump_log.o build/test/app/host-sim/candump_log.o
+	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
 
 # The end-to-end test runs the sanitizer builds of squeal-sim (float, fixed)
 # and the release build for the long determinism run.
-tests/replay/test_replay.py: build/test/squeal-sim build/test-fixed/squeal-sim build/host/squeal-sim
+tests/host-sim/test_cmd_replay.py: build/test/squeal-sim build/test-fixed/squeal-sim build/host/squeal-sim
 
-TEST_PROGS += build/test/test_candump_log tests/replay/test_replay.py
+TEST_PROGS += build/test/tests/host-sim/test_candump_log tests/host-sim/test_cmd_replay.py
 
 # Time order, restarts, gaps, interfaces and the summary in the vehicle's
 # words, on logs generated here (both numeric builds).
-tests/replay/test_replay_order.py: build/test/squeal-sim build/test-fixed/squeal-sim
-TEST_PROGS += tests/replay/test_replay_order.py
+tests/host-sim/test_cmd_replay_order.py: build/test/squeal-sim build/test-fixed/squeal-sim
+TEST_PROGS += tests/host-sim/test_cmd_replay_order.py
 
 # make bench: replay/decode throughput vs python-can + canmatrix, peak RSS
-tests/replay/bench-replay.sh: build/host/squeal-sim
-BENCH_PROGS += tests/replay/bench-replay.sh
+tests/host-sim/bench_cmd_replay.sh: build/host/squeal-sim
+BENCH_PROGS += tests/host-sim/bench_cmd_replay.sh
 
 # replay --summary-json (issue 13): the summary module alone on four-corner
 # frame streams (summary_driver), and the JSON of real replays, both checked
 # with Python's json module and an independent recomputation from the frames
 # decoded by canmatrix.
-build/test/summary_driver: build/test/app/tests/replay/summary_driver.o build/test/app/host-sim/replay_summary.o build/test/app/host-sim/json_writer.o build/test/app/host-sim/candump_log.o build/test/libfirmware.a
+build/test/tests/host-sim/summary_driver: build/test/app/tests/host-sim/summary_driver.o build/test/app/host-sim/replay_summary.o build/test/app/host-sim/json_writer.o build/test/app/host-sim/candump_log.o build/test/libfirmware.a
+	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^
-tests/replay/test_summary_json.py: build/test/summary_driver build/test/squeal-sim build/test-fixed/squeal-sim
-build/test/test_json_writer: build/test/app/tests/unit/test_json_writer.o build/test/app/host-sim/json_writer.o
+tests/host-sim/test_replay_summary.py: build/test/tests/host-sim/summary_driver build/test/squeal-sim build/test-fixed/squeal-sim
+build/test/tests/host-sim/test_json_writer: build/test/app/tests/host-sim/test_json_writer.o build/test/app/host-sim/json_writer.o
+	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
-TEST_PROGS += tests/replay/test_summary_json.py build/test/test_json_writer
+TEST_PROGS += tests/host-sim/test_replay_summary.py build/test/tests/host-sim/test_json_writer

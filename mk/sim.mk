@@ -18,6 +18,7 @@ build/$(1)/liboscsim.a: $$(patsubst %.c,build/$(1)/app/%.o,$$(OSCSIM_SRCS))
 	ar rcs $$@ $$^
 OSCSIM_LIB_$(1) := build/$(1)/liboscsim.a
 build/$(1)/oscsim: build/$(1)/app/host-sim/oscsim/oscsim_main.o build/$(1)/liboscsim.a build/$(1)/app/$(OSCSIM_NUM_SRC:.c=.o) build/$(1)/libfirmware.a
+	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lm
 endef
 $(foreach v,$(OSCSIM_VARIANTS),$(eval $(call oscsim_rules,$(v))))
@@ -25,30 +26,32 @@ $(foreach v,$(OSCSIM_VARIANTS),$(eval $(call oscsim_rules,$(v))))
 ALL_TARGETS += build/host/oscsim
 
 # Unit tests of the simulator against hand-derived closed forms (ASan+UBSan).
-build/test/test_oscsim: build/test/app/tests/sim/test_oscsim.o build/test/liboscsim.a \
+build/test/tests/host-sim/oscsim/test_oscsim: build/test/app/tests/host-sim/oscsim/test_oscsim.o build/test/liboscsim.a \
 		build/test/app/$(OSCSIM_NUM_SRC:.c=.o) build/test/libfirmware.a
+	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
-TEST_PROGS += build/test/test_oscsim
+TEST_PROGS += build/test/tests/host-sim/oscsim/test_oscsim
 
 # Agreement of the model (float and fixed) with simulation over the (a, v0)
 # plane, 40 x 40 per brake. Release builds: the sweep is the heavy part and
 # the simulator already runs under the sanitizers in test_oscsim.
 OSCSIM_AGREE_VARIANTS := host host-fixed
 define oscsim_agree_rules
-build/$(1)/test_agreement: build/$(1)/app/tests/sim/test_agreement.o build/$(1)/liboscsim.a build/$(1)/app/$(OSCSIM_NUM_SRC:.c=.o) build/$(1)/libfirmware.a
+build/$(1)/tests/host-sim/oscsim/test_oscsim_agreement: build/$(1)/app/tests/host-sim/oscsim/test_oscsim_agreement.o build/$(1)/liboscsim.a build/$(1)/app/$(OSCSIM_NUM_SRC:.c=.o) build/$(1)/libfirmware.a
+	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(OSCSIM_AGREE_VARIANTS),$(eval $(call oscsim_agree_rules,$(v))))
-TEST_PROGS += $(foreach v,$(OSCSIM_AGREE_VARIANTS),build/$(v)/test_agreement)
+TEST_PROGS += $(foreach v,$(OSCSIM_AGREE_VARIANTS),build/$(v)/tests/host-sim/oscsim/test_oscsim_agreement)
 
 # Cross-check against scipy's solve_ivp and model.md section 6.
-tests/sim/test_oscsim_scipy.py: build/host/oscsim
-TEST_PROGS += tests/sim/test_oscsim_scipy.py
+tests/host-sim/oscsim/test_oscsim_scipy.py: build/host/oscsim
+TEST_PROGS += tests/host-sim/oscsim/test_oscsim_scipy.py
 
 # make bench: the full-grid agreement figures with timings.
 ALL_TARGETS += build/host-fixed/oscsim
-tests/sim/bench_agreement.sh: build/host/oscsim build/host-fixed/oscsim
-BENCH_PROGS += tests/sim/bench_agreement.sh
+tests/host-sim/oscsim/bench_oscsim_agreement.sh: build/host/oscsim build/host-fixed/oscsim
+BENCH_PROGS += tests/host-sim/oscsim/bench_oscsim_agreement.sh
 
 # Pictures for the README: `make plots` (PNG + SVG in build/plots/, the PNGs
 # copied to docs/img/): the maps, the phase portraits, and a replayed drive
@@ -74,5 +77,5 @@ endif
 	cp build/plots/*.png docs/img/
 
 # Each picture made (small grids) and opened; the committed PNGs checked.
-tests/sim/test_plots.py: build/host/oscsim
-TEST_PROGS += tests/sim/test_plots.py
+tests/tools/plots/test_plotlib.py: build/host/oscsim
+TEST_PROGS += tests/tools/plots/test_plotlib.py

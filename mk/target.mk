@@ -84,9 +84,9 @@ FW_IMAGE := build/$(FW_CONFIG)/squeal-monitor
 firmware: $(FW_IMAGE).elf $(FW_IMAGE).bin $(FW_IMAGE).hex
 	@echo "== $(FW_IMAGE).elf ($(TARGET), $(NUMERIC))"
 	@$(ARM_SIZE) $(FW_IMAGE).elf
-	@tests/target/size-report.sh $(FW_IMAGE).elf
+	@tests/system/target/size-report.sh $(FW_IMAGE).elf
 	@$(PYTHON) tools/stack_usage.py $(FW_IMAGE).elf build/$(FW_CONFIG)/fw | tail -1
-	$(if $(filter fixed,$(NUMERIC)),tests/target/check-no-float.sh $(FW_IMAGE).elf)
+	$(if $(filter fixed,$(NUMERIC)),tests/system/target/check-no-float.sh $(FW_IMAGE).elf)
 
 stack-usage: $(FW_IMAGE).elf
 	$(PYTHON) tools/stack_usage.py $(FW_IMAGE).elf build/$(FW_CONFIG)/fw
@@ -105,69 +105,71 @@ $(eval $(call arm_config,stm32f4-ecutest,stm32f4,float,-DSQ_TARGET_TEST,$(FW_TAR
 # The model over the golden vectors: Cortex-M4F float on netduinoplus2,
 # Cortex-M3 fixed on netduino2 (STM32F205: the F4's memory map and
 # peripherals without FPU, so it runs the F4 HAL built for the M3), and the
-# same tv_run.c on the host builds; tests/target/run-golden.sh compares.
+# same tv_run.c on the host builds; tests/system/target/run-golden.sh compares.
 CPU_stm32f2 := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
 HAL_INC_stm32f2 := $(HAL_INC_stm32f4)
 FW_LIB_SRCS := $(filter-out firmware/app/%,$(FW_SRCS))
-TV_SRCS := tests/target/tv_run.c tests/target/tv_target.c
+TV_SRCS := tests/system/target/tv_run.c tests/system/target/tv_target.c
 
-build/tv/model_vectors_%.c: tests/golden/model_vectors.csv tests/target/gen_vectors.py
+build/tv/model_vectors_%.c: tests/support/golden/model_vectors.csv tests/system/target/gen_vectors.py
 	@mkdir -p $(@D)
-	$(PYTHON) tests/target/gen_vectors.py --numeric $* $< $@
+	$(PYTHON) tests/system/target/gen_vectors.py --numeric $* $< $@
 
 $(eval $(call arm_config,tv-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS) $(TV_SRCS) build/tv/model_vectors_float.c,$(LDS_stm32f4)))
 $(eval $(call arm_config,tv-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS) $(TV_SRCS) build/tv/model_vectors_fixed.c,$(LDS_stm32f4)))
 
-build/host/tv-digest: build/host/app/tests/target/tv_run.o build/host/app/tests/target/tv_host.o \
+build/host/tv-digest: build/host/app/tests/system/target/tv_run.o build/host/app/tests/system/target/tv_host.o \
 		build/host/app/build/tv/model_vectors_float.o build/host/libfirmware.a
+	@mkdir -p $(@D)
 	$(CC) -o $@ $^ -lm
-build/host-fixed/tv-digest: build/host-fixed/app/tests/target/tv_run.o build/host-fixed/app/tests/target/tv_host.o \
+build/host-fixed/tv-digest: build/host-fixed/app/tests/system/target/tv_run.o build/host-fixed/app/tests/system/target/tv_host.o \
 		build/host-fixed/app/build/tv/model_vectors_fixed.o build/host-fixed/libfirmware.a
+	@mkdir -p $(@D)
 	$(CC) -o $@ $^ -lm
 
 # bxCAN bit timing: pure arithmetic, tested on the host (cmocka)
-build/host/test_bxcan_timing: tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/bxcan.h
+build/host/test_bxcan_timing: tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/bxcan.h
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -o $@ tests/target/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
+	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -o $@ tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
 
 # Two-slot calibration storage over a simulated NOR flash (power cut at every
 # byte); the slot geometry comes from the link, as on the target. No PIE:
 # the slot size is an absolute linker symbol.
-build/test/test_calib_flash: tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h
+build/test/test_calib_flash: tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -o $@ \
-		tests/target/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \
+		tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \
 		-Wl,--defsym,__calib_start=calib_flash_sim,--defsym,__calib_slot_size=2048,--defsym,__calib_slot_count=2
 TEST_PROGS += build/test/test_calib_flash
 
 # Target-in-the-loop tests: the scripts run QEMU on images make builds first.
-tests/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
+tests/system/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
 	build/host/tv-digest build/host-fixed/tv-digest
-tests/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
-tests/target/check-images.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
+tests/system/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
+tests/system/target/check-images.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
 	build/stm32f103-float/squeal-monitor.elf
-TEST_PROGS += build/host/test_bxcan_timing tests/target/check-images.sh tests/target/run-golden.sh \
-	tests/target/run-ecu-boot.sh
+TEST_PROGS += build/host/test_bxcan_timing tests/system/target/check-images.sh tests/system/target/run-golden.sh \
+	tests/system/target/run-ecu-boot.sh
 
 # Bench images: the 1 ms monitor step on the M4F (float) and the M3 (fixed).
-BENCH_STEP_SRCS := $(FW_LIB_SRCS) tests/target/bench_step.c
+BENCH_STEP_SRCS := $(FW_LIB_SRCS) tests/system/target/bench_step.c
 $(eval $(call arm_config,bench-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 $(eval $(call arm_config,bench-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
-tests/target/bench-target.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
+tests/system/target/bench-target.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
 	build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
 	build/bench-m4f/bench-step.elf build/bench-m3/bench-step.elf
-BENCH_PROGS += tests/target/bench-target.sh
+BENCH_PROGS += tests/system/target/bench-target.sh
 # ... and one that divides by zero once it runs, to test the fault path
 $(eval $(call arm_config,stm32f4-faulttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 # ... one whose stack overflows on purpose (issue 14: fault handler on a broken stack)
 $(eval $(call arm_config,stm32f4-stacktest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_STACK_OVERFLOW,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
-tests/target/run-ecu-stack-overflow.sh: build/stm32f4-stacktest/squeal-monitor.elf
-tests/target/run-ecu-selftest.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
-TEST_PROGS += tests/target/run-ecu-stack-overflow.sh tests/target/run-ecu-selftest.sh
+tests/system/target/run-ecu-stack-overflow.sh: build/stm32f4-stacktest/squeal-monitor.elf
+tests/system/target/run-ecu-selftest.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
+TEST_PROGS += tests/system/target/run-ecu-stack-overflow.sh tests/system/target/run-ecu-selftest.sh
 # ... and one that takes the clock security system's NMI (the crystal stops)
 $(eval $(call arm_config,stm32f4-nmitest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_NMI,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
-tests/target/run-ecu-selftest.sh: build/stm32f4-nmitest/squeal-monitor.elf
+tests/system/target/run-ecu-selftest.sh: build/stm32f4-nmitest/squeal-monitor.elf
 # ... and one with a programming error (hal_contract_failed: file and line recorded, reset)
 $(eval $(call arm_config,stm32f4-contracttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_CONTRACT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
-tests/target/run-ecu-contract.sh: build/stm32f4-contracttest/squeal-monitor.elf
-TEST_PROGS += tests/target/run-ecu-contract.sh
+tests/system/target/run-ecu-contract.sh: build/stm32f4-contracttest/squeal-monitor.elf
+TEST_PROGS += tests/system/target/run-ecu-contract.sh

@@ -1,29 +1,29 @@
 # SPDX-License-Identifier: MIT
 # The monitor on a vehicle's bus (issue 11), Python side:
 #   tools/vehicle_calib.py                  calibration text (+ outputs DBC) from a vehicle DBC
-#   tests/vehicle/*.dbc, unseen/            fixture layouts written by the project
+#   tests/tools/fixtures/*.dbc, unseen/     fixture layouts written by the project
 #   tools/dbc_tolerant.py, vcalib_rules.py  its DBC reader for files from the field, its signal rules
-#   tests/vehicle/test_vehicle_calib.py     the tool vs canmatrix, refusals, --dbc-out, --base,
+#   tests/tools/test_vehicle_calib.py     the tool vs canmatrix, refusals, --dbc-out, --base,
 #                                           and the self-tests of the harnesses (no C needed)
-#   tests/vehicle/test_vehicle_field.py     field DBC layouts (tests/vehicle/field/): ranges, not
+#   tests/tools/test_vehicle_calib_field.py     field DBC layouts (tests/tools/fixtures/field/): ranges, not
 #                                           available, qualifiers, bad lines, mux, buses, units (no C)
-#   tests/vehicle/test_vehicle_crosscheck.py  decode --calib --inputs-csv == canmatrix, random frames
-#   tests/vehicle/test_vehicle_e2e.py       drive -> replay --calib -> outputs vs the reference
-#   tests/vehicle/test_vehicle_unseen.py    issue 11's Done-when layout (tests/vehicle/unseen/)
-#   tests/vehicle/test_realcan_sweep.py     every integer signal of the real DBC files of the
+#   tests/tools/test_vehicle_calib_crosscheck.py  decode --calib --inputs-csv == canmatrix, random frames
+#   tests/tools/test_vehicle_calib_e2e.py       drive -> replay --calib -> outputs vs the reference
+#   tests/tools/test_vehicle_calib_unseen.py    issue 11's Done-when layout (tests/tools/fixtures/unseen/)
+#   tests/system/realcan/test_realcan_sweep.py     every integer signal of the real DBC files of the
 #                                           realcan collection beside the repository (a counted
 #                                           skip without it)
-#   tests/vehicle/test_realcan_drives.py    the recorded drives of that collection: calibrated
+#   tests/system/realcan/test_realcan_drives.py    the recorded drives of that collection: calibrated
 #                                           from their DBC only, replayed, checked (a counted skip
 #                                           without it); --table prints the figures
 # The crosscheck, e2e and unseen tests run the sanitizer builds of squeal-sim
 # (float and fixed), each also as the tool's calib-check; the sweep runs
 # build/host/squeal-sim, the tool's default checker.
-VEHICLE_SIM_TESTS := tests/vehicle/test_vehicle_crosscheck.py tests/vehicle/test_vehicle_e2e.py \
-	tests/vehicle/test_vehicle_unseen.py
+VEHICLE_SIM_TESTS := tests/tools/test_vehicle_calib_crosscheck.py tests/tools/test_vehicle_calib_e2e.py \
+	tests/tools/test_vehicle_calib_unseen.py
 $(VEHICLE_SIM_TESTS): build/test/squeal-sim build/test-fixed/squeal-sim
 
-tests/vehicle/test_realcan_sweep.py tests/vehicle/test_realcan_drives.py: build/host/squeal-sim
+tests/system/realcan/test_realcan_sweep.py tests/system/realcan/test_realcan_drives.py: build/host/squeal-sim
 
-TEST_PROGS += tests/vehicle/test_vehicle_calib.py tests/vehicle/test_vehicle_field.py $(VEHICLE_SIM_TESTS) \
-	tests/vehicle/test_realcan_sweep.py tests/vehicle/test_realcan_drives.py
+TEST_PROGS += tests/tools/test_vehicle_calib.py tests/tools/test_vehicle_calib_field.py $(VEHICLE_SIM_TESTS) \
+	tests/system/realcan/test_realcan_sweep.py tests/system/realcan/test_realcan_drives.py

@@ -6,7 +6,7 @@ Tabulates H(s) = ln(2 I1(s) / s) - s (H(0) = 0) and its derivative
 H'(s) = I0(s)/I1(s) - 2/s - 1 (H'(0) = -1) on s = k/16, k = 0..512, as Q28
 integers. The firmware interpolates with cubic Hermite polynomials between
 nodes; the interpolation error is below (1/16)^4/384 * max|H''''| ~ 4e-8
-(tests/unit compare against scipy independently).
+(tests/firmware/model compare against scipy independently).
 
     /usr/bin/python3 tools/gen_bessel_table.py > firmware/model/bessel_table.c
 """

@@ -34,44 +34,44 @@ TEST_TIMEOUT_S = 120
 # The mapping table: source file -> the tests that should notice a change in
 # it (make targets; each one is built, then run). Host builds are the ASan +
 # UBSan variants, float and fixed.
-MODEL_TESTS = ["build/test/test_model", "build/test-fixed/test_model",
-               "build/test/test_model_props", "build/test-fixed/test_model_props"]
-MONITOR_TESTS = ["build/test/test_monitor", "build/test-fixed/test_monitor",
-                 "build/test/test_monitor_faults", "build/test-fixed/test_monitor_faults",
-                 "build/test/test_app", "build/test-fixed/test_app",
-                 "build/test/test_monitor_bounds", "build/test-fixed/test_monitor_bounds"]
-CALIB_TESTS = ["build/test/test_calib", "build/test-fixed/test_calib",
-               "build/test/test_calib_text"]
-PROTOCOL_TESTS = ["build/test/tests/unit/test_protocol",
-                  "tests/protocol/test_canmatrix_crosscheck.py",
-                  "tests/protocol/test_unpack_crosscheck.py"]
+MODEL_TESTS = ["build/test/tests/firmware/model/test_squeal_model", "build/test-fixed/tests/firmware/model/test_squeal_model",
+               "build/test/tests/firmware/model/test_squeal_model_props", "build/test-fixed/tests/firmware/model/test_squeal_model_props"]
+MONITOR_TESTS = ["build/test/tests/firmware/monitor/test_monitor", "build/test-fixed/tests/firmware/monitor/test_monitor",
+                 "build/test/tests/firmware/monitor/test_monitor_faults", "build/test-fixed/tests/firmware/monitor/test_monitor_faults",
+                 "build/test/tests/firmware/app/test_squeal_app", "build/test-fixed/tests/firmware/app/test_squeal_app",
+                 "build/test/tests/firmware/monitor/test_monitor_bounds", "build/test-fixed/tests/firmware/monitor/test_monitor_bounds"]
+CALIB_TESTS = ["build/test/tests/firmware/monitor/test_calib", "build/test-fixed/tests/firmware/monitor/test_calib",
+               "build/test/tests/host-sim/test_calib_text"]
+PROTOCOL_TESTS = ["build/test/tests/firmware/protocol/test_squeal_msgs",
+                  "tests/firmware/protocol/test_squeal_msgs_canmatrix.py",
+                  "tests/firmware/protocol/test_squeal_msgs_unpack.py"]
 # the vehicle input map (issue 11): extraction, protection, conversion
-INPUTMAP_TESTS = ["build/test/test_inputmap", "build/test-fixed/test_inputmap",
-                  "build/test/test_vehicle_inputs", "build/test-fixed/test_vehicle_inputs"]
+INPUTMAP_TESTS = ["build/test/tests/firmware/monitor/test_input_conv", "build/test-fixed/tests/firmware/monitor/test_input_conv",
+                  "build/test/tests/firmware/monitor/test_input_rx", "build/test-fixed/tests/firmware/monitor/test_input_rx"]
 TESTS_FOR = {
     "firmware/protocol/crc8_p01.c": PROTOCOL_TESTS,
-    "firmware/protocol/e2e_p01.c": PROTOCOL_TESTS + ["build/test/test_monitor_faults"],
-    "firmware/protocol/squeal_msgs.c": PROTOCOL_TESTS + ["build/test/test_app"],
+    "firmware/protocol/e2e_p01.c": PROTOCOL_TESTS + ["build/test/tests/firmware/monitor/test_monitor_faults"],
+    "firmware/protocol/squeal_msgs.c": PROTOCOL_TESTS + ["build/test/tests/firmware/app/test_squeal_app"],
     "firmware/monitor/monitor.c": MONITOR_TESTS,
-    "firmware/monitor/calib.c": CALIB_TESTS + ["build/test/test_monitor"],
-    "firmware/monitor/model_adapter.c": MONITOR_TESTS + ["build/test-fixed/test_model",
-                                                         "build/test/test_model_adapter",
-                                                         "build/test-fixed/test_model_adapter"],
-    "firmware/app/squeal_app.c": ["build/test/test_app", "build/test-fixed/test_app",
-                                  "build/test/test_fault_injection"],
+    "firmware/monitor/calib.c": CALIB_TESTS + ["build/test/tests/firmware/monitor/test_monitor"],
+    "firmware/monitor/model_adapter.c": MONITOR_TESTS + ["build/test-fixed/tests/firmware/model/test_squeal_model",
+                                                         "build/test/tests/firmware/monitor/test_model_adapter",
+                                                         "build/test-fixed/tests/firmware/monitor/test_model_adapter"],
+    "firmware/app/squeal_app.c": ["build/test/tests/firmware/app/test_squeal_app", "build/test-fixed/tests/firmware/app/test_squeal_app",
+                                  "build/test/tests/firmware/app/test_squeal_app_fault_injection"],
     "firmware/model/squeal_model_common.c": MODEL_TESTS,
-    "firmware/model/squeal_model_float.c": ["build/test/test_model", "build/test/test_model_props"],
-    "firmware/model/squeal_model_fixed.c": ["build/test-fixed/test_model",
-                                            "build/test-fixed/test_model_props"],
-    "firmware/model/fixmath.c": ["build/test-fixed/test_model", "build/test-fixed/test_model_props",
-                                 "build/test-fixed/test_fixmath"],
-    "firmware/model/sq_mathf.c": ["build/test/test_model", "build/test/test_model_props"],
+    "firmware/model/squeal_model_float.c": ["build/test/tests/firmware/model/test_squeal_model", "build/test/tests/firmware/model/test_squeal_model_props"],
+    "firmware/model/squeal_model_fixed.c": ["build/test-fixed/tests/firmware/model/test_squeal_model",
+                                            "build/test-fixed/tests/firmware/model/test_squeal_model_props"],
+    "firmware/model/fixmath.c": ["build/test-fixed/tests/firmware/model/test_squeal_model", "build/test-fixed/tests/firmware/model/test_squeal_model_props",
+                                 "build/test-fixed/tests/firmware/model/test_fixmath"],
+    "firmware/model/sq_mathf.c": ["build/test/tests/firmware/model/test_squeal_model", "build/test/tests/firmware/model/test_squeal_model_props"],
     "firmware/protocol/can_signal.c": INPUTMAP_TESTS,
     "firmware/protocol/e2e_p02.c": INPUTMAP_TESTS,
     "firmware/monitor/input_conv.c": INPUTMAP_TESTS,
     "firmware/monitor/input_rx.c": INPUTMAP_TESTS + MONITOR_TESTS,
-    "host-sim/candump_log.c": ["build/test/test_candump_log"],
-    "host-sim/calib_text.c": ["build/test/test_calib_text"],
+    "host-sim/candump_log.c": ["build/test/tests/host-sim/test_candump_log"],
+    "host-sim/calib_text.c": ["build/test/tests/host-sim/test_calib_text"],
 }
 
 

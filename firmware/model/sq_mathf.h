@@ -3,7 +3,7 @@
  * Single-precision elementary functions for the float build of the model.
  * firmware/ is freestanding (no libm), and the Cortex-M4F FPU is single
  * precision only, so these work in float throughout. Accuracy: a few ulp over
- * the documented argument ranges (proved against numpy in tests/unit).
+ * the documented argument ranges (proved against numpy in tests/firmware/model).
  */
 #ifndef SQ_MATHF_H
 #define SQ_MATHF_H

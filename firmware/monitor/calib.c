@@ -199,7 +199,7 @@ static const calib_t factory = {
 	.wheel_radius_um = 300000U,
 	.bitrate_kbps = 500U,
 	/* the identifiers of squeal.dbc (squeal_msgs.h, checked against the
-	 * DBC by tests/protocol): written once, there */
+	 * DBC by tests/firmware/protocol): written once, there */
 	.disc_speed_id = (uint16_t)MSG_DISC_SPEED_ID,
 	.pad_force_id = (uint16_t)MSG_PAD_FORCE_ID,
 	.status_id = (uint16_t)MSG_SQUEAL_STATUS_ID,

@@ -7,7 +7,7 @@
  *   byte 1 bits 0..3 counter 0..15, +1 (mod 16) per sent frame
  *   CRC over bytes 1 .. len-1, then one Data ID byte: DataIDList[counter].
  * The spec's example (DataIDList 0x01..0x10, bytes 1..7 = 01 00 .. 00)
- * protects to CRC 0x1B; tests/unit/test_inputmap.c checks it.
+ * protects to CRC 0x1B; tests/firmware/monitor/test_input_conv.c checks it.
  * The receiver's sequence machine is P01's (e2e_rx_sequence) with modulus
  * 16; the statuses are e2e_p01_status_t.
  */

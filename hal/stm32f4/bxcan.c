@@ -724,7 +724,7 @@ void CAN2_SCE_IRQHandler(void) { sce_irq(1U); }
 #endif
 
 #if defined(BXCAN_SIM)
-/* Host simulation only (tests/hal/bxcan_sim.c): a fresh driver per test. */
+/* Host simulation only (tests/hal/stm32f4/bxcan_sim.c): a fresh driver per test. */
 void bxcan_sim_driver_reset(void);
 void bxcan_sim_driver_reset(void)
 {

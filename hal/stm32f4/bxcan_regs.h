@@ -11,7 +11,7 @@
 #include "cortex_m.h"
 
 /* Register offsets; the driver reads and writes them through can_rd() and
- * can_wr(), which the host simulation (tests/hal/bxcan_sim.c, BXCAN_SIM)
+ * can_wr(), which the host simulation (tests/hal/stm32f4/bxcan_sim.c, BXCAN_SIM)
  * replaces, so that write-1-to-clear bits and mailboxes behave as on the
  * chip. */
 #define CAN_MCR   0x000U

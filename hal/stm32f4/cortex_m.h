@@ -95,7 +95,7 @@ static inline void cm_nvic_disable(uint32_t irq)
 	cm_isb();
 }
 #else
-/* Host builds of a driver (tests/hal/bxcan_sim.c): the simulation provides
+/* Host builds of a driver (tests/hal/stm32f4/bxcan_sim.c): the simulation provides
  * these, with an interrupt mask and NVIC enables it honours. */
 void cm_dsb(void);
 void cm_isb(void);

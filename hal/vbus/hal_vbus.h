@@ -4,7 +4,7 @@
  * clock and HAL_CAN_BUSES virtual CAN buses, for running the unchanged
  * firmware deterministically in virtual time (squeal-sim replay), for the
  * unit tests (tests/support/test_hal.c is a thin test layer on top of it)
- * and for the HAL conformance suite (tests/hal/conf_vbus.c).
+ * and for the HAL conformance suite (tests/hal/vbus/conf_hal_vbus_can.c).
  *
  * It is chosen at link time (build/<variant>/libhal_vbus.a instead of
  * libhal_linux.a); nothing switches at run time. The program that links it

@@ -2,9 +2,9 @@
 /*
  * conformance.c: the one HAL conformance suite. The same source runs on
  * every backend, linked with that backend's harness (conformance_backend.h):
- * the in-memory bus (conf_vbus.c, make test), SocketCAN on vcan0 + vcan1 in
- * the QEMU guest (conf_socketcan.c, tests/vcan/run-conformance.sh) and bxCAN
- * on simulated registers (conf_bxcan_sim.c). mk/hal-conformance.mk links it.
+ * the in-memory bus (conf_hal_vbus_can.c, make test), SocketCAN on vcan0 + vcan1 in
+ * the QEMU guest (conf_hal_linux_can.c, tests/system/vcan/run-conformance.sh) and bxCAN
+ * on simulated registers (conf_bxcan.c). mk/hal-conformance.mk links it.
  *
  * It talks to the backend only through hal/hal.h; the harness is the other
  * side of the wire. Per bus it checks: filter semantics (standard, extended,

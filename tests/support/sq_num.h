@@ -9,7 +9,7 @@
  * saturates to INT32_MIN/INT32_MAX outside the format's range and maps NaN
  * to INT32_MIN. Every saturated value lies outside the model's input domain,
  * so squeal_model.h says it must be classified INVALID.
- * tests/reference/squeal_reference.py (to_float32, to_fixed_raw) mirrors
+ * tests/support/reference/squeal_reference.py (to_float32, to_fixed_raw) mirrors
  * these rules; keep them identical.
  *
  * Test code only: uses double and libm.

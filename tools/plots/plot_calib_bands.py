@@ -16,7 +16,7 @@ Monte Carlo: m, w0, D independent normals, (a, dmu) bivariate normal with
 slope_delta_mu_corr, from the calibration's *_sd keys (fixed seed).
 First order: ln N_B +- 1.645 sigma_g with the closed-form sigma of
 squeal_sigma.h (written again here in numpy with scipy's I0/I1; the firmware
-itself is checked against Monte Carlo by tests/unit/test_sigma.c).
+itself is checked against Monte Carlo by tests/firmware/model/test_squeal_sigma.c).
 The figure states how far the two pictures are apart: the largest relative
 difference in N of the 5 %, 50 % and 95 % borders over the plotted speeds,
 against the tolerance TOLERANCE.

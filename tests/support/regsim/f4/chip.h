@@ -1,0 +1,29 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The real STM32F405 chip header with every peripheral this test touches
+ * moved into plain arrays (tests/hal/stm32f4/test_board_regsim.c), so clock.c and
+ * iwdg.c run on the host against memory the test inspects and drives.
+ */
+#ifndef REGSIM_F4_CHIP_H
+#define REGSIM_F4_CHIP_H
+
+#include "../../../../hal/stm32f4/stm32f405/chip.h"
+
+#include <stdint.h>
+
+extern uint32_t regsim_rcc[64], regsim_pwr[4], regsim_flash[8], regsim_tim11[32], regsim_iwdg[4],
+	regsim_dbgmcu[4];
+#undef RCC_BASE
+#undef PWR_BASE
+#undef FLASH_R_BASE
+#undef TIM11_BASE
+#undef IWDG_BASE
+#undef CHIP_DBGMCU_IWDG_REG
+#define RCC_BASE ((uintptr_t)regsim_rcc)
+#define PWR_BASE ((uintptr_t)regsim_pwr)
+#define FLASH_R_BASE ((uintptr_t)regsim_flash)
+#define TIM11_BASE ((uintptr_t)regsim_tim11)
+#define IWDG_BASE ((uintptr_t)regsim_iwdg)
+#define CHIP_DBGMCU_IWDG_REG REG32((uintptr_t)&regsim_dbgmcu[2]) /* 0xE0042008 */
+
+#endif /* REGSIM_F4_CHIP_H */

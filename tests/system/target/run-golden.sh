@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Target-in-the-loop, model: the golden vectors (tests/support/golden/model_vectors.csv)
+# through squeal_model_classify on
+#   - a Cortex-M4F (float build) under qemu-system-arm -M netduinoplus2,
+#   - a Cortex-M3 (fixed build, no FPU) under qemu-system-arm -M netduino2,
+# each against the host build of the same numeric mode (build/host*/tv-digest,
+# the same tv_run.c on the host's libfirmware.a): the FNV-1a digests over all
+# output bits (return code, state, flags, eight result fields) must be equal,
+# per chunk of 512 classifications and in total. The number of classifications
+# is checked against the CSV itself.
+# Prints "RESULT: N passed, M failed".
+set -u
+cd "$(dirname "$0")/../../.."
+out=build/test-logs/target-golden
+mkdir -p "$out"
+pass=0; fail=0
+ok() { pass=$((pass + 1)); echo "PASS: $*"; }
+ko() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+csv_count() { # rows of the CSV the given numeric build runs
+	/usr/bin/python3 - "$1" <<'PY'
+import csv, sys
+rows = csv.DictReader(l for l in open("tests/support/golden/model_vectors.csv") if not l.startswith("#"))
+print(sum(1 for r in rows if r["variant"] in ("both", sys.argv[1])))
+PY
+}
+
+run_mode() { # numeric machine image host_prog
+	local num=$1 machine=$2 elf=$3 host=$4
+	local t="$out/$num-target.txt" h="$out/$num-host.txt"
+	# -icount shift=0: deterministic virtual time (1 ns per instruction)
+	timeout 300 qemu-system-arm -M "$machine" -icount shift=0 -nographic -monitor none -serial none \
+		-semihosting-config enable=on,target=native -kernel "$elf" >"$t" 2>&1
+	local rc=$?
+	"$host" >"$h" 2>&1 || ko "$num: host digest program failed"
+	if [ "$rc" != 0 ]; then
+		ko "$num: $machine run exited $rc (see $t)"
+		tail -5 "$t"
+		return
+	fi
+	local td hd
+	td=$(grep '^DIGEST' "$t"); hd=$(grep '^DIGEST' "$h")
+	echo "  target ($machine): $td"
+	echo "  host:              $hd"
+	if [ -n "$td" ] && [ "$td" = "$hd" ]; then
+		ok "$num: $machine digest equals the host build's, bit for bit"
+	else
+		local nd
+		nd=$(diff <(grep '^CHUNK' "$t") <(grep '^CHUNK' "$h") | grep -c '^<')
+		ko "$num: digests differ ($nd of $(grep -c '^CHUNK' "$h") chunks of 512 differ)"
+	fi
+	# Each classification is timed (bench_ticks.h); a backwards step of the
+	# timer would show up as a delta near 2^32.
+	local tmax
+	tmax=$(grep '^TIMING' "$t" | sed -nE 's/.* ticks_max=([0-9]+) .*/\1/p')
+	if [ -n "$tmax" ] && [ "$tmax" -lt 2147483648 ]; then
+		ok "$num: timer never went backwards over $(grep -c '^CHUNK' "$t") chunks (largest delta $tmax)"
+	else
+		ko "$num: timer went backwards (largest delta ${tmax:-?})"
+	fi
+	local want n
+	want=$(csv_count "$num")
+	n=$(echo "$td" | sed -nE 's/.* n=([0-9]+) .*/\1/p')
+	if [ "$n" = "$want" ]; then
+		ok "$num: $n classifications = rows of the CSV for this build"
+	else
+		ko "$num: ran ${n:-?} classifications, CSV has $want"
+	fi
+}
+
+run_mode float netduinoplus2 build/tv-m4f/model-vectors.elf build/host/tv-digest
+run_mode fixed netduino2 build/tv-m3/model-vectors.elf build/host-fixed/tv-digest
+if tests/system/target/check-no-float.sh build/tv-m3/model-vectors.elf; then
+	ok "fixed M3 test image has no floating point"
+else
+	ko "fixed M3 test image contains floating point"
+fi
+
+echo "RESULT: $pass passed, $fail failed"
+[ "$fail" = 0 ]
