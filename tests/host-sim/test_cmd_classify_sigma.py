@@ -19,6 +19,9 @@ import subprocess
 import sys
 import tempfile
 
+# tests/ of this checkout, and the folders its helper modules live in
+_TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
+sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 from checks import ROOT, Checks
 
 GOLDEN = os.path.join(ROOT, "tests", "support", "golden", "sigma_vectors.csv")
