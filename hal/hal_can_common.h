@@ -51,6 +51,14 @@ int hal_can_frame_check(const hal_can_frame_t *frame);
 int hal_can_send_admit(const hal_can_frame_t *frame, hal_can_status_t *status, bool fd_on);
 
 /*
+ * hal_can_receive()'s preamble, the same on every backend: SQ_ENODEV (the
+ * bus does not exist here: exists false), SQ_ENETDOWN (not running), else
+ * SQ_OK and the backend hands over its oldest frame. frame NULL is a
+ * programming error.
+ */
+int hal_can_receive_admit(const hal_can_frame_t *frame, bool exists, bool running);
+
+/*
  * hal_can_set_rx_filter()'s check: SQ_OK, or SQ_EINVAL when a filter has a
  * flag outside HAL_CAN_FILTER_FLAGS or an id or mask beyond its kind's
  * range. More than HAL_CAN_MAX_FILTERS, or NULL with count > 0, is a

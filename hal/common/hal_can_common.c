@@ -58,6 +58,21 @@ int hal_can_send_admit(const hal_can_frame_t *frame, hal_can_status_t *status, b
 	return rc;
 }
 
+int hal_can_receive_admit(const hal_can_frame_t *frame, bool exists, bool running)
+{
+	int rc = SQ_OK;
+
+	HAL_REQUIRE(frame != NULL);
+	if (!exists) {
+		rc = SQ_ENODEV;
+	} else if (!running) {
+		rc = SQ_ENETDOWN;
+	} else {
+		/* the backend takes its oldest frame */
+	}
+	return rc;
+}
+
 int hal_can_filter_check(const hal_can_filter_t *filters, uint32_t count)
 {
 	uint32_t i;

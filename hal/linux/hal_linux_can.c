@@ -521,14 +521,11 @@ static uint8_t hal_flags_of(canid_t can_id, bool fd, uint8_t fd_flags)
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
 	lc_t *c = linux_can_bus_of(bus);
+	const int rc = hal_can_receive_admit(frame, c != NULL, (c != NULL) && (c->fd >= 0));
 	int skipped;
 
-	HAL_REQUIRE(frame != NULL);
-	if (c == NULL) {
-		return SQ_ENODEV;
-	}
-	if (c->fd < 0) {
-		return SQ_ENETDOWN;
+	if (rc != SQ_OK) {
+		return rc;
 	}
 	for (skipped = 0; skipped < MAX_SKIP_PER_RECEIVE; skipped++) {
 		union {

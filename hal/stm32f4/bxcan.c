@@ -546,14 +546,11 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
 	bus_state_t *st = bxcan_bus_get(bus);
+	const int rc = hal_can_receive_admit(frame, st != NULL, (st != NULL) && st->started);
 	uint32_t tail;
 
-	HAL_REQUIRE(frame != NULL);
-	if (st == NULL) {
-		return SQ_ENODEV;
-	}
-	if (!st->started) {
-		return SQ_ENETDOWN;
+	if (rc != SQ_OK) {
+		return rc;
 	}
 	tail = st->rx_tail;
 	if (tail == st->rx_head) {

@@ -134,13 +134,11 @@ bool hal_vbus_next_arrival_us(uint64_t *t_us)
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
 	vbus_t *b = vbus_can_bus_of(bus);
+	const int rc = hal_can_receive_admit(frame, b != NULL,
+					     (b != NULL) && (b->status.state != HAL_CAN_STATE_STOPPED));
 
-	HAL_REQUIRE(frame != NULL);
-	if (b == NULL) {
-		return SQ_ENODEV;
-	}
-	if (b->status.state == HAL_CAN_STATE_STOPPED) {
-		return SQ_ENETDOWN;
+	if (rc != SQ_OK) {
+		return rc;
 	}
 	if ((b->rx_count == 0U) || (b->rx[b->rx_head].timestamp_us > hal_time_us())) {
 		return SQ_EAGAIN;
