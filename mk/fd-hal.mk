@@ -20,3 +20,17 @@ build/test/tests/hal/common/test_hal_can_common-classic: $(HAL_CAN_COMMON_TEST_D
 		$(HAL_CAN_COMMON_TEST_SRCS) -lcmocka
 TEST_PROGS += build/test/tests/hal/common/test_hal_can_common \
 	build/test/tests/hal/common/test_hal_can_common-classic
+
+# The scheduler hands FD frames of up to 64 bytes to the monitors
+# (firmware/app/squeal_app.c), both numeric builds, on the in-memory bus:
+#   build/<v>/tests/firmware/app/test_squeal_app_fd
+FD_APP_TEST_VARIANTS := test test-fixed
+define fd_app_test_rules
+build/$(1)/tests/firmware/app/test_squeal_app_fd: build/$(1)/app/tests/firmware/app/test_squeal_app_fd.o \
+		build/$(1)/app/tests/support/test_hal.o build/$(1)/app/tests/support/test_contract.o \
+		build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
+	@mkdir -p $$(@D)
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,$(FD_APP_TEST_VARIANTS),$(eval $(call fd_app_test_rules,$(v))))
+TEST_PROGS += $(foreach v,$(FD_APP_TEST_VARIANTS),build/$(v)/tests/firmware/app/test_squeal_app_fd)

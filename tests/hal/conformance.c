@@ -93,7 +93,8 @@ static hal_can_frame_t frame(uint32_t id, uint8_t flags, uint8_t dlc, uint8_t se
 	f.id = id;
 	f.flags = flags;
 	f.dlc = dlc;
-	for (i = 0U; (i < dlc) && (i < HAL_CAN_MAX_DLEN); i++) {
+	/* a remote frame carries no data: its dlc is the length it asks for */
+	for (i = 0U; ((flags & HAL_CAN_FLAG_RTR) == 0U) && (i < dlc) && (i < HAL_CAN_MAX_DLEN); i++) {
 		f.data[i] = (uint8_t)(seed + 17U * i);
 	}
 	return f;
