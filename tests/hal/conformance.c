@@ -106,6 +106,17 @@ static bool same_frame(const hal_can_frame_t *a, const hal_can_frame_t *b)
 	       (memcmp(a->data, b->data, a->dlc) == 0);
 }
 
+static bool same_frames(const hal_can_frame_t *got, uint32_t n, const hal_can_frame_t *want, uint32_t m)
+{
+	uint32_t i;
+	bool same = (n == m);
+
+	for (i = 0U; same && (i < n); i++) {
+		same = same_frame(&got[i], &want[i]);
+	}
+	return same;
+}
+
 typedef int (*take_fn_t)(uint8_t bus, hal_can_frame_t *frame);
 
 /* Every frame `take` gives for bus, oldest first (at most max kept). */
@@ -145,6 +156,33 @@ static void inject_all(uint8_t bus, const hal_can_frame_t *f, uint32_t n)
 		(void)conf_wire_inject(bus, &f[i]);
 	}
 	conf_let_time_pass(SETTLE_US);
+}
+
+/* This node sends n frames on bus (they then have time to reach the
+ * wire); the first refusal, or SQ_OK. */
+static int send_all(uint8_t bus, const hal_can_frame_t *f, uint32_t n)
+{
+	uint32_t i;
+	int rc = SQ_OK;
+
+	for (i = 0U; i < n; i++) {
+		const int r = hal_can_send(bus, &f[i]);
+
+		rc = (rc != SQ_OK) ? rc : r;
+	}
+	conf_let_time_pass(SETTLE_US);
+	return rc;
+}
+
+/* The check that this node's n frames reach bus's wire intact, in order. */
+static void check_sent(uint8_t bus, const hal_can_frame_t *f, uint32_t n, const char *what)
+{
+	hal_can_frame_t got[MAX_DRAIN];
+	const int rc = send_all(bus, f, n);
+	const uint32_t on_wire = wire(bus, got, MAX_DRAIN);
+
+	report((rc == SQ_OK) && same_frames(got, on_wire, f, n), bus, what,
+	       "rc %d, %u on the wire for %u sent", rc, (unsigned int)on_wire, (unsigned int)n);
 }
 
 /* ---- filters ---------------------------------------------------------------- */
@@ -325,28 +363,12 @@ static void check_send(uint8_t bus)
 	const hal_can_frame_t f[3] = { frame(0x321U, 0U, 4U, 0xDEU), frame(0x1ABCDEF0U, HAL_CAN_FLAG_EXT, 8U, 0x11U),
 				       frame(0x7FFU, 0U, 0U, 0U) };
 	hal_can_frame_t bad = frame(0x800U, 0U, 1U, 0U);
-	hal_can_frame_t got[4];
-	uint32_t n;
-	uint32_t i;
-	int rc = SQ_OK;
-	bool same = true;
+	int rc;
 
 	if (!set_up(bus, "send")) {
 		return;
 	}
-	for (i = 0U; i < 3U; i++) {
-		const int r = hal_can_send(bus, &f[i]);
-
-		rc = (rc != SQ_OK) ? rc : r;
-	}
-	conf_let_time_pass(SETTLE_US);
-	n = wire(bus, got, 4U);
-	for (i = 0U; (i < n) && (i < 3U); i++) {
-		same = same && same_frame(&got[i], &f[i]);
-	}
-	report((rc == SQ_OK) && (n == 3U) && same, bus,
-	       "send: standard and extended frames reach the wire in order", "rc %d, %u on the wire", rc,
-	       (unsigned int)n);
+	check_sent(bus, f, 3U, "send: standard and extended frames reach the wire in order");
 	rc = hal_can_send(bus, &bad);
 	bad = frame(0x100U, 0U, 1U, 0U);
 	bad.dlc = 9U;
@@ -687,17 +709,6 @@ static uint32_t fd_frames(hal_can_frame_t *f)
 	return FD_CASES;
 }
 
-static bool same_frames(const hal_can_frame_t *got, uint32_t n, const hal_can_frame_t *want, uint32_t m)
-{
-	uint32_t i;
-	bool same = (n == m);
-
-	for (i = 0U; same && (i < n); i++) {
-		same = same_frame(&got[i], &want[i]);
-	}
-	return same;
-}
-
 /* A bus that carries FD: each frame both ways, intact, flags kept. */
 static void check_fd_round_trip(uint8_t bus)
 {
@@ -705,22 +716,12 @@ static void check_fd_round_trip(uint8_t bus)
 	hal_can_frame_t got[FD_CASES + 2U];
 	const uint32_t m = fd_frames(f);
 	uint32_t n;
-	uint32_t i;
-	int rc = SQ_OK;
 
 	if (!set_up(bus, "FD round trip")) {
 		return;
 	}
-	for (i = 0U; i < m; i++) {
-		const int r = hal_can_send(bus, &f[i]);
-
-		rc = (rc != SQ_OK) ? rc : r;
-	}
-	conf_let_time_pass(SETTLE_US);
-	n = wire(bus, got, FD_CASES + 2U);
-	report((rc == SQ_OK) && same_frames(got, n, f, m), bus,
-	       "FD send: DLC codes 9..15 (12..64 bytes), 0 and 8 bytes, std/ext, BRS/ESI kept, in order",
-	       "rc %d, %u of %u on the wire intact", rc, (unsigned int)n, (unsigned int)m);
+	check_sent(bus, f, m,
+		   "FD send: DLC codes 9..15 (12..64 bytes), 0 and 8 bytes, std/ext, BRS/ESI kept, in order");
 	inject_all(bus, f, m);
 	n = drain(bus, got, FD_CASES + 2U);
 	report(same_frames(got, n, f, m), bus,
@@ -744,22 +745,12 @@ static void check_fd_mixed(uint8_t bus)
 					   { 0x18DAF110U, 0x1FFFFFFEU, HAL_CAN_FLAG_EXT } };
 	hal_can_frame_t got[8];
 	uint32_t n;
-	uint32_t i;
-	int rc = SQ_OK;
+	int rc;
 
 	if (!set_up(bus, "classic and FD on one bus")) {
 		return;
 	}
-	for (i = 0U; i < 6U; i++) {
-		const int r = hal_can_send(bus, &f[i]);
-
-		rc = (rc != SQ_OK) ? rc : r;
-	}
-	conf_let_time_pass(SETTLE_US);
-	n = wire(bus, got, 8U);
-	report((rc == SQ_OK) && same_frames(got, n, f, 6U), bus,
-	       "classic and FD frames sent on one bus: in order, each in its format", "rc %d, %u of 6",
-	       rc, (unsigned int)n);
+	check_sent(bus, f, 6U, "classic and FD frames sent on one bus: in order, each in its format");
 	rc = hal_can_set_rx_filter(bus, filt, 2U);
 	inject_all(bus, f, 6U);
 	n = drain(bus, got, 8U);
