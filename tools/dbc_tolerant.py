@@ -32,7 +32,8 @@ canmatrix makes the names).
 
 A message's frame format (Index.frame_format) is its VFrameFormat attribute
 read here, as the ENUM of its BA_DEF_ lists the values: the value by index or
-by text, else the BA_DEF_DEF_ default; None without the attribute.
+by text, else the BA_DEF_DEF_ default (and whether the message's own BA_
+said it); None without the attribute.
 """
 import contextlib
 import io
@@ -205,12 +206,13 @@ class Index:
         return value if value in values else None
 
     def frame_format(self, cid):
-        """The message's VFrameFormat text ("StandardCAN_FD", ...), by its BA_
-        or the default; None when the DBC does not say."""
+        """(the message's VFrameFormat text ("StandardCAN_FD", ...) or None,
+        True when its own BA_ says so, False for the default or nothing)."""
+        given = (cid, "VFrameFormat") in self.msg_attr
         v = self.msg_attr.get((cid, "VFrameFormat"), self.defaults.get("VFrameFormat"))
         if v is None:
-            return None
-        return self.enum_text("VFrameFormat", v) if "VFrameFormat" in self.enums else v
+            return None, False
+        return (self.enum_text("VFrameFormat", v) if "VFrameFormat" in self.enums else v), given
 
 
 def _unquote(v):
