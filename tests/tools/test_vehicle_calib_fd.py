@@ -285,7 +285,7 @@ def random_fd_frames(db, inputs, n, seed):
         cid, ext = rng.choice(keys)
         fr = frames[(cid, ext)]
         x = rng.random()
-        if fr.is_fd or fr.size > 8:
+        if gen_drive.fd_message(fr):
             if x < 0.75:
                 n_bytes, fd = fr.size, True
             elif x < 0.88:
@@ -330,9 +330,9 @@ def check_drive(r, name, layout):
     for msg, period in layout["period_s"].items():
         f = db.frame_by_name(msg)
         mine = [d for t, i, e, d in frames if i == f.arbitration_id.id and e == bool(f.arbitration_id.extended)
-                and isinstance(d, gen_drive.FdData) == (f.is_fd or f.size > 8)]
+                and gen_drive.is_message(f, d)]
         idt = ("%08X" if f.arbitration_id.extended else "%03X") % f.arbitration_id.id
-        sep = "##%X" % layout["fd_flags"] if f.is_fd or f.size > 8 else "#"
+        sep = "##%X" % layout["fd_flags"] if gen_drive.fd_message(f) else "#"
         line = re.compile(r" %s%s[0-9A-F]*$" % (idt, sep))
         r.check(mine and all(len(d) == f.size for d in mine) and
                 sum(1 for l in lines if line.search(l)) == len(mine),

@@ -73,7 +73,8 @@ def expected_points(layout, db, frames):
         pts = []
         for t, cid, ext, data in frames:
             for frame, sig, role in ((sframe, ssig, "s"), (fframe, fsig, "f")):
-                if cid != frame.arbitration_id.id or ext != bool(frame.arbitration_id.extended):
+                if cid != frame.arbitration_id.id or ext != bool(frame.arbitration_id.extended) \
+                        or not gen_drive.is_message(frame, data):
                     continue
                 dec = frame.decode(bytearray(data))
                 if sig not in dec:
@@ -258,7 +259,8 @@ def check_p05(r, label, layout, db, tmp, replay, frames, cal, err):
     msg = mine[0][2]
     f = db.frame_by_name(msg)
     hit = next(k for k, (t, cid, ext, d) in enumerate(frames) if cid == f.arbitration_id.id
-               and ext == bool(f.arbitration_id.extended) and t > frames[0][0] + 1.0)
+               and ext == bool(f.arbitration_id.extended) and t > frames[0][0] + 1.0
+               and gen_drive.is_message(f, d))
     t, cid, ext, d = frames[hit]
     bad = bytearray(d)
     off = layout["p05"][msg][0][1]

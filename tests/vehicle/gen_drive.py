@@ -62,6 +62,17 @@ class FdData(bytes):
     flags = 0x5
 
 
+def fd_message(frame):
+    """The DBC message is sent as CAN FD frames (VFrameFormat, or a DLC above 8)."""
+    return bool(frame.is_fd) or frame.size > 8
+
+
+def is_message(frame, data):
+    """A logged frame of the message's identifier is that message: its
+    format (FD or classic) and at least its DLC."""
+    return isinstance(data, FdData) == fd_message(frame) and len(data) >= frame.size
+
+
 def fd_data(data, flags):
     d = FdData(data)
     d.flags = flags
@@ -172,7 +183,7 @@ class Drive:
             data[0] = vehref.p01_crc(data, int(frame.attributes["E2E_DataID"]))
         for block in self.layout.get("p05", {}).get(frame.name, ()):
             p05_fill(data, block, seq)
-        if frame.is_fd or frame.size > 8:
+        if fd_message(frame):
             return fd_data(data, self.layout.get("fd_flags", FdData.flags))
         return bytes(data)
 
