@@ -17,3 +17,13 @@ build/$(1)/tests/host-sim/test_candump_log_fd: build/$(1)/app/tests/host-sim/tes
 endef
 $(foreach v,test test-fixed,$(eval $(call fd_logs_unit,$(v))))
 TEST_PROGS += build/test/tests/host-sim/test_candump_log_fd
+
+# replay and decode --inputs-csv of FD logs written by the test (P05 of its
+# own, states from the reference model), both numeric builds
+tests/host-sim/test_cmd_replay_fd.py: build/test/squeal-sim build/test-fixed/squeal-sim
+TEST_PROGS += tests/host-sim/test_cmd_replay_fd.py
+
+# CAN FD on a real vcan0 (MTU 72) in the QEMU guest: canplayer/candump of an
+# FD log give the same lines; plant --iface -> ecu of the FD layout live
+tests/system/run-fd-log.sh: build/host/squeal-sim
+TEST_PROGS += tests/system/run-fd-log.sh
