@@ -27,3 +27,7 @@ TEST_PROGS += tests/host-sim/test_cmd_replay_fd.py
 # FD log give the same lines; plant --iface -> ecu of the FD layout live
 tests/system/run-fd-log.sh: build/host/squeal-sim
 TEST_PROGS += tests/system/run-fd-log.sh
+
+# make bench: replay frames/s of FD traffic beside classic traffic
+tests/host-sim/bench_cmd_replay_fd.sh: build/host/squeal-sim
+BENCH_PROGS += tests/host-sim/bench_cmd_replay_fd.sh
