@@ -471,6 +471,13 @@ static int plant_setup(plant_t *p, int argc, char **argv)
 	}
 	memset(p->s, 0, sizeof(p->s));
 	p->n_senders = plant_vehicle_frames(&p->cal, p->vframes);
+	for (i = 0U; i < p->n_senders; i++) {
+		if (p->vframes[i].dlc > HAL_CAN_MAX_DLEN) {
+			fprintf(stderr, "squeal-sim plant: message 0x%" PRIX32 " has %u bytes, this build's CAN frames hold %u\n",
+				p->vframes[i].id, p->vframes[i].dlc, (unsigned)HAL_CAN_MAX_DLEN);
+			return 1;
+		}
+	}
 	if (p->n_senders > 0U) {
 		/* a vehicle layout: one sender per frame, at its inputs' period
 		 * (--rate-hz scales it: 100 Hz is each frame's own period) */
