@@ -30,15 +30,31 @@
  */
 #define HAL_CAN_BUSES 2U
 
-#define HAL_CAN_MAX_DLEN 8U
-
 /* CAN FD (ISO 11898-1:2015): up to 64 data bytes. A frame's dlc field holds
  * its data length in bytes; above 8 only the lengths of DLC codes 9..15 exist
  * (12, 16, 20, 24, 32, 48, 64), any other length is malformed. */
 #define HAL_CAN_CLASSIC_MAX_DLEN 8U
 #define HAL_CAN_FD_MAX_DLEN 64U
 
-/* Flags of a hal_can_frame_t (Zephyr-like: one frame type for every backend). */
+/*
+ * The data bytes a frame holds: a property of the backend build, fixed at
+ * compile time. 64 on the host builds (hal/linux, hal/vbus, every host and
+ * test program); 8 in the ECU images, whose controllers (bxCAN on the
+ * STM32F405/407 and STM32F103) carry classic frames only and whose RAM holds
+ * many frames: mk/target.mk builds them with -DHAL_CAN_CLASSIC_ONLY. A
+ * backend that cannot carry FD frames (bxCAN; SocketCAN on an interface of
+ * MTU 16) refuses them with SQ_ENOTSUP, counted, never truncated.
+ */
+#if defined(HAL_CAN_CLASSIC_ONLY)
+#define HAL_CAN_MAX_DLEN HAL_CAN_CLASSIC_MAX_DLEN
+#else
+#define HAL_CAN_MAX_DLEN HAL_CAN_FD_MAX_DLEN
+#endif
+
+/* Flags of a hal_can_frame_t (Zephyr-like: one frame type for every backend).
+ * A well-formed frame (hal_can_common.h, the one check): BRS and ESI only
+ * with FDF; FDF never with RTR or ERR; without FDF at most 8 data bytes,
+ * with FDF a DLC-code length (0..8, 12, 16, 20, 24, 32, 48, 64). */
 #define HAL_CAN_FLAG_EXT (1U << 0) /* 29-bit identifier                      */
 #define HAL_CAN_FLAG_RTR (1U << 1) /* remote frame: no data                  */
 #define HAL_CAN_FLAG_ERR (1U << 2) /* error frame: id holds the error class  */
@@ -74,7 +90,8 @@ static inline uint8_t hal_can_len_to_dlc(uint8_t len)
 typedef struct {
 	uint32_t id;          /* 11 or 29 bit identifier                      */
 	uint8_t flags;        /* HAL_CAN_FLAG_*                               */
-	uint8_t dlc;          /* data length 0..8                             */
+	uint8_t dlc;          /* data length in bytes: 0..8, or with FDF a
+			       * DLC-code length up to HAL_CAN_MAX_DLEN      */
 	uint8_t data[HAL_CAN_MAX_DLEN];
 	uint64_t timestamp_us; /* receive time on hal_time_us()'s clock       */
 } hal_can_frame_t;
@@ -111,6 +128,8 @@ typedef struct {
 	uint32_t tx_dropped;      /* frames the backend had to give up          */
 	uint32_t tx_refused_listen_only; /* sends refused: bus is listen-only  */
 	uint32_t error_frames;    /* error frames / controller problems seen    */
+	uint32_t fd_unsupported;  /* FD frames refused: this bus carries classic
+				   * frames only (SQ_ENOTSUP)                   */
 } hal_can_status_t;
 
 /*
@@ -136,26 +155,33 @@ static inline uint32_t hal_can_id_max(uint8_t flags)
 }
 
 /*
- * Queue one frame for sending on bus. Never blocks.
- * Returns SQ_OK, SQ_ENOBUFS (TX queue full: nothing queued),
- * SQ_ENETUNREACH (bus-off), SQ_ENETDOWN (stopped), SQ_EPERM (the bus is
- * listen-only: nothing sent, counted in tx_refused_listen_only),
- * SQ_EINVAL (bad frame: DLC > 8, identifier out of range for its kind, a
- * flag other than EXT and RTR: error frames and undefined flag bits are
- * refused), SQ_ENODEV. Every backend checks the frame first, with one
- * function (hal_can_common.h), so a bad frame gets SQ_EINVAL whatever the
- * bus's state.
+ * Queue one frame (classic, or FD with FDF and BRS/ESI as given) for
+ * sending on bus. Never blocks. Returns, in this order of checks:
+ * SQ_EINVAL (malformed frame: a length above 8 without FDF, an FDF length
+ * that is no DLC code's, FDF with RTR, BRS or ESI without FDF, an
+ * identifier out of range for its kind, ERR or an undefined flag bit),
+ * SQ_ENODEV, SQ_ENOTSUP (an FD frame on a bus that carries classic frames
+ * only: bxCAN, SocketCAN at MTU 16; nothing sent, counted in
+ * fd_unsupported), SQ_EPERM (the bus is listen-only: nothing sent, counted
+ * in tx_refused_listen_only), then SQ_ENETDOWN (stopped), SQ_ENETUNREACH
+ * (bus-off), SQ_ENOBUFS (TX queue full: nothing queued) or SQ_OK. Every
+ * backend admits the frame first with one function (hal_can_common.h), so
+ * a malformed frame gets SQ_EINVAL whatever the bus's state.
  */
 int hal_can_send(uint8_t bus, const hal_can_frame_t *frame);
 
 /*
  * Take the oldest received frame of bus, if any. Never blocks.
- * Returns SQ_OK (frame filled, with timestamp), SQ_EAGAIN (nothing pending),
- * SQ_ENETDOWN (stopped), SQ_ENODEV.
+ * Returns SQ_OK (frame filled, with timestamp: classic, or FD with FDF and
+ * the frame's BRS/ESI, its dlc the data length, up to HAL_CAN_MAX_DLEN;
+ * an error frame has ERR and 8 bytes), SQ_EAGAIN (nothing pending),
+ * SQ_ENETDOWN (stopped), SQ_ENODEV. A backend hands over well-formed frames
+ * only: what its controller or kernel gives otherwise is dropped, counted.
  */
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame);
 
-/* Returns SQ_OK with *status filled, SQ_ENODEV. */
+/* Returns SQ_OK with *status filled (the counters cumulative, the mode the
+ * firmware set), SQ_ENODEV. */
 int hal_can_get_status(uint8_t bus, hal_can_status_t *status);
 
 /*
@@ -166,14 +192,16 @@ int hal_can_get_status(uint8_t bus, hal_can_status_t *status);
  * controller is left untouched, running as before); SQ_EAGAIN (the
  * controller did not start: HAL_FAULT_CAN_INIT is raised); SQ_ENOTSUP where
  * the bit rate belongs to the OS (Linux: `ip link set can0 type can bitrate
- * ...`); SQ_ENODEV.
+ * ...`, with FD also `dbitrate ... fd on`); SQ_ENODEV. The rate is the
+ * nominal (arbitration) one; no classic-only controller has a data phase.
  */
 int hal_can_set_bitrate(uint8_t bus, uint32_t bitrate_kbps);
 
 /*
  * Accept only frames that pass one of these filters from now on (in
  * hardware where the controller can). count 0 accepts nothing but error
- * frames. count > HAL_CAN_MAX_FILTERS is a programming error.
+ * frames. Classic and FD frames pass alike (the id and its kind decide).
+ * count > HAL_CAN_MAX_FILTERS is a programming error.
  * Returns SQ_OK, SQ_EINVAL (an id or mask out of range for its kind, a
  * flag other than EXT),
  * SQ_ENOTSUP, SQ_ENODEV.
@@ -183,7 +211,8 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters,
 
 /*
  * Set the bus's mode (default NORMAL). On the ECU this restarts the
- * controller like a bit-rate change (set filters after it).
+ * controller like a bit-rate change (set filters after it). The mode does
+ * not change which frame formats the bus carries.
  * Returns SQ_OK, SQ_EAGAIN (controller did not restart), SQ_ENODEV.
  */
 int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode);

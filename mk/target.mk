@@ -46,8 +46,11 @@ FW_TARGET_SRCS := $(sort $(FW_SRCS) $(APP_SRCS))
 
 # -ffp-contract=off: no fused multiply-add, so float results are the host's
 # bit for bit. -fstack-usage/-fcallgraph-info feed tools/stack_usage.py.
+# -DHAL_CAN_CLASSIC_ONLY: every image runs bxCAN, a classic controller, so
+# its frames hold 8 data bytes (hal.h's HAL_CAN_MAX_DLEN) and its RAM stays
+# the classic one; FD frames are refused there (SQ_ENOTSUP).
 ARM_CFLAGS := $(WARN) -ffreestanding -fno-common -ffunction-sections -fdata-sections \
-	-ffp-contract=off -fstack-usage -fcallgraph-info=su -Os -g
+	-ffp-contract=off -fstack-usage -fcallgraph-info=su -Os -g -DHAL_CAN_CLASSIC_ONLY
 ARM_LDFLAGS := -nostdlib -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments
 
 # arm_config: name, target chip, numeric, extra flags, sources, linker script

@@ -56,8 +56,13 @@ typedef struct {
  * SQ_ENODEV until then): all standard and extended data frames
  * pass until hal_can_set_rx_filter(); error frames (bus-off, controller
  * problems, restarts, protocol/ACK/transceiver errors, counters; not lost
- * arbitration) are on. opts may be NULL for the defaults. Re-opening closes
- * that bus's previous socket first; the bus's mode (hal_can_set_mode) stays.
+ * arbitration) are on. CAN FD is on when the interface's MTU is 72
+ * (CANFD_MTU: `ip link set can0 mtu 72`, for a real adapter with `type can
+ * bitrate ... dbitrate ... fd on`); at MTU 16 it stays off, said once per
+ * interface on stderr ("can0: MTU 16, CAN FD off (ip link set can0 mtu
+ * 72)"), and FD sends answer SQ_ENOTSUP. opts may be NULL for the defaults.
+ * Re-opening closes that bus's previous socket first and asks the MTU
+ * again; the bus's mode (hal_can_set_mode) stays.
  * Returns SQ_OK, or (with hal_linux_strerror() saying what and what to do):
  *   SQ_ENOTSUP   this kernel has no CAN (socket(PF_CAN) EAFNOSUPPORT or
  *                EPROTONOSUPPORT)
@@ -75,6 +80,10 @@ void hal_linux_close(void);
 /* bus's socket, for a caller's own poll() (-1 when closed). */
 int hal_linux_can_fd(uint8_t bus);
 
+/* Whether bus's open socket carries CAN FD frames (the interface's MTU was
+ * 72 at hal_linux_open); false when closed. */
+bool hal_linux_can_fd_on(uint8_t bus);
+
 /* Counters beyond hal_can_status_t, for tests and the host tools. */
 typedef struct {
 	uint64_t rx_frames;      /* data/RTR frames handed to the caller        */
@@ -86,7 +95,8 @@ typedef struct {
 	uint64_t tx_eagain;      /* attempts refused: socket send buffer full   */
 	uint64_t rx_kernel_drops; /* SO_RXQ_OVFL: socket queue overflows        */
 	uint64_t rx_ctrl_overflows; /* controller RX overflow error frames      */
-	uint64_t rx_skipped;     /* non-classic frames received (ignored)       */
+	uint64_t rx_skipped;     /* frames the HAL cannot hand over (CAN XL, a
+				  * length no frame of its format has): ignored */
 	uint64_t ts_fallbacks;   /* frames without a kernel timestamp           */
 	uint32_t tx_worst_us;    /* longest hal_can_send() call                  */
 } hal_linux_can_stats_t;

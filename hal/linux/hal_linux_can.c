@@ -6,6 +6,13 @@
  * refuses every send (SQ_EPERM, counted in tx_refused_listen_only); the
  * interface itself is made listen-only by its administrator.
  *
+ * - CAN FD follows the interface: at MTU 72 (CANFD_MTU, asked with
+ *   SIOCGIFMTU at open) the socket takes FD frames (CAN_RAW_FD_FRAMES): a
+ *   read of CANFD_MTU bytes is an FD frame (HAL_CAN_FLAG_FDF, and BRS/ESI
+ *   from canfd_frame.flags), one of CAN_MTU bytes a classic one, and an FDF
+ *   frame is sent as a struct canfd_frame. At MTU 16 FD stays off, said
+ *   once per interface on stderr, and an FD send is refused (SQ_ENOTSUP,
+ *   counted in fd_unsupported).
  * - Filters are the kernel's (CAN_RAW_FILTER): unwanted frames never reach
  *   the process. Filters set before hal_linux_open() are kept and applied.
  * - Error frames (CAN_RAW_ERR_FILTER) update hal_can_status_t (every state
@@ -39,6 +46,7 @@
 #include <net/if.h>
 #include <net/if_arp.h>
 #include <poll.h>
+#include <stdio.h>
 #include <string.h>
 #include <sys/ioctl.h>
 #include <sys/socket.h>
@@ -56,9 +64,12 @@
 #define CAN_ERR_CNT 0x00000200U
 #endif
 
+_Static_assert(HAL_CAN_MAX_DLEN >= CANFD_MAX_DLEN, "a host build's frames hold an FD frame's data");
+
 #define DEFAULT_TX_TRIES 3U
 #define DEFAULT_TX_BUDGET_US 1000U
-/* Frames that are not classic CAN are skipped; bound the skipping per call. */
+/* Frames the HAL cannot hand over (CAN XL, a malformed length) are skipped;
+ * bound the skipping per call. */
 #define MAX_SKIP_PER_RECEIVE 16
 
 /* Every error class but lost arbitration (normal on a busy bus). */
@@ -69,11 +80,12 @@
 typedef struct {
 	int fd;
 	bool named;                    /* an interface was given: the bus exists */
-	hal_can_mode_t mode;           /* the firmware's; kept over re-opens    */
+	bool fd_on;                    /* the interface's MTU carries CAN FD     */
 	char ifname[IFNAMSIZ];
+	char fd_off_said[IFNAMSIZ];    /* "FD off" was said for this interface   */
 	uint32_t tx_max_tries;
 	uint32_t tx_budget_us;
-	hal_can_status_t status;
+	hal_can_status_t status;       /* its mode the firmware's: kept over re-opens */
 	hal_linux_can_stats_t stats;
 	uint32_t last_drop_count;
 	uint64_t last_stamp_us;
@@ -102,12 +114,19 @@ int hal_linux_can_fd(uint8_t bus)
 	return can[bus].fd;
 }
 
+bool hal_linux_can_fd_on(uint8_t bus)
+{
+	HAL_REQUIRE(bus < HAL_CAN_BUSES);
+	return can[bus].fd_on;
+}
+
 static void close_bus(lc_t *c)
 {
 	if (c->fd >= 0) {
 		(void)close(c->fd);
 	}
 	c->fd = -1;
+	c->fd_on = false;
 	(void)hal_can_state_change(&c->status, HAL_CAN_STATE_STOPPED);
 }
 
@@ -192,10 +211,34 @@ static int set_int_opt(const lc_t *c, int fd, int level, int name, int value, co
 	return 0;
 }
 
+/* CAN FD as the interface's MTU says: on at CANFD_MTU (or more: a CAN XL
+ * interface carries FD frames too), off at CAN_MTU, said once per
+ * interface. 0, or -1 (error set) when the socket refuses FD frames. */
+static int set_fd_mode(lc_t *c, int fd, struct ifreq *ifr)
+{
+	c->fd_on = false;
+	if (ioctl(fd, SIOCGIFMTU, ifr) != 0) {
+		hal_linux_set_error("%s: SIOCGIFMTU: %s", c->ifname, strerror(errno));
+		return -1;
+	}
+	if (ifr->ifr_mtu >= (int)CANFD_MTU) {
+		if (set_int_opt(c, fd, SOL_CAN_RAW, CAN_RAW_FD_FRAMES, 1, "CAN_RAW_FD_FRAMES") != 0) {
+			return -1;
+		}
+		c->fd_on = true;
+	} else if (strcmp(c->fd_off_said, c->ifname) != 0) {
+		(void)fprintf(stderr, "%s: MTU %d, CAN FD off (ip link set %s mtu %u)\n", c->ifname,
+			      ifr->ifr_mtu, c->ifname, (unsigned int)CANFD_MTU);
+		memcpy(c->fd_off_said, c->ifname, sizeof(c->fd_off_said));
+	}
+	return 0;
+}
+
 int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *opts)
 {
 	static const hal_linux_can_opts_t defaults = { 0 };
 	const can_err_mask_t err_mask = ERR_MASK;
+	hal_can_mode_t mode;
 	struct sockaddr_can addr;
 	struct ifreq ifr;
 	size_t len;
@@ -278,7 +321,8 @@ int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *
 		hal_linux_set_error("%s: CAN_RAW_ERR_FILTER: %s", ifname, strerror(errno));
 		return open_fail(fd, SQ_EIO);
 	}
-	if (set_int_opt(c, fd, SOL_SOCKET, SO_TIMESTAMP, 1, "SO_TIMESTAMP") != 0
+	if (set_fd_mode(c, fd, &ifr) != 0
+	    || set_int_opt(c, fd, SOL_SOCKET, SO_TIMESTAMP, 1, "SO_TIMESTAMP") != 0
 	    || set_int_opt(c, fd, SOL_SOCKET, SO_RXQ_OVFL, 1, "SO_RXQ_OVFL") != 0
 	    || (opts->rcvbuf_bytes > 0
 		&& set_int_opt(c, fd, SOL_SOCKET, SO_RCVBUF, opts->rcvbuf_bytes, "SO_RCVBUF") != 0)
@@ -299,8 +343,11 @@ int hal_linux_open(uint8_t bus, const char *ifname, const hal_linux_can_opts_t *
 		c->tx_max_tries = 16U;
 	}
 	c->tx_budget_us = opts->tx_budget_us > 0U ? opts->tx_budget_us : DEFAULT_TX_BUDGET_US;
-	/* a fresh start: every counter zero, the controller on the bus */
+	/* a fresh start: every counter zero, the controller on the bus, the
+	 * firmware's mode kept */
+	mode = c->status.mode;
 	memset(&c->status, 0, sizeof(c->status));
+	c->status.mode = mode;
 	memset(&c->stats, 0, sizeof(c->stats));
 	c->status.state = HAL_CAN_STATE_ERROR_ACTIVE;
 	c->last_drop_count = 0U;
@@ -324,7 +371,7 @@ int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 	if (c == NULL) {
 		return SQ_ENODEV;
 	}
-	c->mode = mode;
+	c->status.mode = mode;
 	return SQ_OK;
 }
 
@@ -347,7 +394,6 @@ int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 		return SQ_ENODEV;
 	}
 	*status = c->status;
-	status->mode = c->mode;
 	if (c->fd < 0) {
 		status->state = HAL_CAN_STATE_STOPPED;
 	}
@@ -449,6 +495,29 @@ static uint64_t frame_stamp_us(lc_t *c, const struct msghdr *msg)
 	return stamp_us;
 }
 
+/* The HAL_CAN_FLAG_* of a frame the kernel gave: an error frame is ERR
+ * alone; an FD frame (read as CANFD_MTU bytes) is FDF with its BRS/ESI. */
+static uint8_t hal_flags_of(canid_t can_id, bool fd, uint8_t fd_flags)
+{
+	uint8_t flags = 0U;
+
+	if ((can_id & CAN_ERR_FLAG) != 0U) {
+		return fd ? (uint8_t)(HAL_CAN_FLAG_ERR | HAL_CAN_FLAG_FDF) : (uint8_t)HAL_CAN_FLAG_ERR;
+	}
+	if ((can_id & CAN_EFF_FLAG) != 0U) {
+		flags |= HAL_CAN_FLAG_EXT;
+	}
+	if ((can_id & CAN_RTR_FLAG) != 0U) {
+		flags |= HAL_CAN_FLAG_RTR;
+	}
+	if (fd) {
+		flags |= HAL_CAN_FLAG_FDF;
+		flags |= ((fd_flags & CANFD_BRS) != 0U) ? HAL_CAN_FLAG_BRS : 0U;
+		flags |= ((fd_flags & CANFD_ESI) != 0U) ? HAL_CAN_FLAG_ESI : 0U;
+	}
+	return flags;
+}
+
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
 	lc_t *c = linux_can_bus_of(bus);
@@ -472,6 +541,7 @@ int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 		} ctrl;
 		struct iovec iov = { .iov_base = &buf, .iov_len = sizeof(buf) };
 		struct msghdr msg;
+		uint8_t flags;
 		ssize_t n;
 
 		memset(&msg, 0, sizeof(msg));
@@ -490,18 +560,22 @@ int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 			hal_linux_set_error("%s: receive: %s", c->ifname, strerror(err));
 			return SQ_ENETDOWN;
 		}
-		if ((size_t)n != sizeof(struct can_frame) || (msg.msg_flags & MSG_TRUNC) != 0
-		    || buf.cf.len > CAN_MAX_DLEN) {
-			c->stats.rx_skipped++;
+		if (((size_t)n != CAN_MTU && (size_t)n != CANFD_MTU) || (msg.msg_flags & MSG_TRUNC) != 0) {
+			c->stats.rx_skipped++; /* CAN XL, or cut short */
+			continue;
+		}
+		flags = hal_flags_of(buf.fd.can_id, (size_t)n == CANFD_MTU, buf.fd.flags);
+		if (!hal_can_format_ok(flags, buf.fd.len)) {
+			c->stats.rx_skipped++; /* a length no frame of its format has */
 			continue;
 		}
 		memset(frame, 0, sizeof(*frame));
 		frame->timestamp_us = frame_stamp_us(c, &msg);
-		frame->dlc = buf.cf.len;
-		if ((buf.cf.can_id & CAN_ERR_FLAG) != 0U) {
+		frame->flags = flags;
+		frame->dlc = buf.fd.len;
+		if ((flags & HAL_CAN_FLAG_ERR) != 0U) {
 			count_error_frame(c, &buf.cf);
 			frame->id = buf.cf.can_id & CAN_ERR_MASK;
-			frame->flags = HAL_CAN_FLAG_ERR;
 			memcpy(frame->data, buf.cf.data, frame->dlc);
 			c->stats.rx_err_frames++;
 			return SQ_OK;
@@ -511,16 +585,9 @@ int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 			/* Receiving again: the controller is back on the bus. */
 			(void)hal_can_state_change(&c->status, HAL_CAN_STATE_ERROR_ACTIVE);
 		}
-		if ((buf.cf.can_id & CAN_EFF_FLAG) != 0U) {
-			frame->id = buf.cf.can_id & CAN_EFF_MASK;
-			frame->flags = HAL_CAN_FLAG_EXT;
-		} else {
-			frame->id = buf.cf.can_id & CAN_SFF_MASK;
-		}
-		if ((buf.cf.can_id & CAN_RTR_FLAG) != 0U) {
-			frame->flags |= HAL_CAN_FLAG_RTR;
-		} else {
-			memcpy(frame->data, buf.cf.data, frame->dlc);
+		frame->id = buf.fd.can_id & (((flags & HAL_CAN_FLAG_EXT) != 0U) ? CAN_EFF_MASK : CAN_SFF_MASK);
+		if ((flags & HAL_CAN_FLAG_RTR) == 0U) {
+			memcpy(frame->data, buf.fd.data, frame->dlc);
 		}
 		c->stats.rx_frames++;
 		return SQ_OK;
@@ -558,20 +625,16 @@ static void note_tx_time(lc_t *c, uint64_t start_us)
 int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
 	lc_t *c = linux_can_bus_of(bus);
-	const int rc = hal_can_frame_check(frame);
-	struct can_frame cf;
+	/* a closed socket knows no MTU: stopped, whatever the format */
+	const int rc = hal_can_send_admit(frame, (c != NULL) ? &c->status : NULL,
+					  (c != NULL) && (c->fd_on || (c->fd < 0)));
+	struct canfd_frame cf;
+	size_t size = CAN_MTU;
 	uint64_t start_us;
 	uint32_t attempt;
 
 	if (rc != SQ_OK) {
 		return rc;
-	}
-	if (c == NULL) {
-		return SQ_ENODEV;
-	}
-	if (c->mode == HAL_CAN_MODE_LISTEN_ONLY) {
-		c->status.tx_refused_listen_only++;
-		return SQ_EPERM;
 	}
 	if (c->fd < 0) {
 		return SQ_ENETDOWN;
@@ -579,12 +642,19 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 	if (c->status.state == HAL_CAN_STATE_BUS_OFF) {
 		return SQ_ENETUNREACH;
 	}
+	/* struct can_frame is struct canfd_frame's first CAN_MTU bytes */
 	memset(&cf, 0, sizeof(cf));
 	cf.can_id = frame->id;
 	if ((frame->flags & HAL_CAN_FLAG_EXT) != 0U) {
 		cf.can_id |= CAN_EFF_FLAG;
 	}
 	cf.len = frame->dlc;
+	if ((frame->flags & HAL_CAN_FLAG_FDF) != 0U) {
+		size = CANFD_MTU;
+		/* the size makes it FD (the kernel sets CANFD_FDF itself) */
+		cf.flags = (uint8_t)((((frame->flags & HAL_CAN_FLAG_BRS) != 0U) ? CANFD_BRS : 0U) |
+				     (((frame->flags & HAL_CAN_FLAG_ESI) != 0U) ? CANFD_ESI : 0U));
+	}
 	if ((frame->flags & HAL_CAN_FLAG_RTR) != 0U) {
 		cf.can_id |= CAN_RTR_FLAG;
 	} else {
@@ -593,12 +663,12 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 
 	start_us = hal_time_us();
 	for (attempt = 1U;; attempt++) {
-		ssize_t n = send(c->fd, &cf, sizeof(cf), MSG_DONTWAIT);
+		ssize_t n = send(c->fd, &cf, size, MSG_DONTWAIT);
 		uint64_t elapsed_us;
 		uint32_t wait_us;
 		int err;
 
-		if (n == (ssize_t)sizeof(cf)) {
+		if (n == (ssize_t)size) {
 			c->stats.tx_frames++;
 			note_tx_time(c, start_us);
 			return SQ_OK;

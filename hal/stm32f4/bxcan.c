@@ -22,6 +22,10 @@
  *   Listen-only: bxCAN silent mode (BTR.SILM): the controller drives only
  *       recessive bits, so no data frame, ACK or error frame leaves it; the
  *       driver also refuses sends (SQ_EPERM, counted).
+ *   CAN FD: bxCAN is a classic controller (8 data bytes, no FDF bit): an FD
+ *       frame to send is refused (SQ_ENOTSUP, counted in fd_unsupported),
+ *       never cut to 8 bytes; the ECU images build their frames 8 bytes
+ *       long (HAL_CAN_CLASSIC_ONLY, hal.h).
  * Every wait on the controller is bounded; a controller that does not enter
  * initialisation mode (no clock, no peripheral: QEMU) leaves that bus
  * stopped with HAL_FAULT_CAN_INIT raised, and its calls say SQ_ENETDOWN.
@@ -53,7 +57,6 @@ _Static_assert(CHIP_CAN_BUSES >= 1U && CHIP_CAN_BUSES <= HAL_CAN_BUSES, "bus cou
 
 typedef struct {
 	bool started;                 /* controller configured             */
-	hal_can_mode_t mode;
 	uint32_t bitrate_bps;         /* rate of the last start            */
 	/* RX ring: rx_head written only by the ISR, rx_tail only by
 	 * hal_can_receive(); free-running indices, count = head - tail. */
@@ -66,8 +69,6 @@ typedef struct {
 	uint32_t tx_count;
 	volatile uint32_t rx_overruns;
 	volatile uint32_t tx_dropped;
-	volatile uint32_t error_frames;
-	uint32_t tx_refused_listen_only;
 } bus_state_t;
 
 typedef struct {
@@ -86,9 +87,12 @@ static const bus_hw_t bus_hw[CHIP_CAN_BUSES] = {
 
 static bus_state_t can_bus[CHIP_CAN_BUSES];
 /* Each bus's state, state_changes and bus_off_count (hal_can_state_change),
- * stopped until it starts; touched with interrupts masked or from the SCE
- * interrupt only. Apart from can_bus so that only these few bytes are
- * initialised data. */
+ * stopped until it starts, and its error_frames: touched with interrupts
+ * masked or from the SCE interrupt only; and the firmware's mode and send
+ * refusals (mode,
+ * tx_refused_listen_only, fd_unsupported: hal_can_send_admit), which only
+ * the firmware's thread touches. Apart from can_bus so that only these few
+ * bytes are initialised data. */
 #define TRACK_STOPPED { .state = HAL_CAN_STATE_STOPPED }
 static hal_can_status_t can_track[CHIP_CAN_BUSES] = {
 	TRACK_STOPPED,
@@ -177,7 +181,8 @@ static void fifo0_read(uintptr_t base, hal_can_frame_t *f)
 	if ((rir & CAN_RIR_RTR) != 0U) {
 		f->flags |= HAL_CAN_FLAG_RTR;
 	}
-	f->dlc = (uint8_t)(dlc > HAL_CAN_MAX_DLEN ? HAL_CAN_MAX_DLEN : dlc);
+	/* a classic DLC code 9..15 means 8 bytes */
+	f->dlc = (uint8_t)(dlc > HAL_CAN_CLASSIC_MAX_DLEN ? HAL_CAN_CLASSIC_MAX_DLEN : dlc);
 	unpack_word(can_rd(base, CAN_RDLR(0U)), &f->data[0]);
 	unpack_word(can_rd(base, CAN_RDHR(0U)), &f->data[4]);
 	can_wr(base, CAN_RF0R, CAN_RF0R_RFOM0); /* release the FIFO slot */
@@ -379,7 +384,7 @@ int bxcan_start(uint8_t bus, uint32_t bitrate_bps)
 	if (rc != SQ_OK) {
 		return rc;
 	}
-	if (st->mode == HAL_CAN_MODE_LISTEN_ONLY) {
+	if (can_track[bus].mode == HAL_CAN_MODE_LISTEN_ONLY) {
 		btr |= CAN_BTR_SILM;
 	}
 	rc = enter_init(bus);
@@ -443,7 +448,7 @@ int bxcan_selftest_loopback(uint8_t bus)
 		if (got.id != probe.id || got.flags != probe.flags || got.dlc != probe.dlc) {
 			rc = SQ_EIO;
 		}
-		for (i = 0; i < HAL_CAN_MAX_DLEN && rc == SQ_OK; i++) {
+		for (i = 0; i < probe.dlc && rc == SQ_OK; i++) {
 			if (got.data[i] != probe.data[i]) {
 				rc = SQ_EIO;
 			}
@@ -487,10 +492,10 @@ int hal_can_set_mode(uint8_t bus, hal_can_mode_t mode)
 	if (st == NULL) {
 		return SQ_ENODEV;
 	}
-	if (st->started && st->mode == mode) {
+	if (st->started && can_track[bus].mode == mode) {
 		return SQ_OK;
 	}
-	st->mode = mode;
+	can_track[bus].mode = mode;
 	rc = bxcan_start(bus, st->bitrate_bps != 0U ? st->bitrate_bps : BXCAN_DEFAULT_BITRATE);
 	return rc == SQ_OK ? SQ_OK : SQ_EAGAIN;
 }
@@ -513,18 +518,11 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 	bus_state_t *st = bxcan_bus_get(bus);
 	uint32_t primask;
 	uint32_t slot;
-
-	const int rc = hal_can_frame_check(frame);
+	/* a classic controller: every FD frame is refused */
+	const int rc = hal_can_send_admit(frame, (st != NULL) ? &can_track[bus] : NULL, false);
 
 	if (rc != SQ_OK) {
 		return rc;
-	}
-	if (st == NULL) {
-		return SQ_ENODEV;
-	}
-	if (st->mode == HAL_CAN_MODE_LISTEN_ONLY) {
-		st->tx_refused_listen_only++;
-		return SQ_EPERM;
 	}
 	if (!can_online(bus)) {
 		return SQ_ENETDOWN;
@@ -581,17 +579,12 @@ int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
 	esr = st->started ? can_rd(bus_hw[bus].base, CAN_ESR) : 0U;
 	primask = cm_irq_save();
 	state_follow(bus); /* a change the SCE interrupt does not signal (leaving bus-off) */
-	status->state = can_track[bus].state;
-	status->state_changes = can_track[bus].state_changes;
-	status->bus_off_count = can_track[bus].bus_off_count;
+	*status = can_track[bus]; /* state, its counts, error frames, mode, refusals */
 	cm_irq_restore(primask);
-	status->mode = st->mode;
 	status->tx_error_count = (uint8_t)((esr >> CAN_ESR_TEC_SHIFT) & 0xFFU);
 	status->rx_error_count = (uint8_t)((esr >> CAN_ESR_REC_SHIFT) & 0xFFU);
 	status->rx_overruns = st->rx_overruns;
 	status->tx_dropped = st->tx_dropped;
-	status->tx_refused_listen_only = st->tx_refused_listen_only;
-	status->error_frames = st->error_frames;
 	return SQ_OK;
 }
 
@@ -687,8 +680,8 @@ static void rx_push_error(bus_state_t *st, uint32_t esr, uint32_t lec)
 		f->id = ERR_CLASS_PROT;
 	}
 	f->flags = HAL_CAN_FLAG_ERR;
-	f->dlc = HAL_CAN_MAX_DLEN;
-	for (i = 0U; i < HAL_CAN_MAX_DLEN; i++) {
+	f->dlc = HAL_CAN_CLASSIC_MAX_DLEN;
+	for (i = 0U; i < HAL_CAN_CLASSIC_MAX_DLEN; i++) {
 		f->data[i] = 0U;
 	}
 	f->data[6] = (uint8_t)((esr >> CAN_ESR_TEC_SHIFT) & 0xFFU); /* as SocketCAN */
@@ -706,7 +699,7 @@ static void sce_irq(uint8_t bus)
 	uint32_t lec = (esr & CAN_ESR_LEC_MSK) >> CAN_ESR_LEC_SHIFT;
 
 	if (lec != 0U && lec != CAN_ESR_LEC_USER) {
-		st->error_frames++;
+		can_track[bus].error_frames++;
 		can_wr(base, CAN_ESR, CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT);
 		rx_push_error(st, esr, lec);
 	}

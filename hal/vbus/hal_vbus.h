@@ -20,6 +20,8 @@
  *    controller applies them on reception; error frames always pass and
  *    count in status.error_frames when received. A full queue drops the
  *    frame and counts it in status.rx_overruns.
+ *  - Frames: classic and CAN FD (up to 64 bytes, FDF/BRS/ESI kept) on
+ *    every bus, both ways, as a bus of FD controllers carries both.
  *  - TX: hal_can_send() puts the frame on the wire stamped with the clock:
  *    into the bus's wire FIFO (hal_vbus_tx_pop() takes it), or, when a sink
  *    is registered, straight to the sink (another node; it may refuse with
@@ -70,7 +72,10 @@ void hal_vbus_set_cycles_per_call(uint32_t cycles);
  * Another node sends frame on bus; it arrives at frame->timestamp_us.
  * SQ_OK (queued), SQ_ENOENT (the bus's filters reject it: dropped, as the
  * controller would), SQ_ENOBUFS (queue full: dropped, rx_overruns + 1),
- * SQ_ENODEV. A frame with DLC > 8 is a programming error of the caller.
+ * SQ_ENODEV. Classic and FD frames alike (64 bytes, FDF/BRS/ESI kept); a
+ * frame that breaks hal.h's format rules (hal_can_format_ok: a length above
+ * 8 without FDF, an FD length that is no DLC code's ...) is a programming
+ * error of the caller, who reads the log or makes the traffic.
  */
 int hal_vbus_rx_push(uint8_t bus, const hal_can_frame_t *frame);
 
@@ -88,8 +93,9 @@ void hal_vbus_set_sink(uint8_t bus, hal_vbus_sink_t sink);
 
 /* Controller state and counters as the bus made them: the state, TEC,
  * REC, rx_overruns, tx_dropped and error_frames are taken from *status.
- * The mode and tx_refused_listen_only stay the firmware's (a bus-off or a
- * recovery never turns listen-only off), and bus_off_count and
+ * The mode and the refusals (tx_refused_listen_only, fd_unsupported) stay
+ * the firmware's (a bus-off or a recovery never turns listen-only off),
+ * and bus_off_count and
  * state_changes are counted from the state change, as on every backend
  * (hal_can_state_change): an injected bus-off counts once, whatever count
  * *status carries. */
@@ -109,7 +115,7 @@ typedef struct {
 	uint64_t rx_filtered; /* ... rejected by the filters                */
 	uint64_t rx_overflow; /* ... dropped: queue full                    */
 	uint64_t tx_frames;   /* frames put on the wire                     */
-	uint64_t tx_refused;  /* sends answered ENOBUFS/ENETUNREACH/ENETDOWN/EPERM */
+	uint64_t tx_refused;  /* sends answered ENOBUFS/ENETUNREACH/ENETDOWN/EPERM/ENOTSUP */
 } hal_vbus_stats_t;
 void hal_vbus_get_stats(uint8_t bus, hal_vbus_stats_t *stats);
 

@@ -80,7 +80,7 @@ int hal_vbus_rx_push(uint8_t bus, const hal_can_frame_t *frame)
 	vbus_t *b = vbus_can_bus_of(bus);
 	uint32_t i;
 
-	HAL_REQUIRE((frame != NULL) && (frame->dlc <= HAL_CAN_MAX_DLEN));
+	HAL_REQUIRE((frame != NULL) && hal_can_format_ok(frame->flags, frame->dlc));
 	if (b == NULL) {
 		return SQ_ENODEV;
 	}
@@ -212,17 +212,14 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
 	vbus_t *b = vbus_can_bus_of(bus);
 	hal_can_frame_t f;
-	int rc = hal_can_frame_check(frame);
+	/* every bus of the in-memory backend carries FD frames */
+	int rc = hal_can_send_admit(frame, (b != NULL) ? &b->status : NULL, true);
 
+	if ((rc == SQ_EINVAL) || (rc == SQ_ENODEV)) {
+		return rc; /* not a refusal of this bus: not in its stats */
+	}
 	if (rc != SQ_OK) {
-		return rc;
-	}
-	if (b == NULL) {
-		return SQ_ENODEV;
-	}
-	if (b->status.mode == HAL_CAN_MODE_LISTEN_ONLY) {
-		b->status.tx_refused_listen_only++;
-		rc = SQ_EPERM;
+		/* refused (FD, listen-only): counted below */
 	} else if (b->status.state == HAL_CAN_STATE_STOPPED) {
 		rc = SQ_ENETDOWN;
 	} else if (b->status.state == HAL_CAN_STATE_BUS_OFF) {

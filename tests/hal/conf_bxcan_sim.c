@@ -43,6 +43,12 @@ uint32_t conf_bus_count(void)
 	return SIM_BUSES;
 }
 
+bool conf_bus_fd(uint8_t bus)
+{
+	(void)bus;
+	return false; /* bxCAN is a classic controller */
+}
+
 int conf_wire_inject(uint8_t bus, const hal_can_frame_t *frame)
 {
 	if (bus >= SIM_BUSES || frame == NULL) {

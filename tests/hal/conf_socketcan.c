@@ -10,13 +10,16 @@
  * path never stalls by itself: with $SQ_TC (the path of tc; root, in the
  * guest) a blocked TX path is a token-bucket qdisc that lets almost nothing
  * out (the kernel then refuses with ENOBUFS), removed to unblock; without
- * it that check is a SKIP.
+ * it that check is a SKIP. The peer takes CAN FD frames too; whether a
+ * bus carries them is the interface's MTU (72: FD, 16: classic only),
+ * asked here with SIOCGIFMTU, not taken from the backend.
  */
 #include <errno.h>
 #include <stdio.h>
 #include <net/if.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
@@ -61,7 +64,11 @@ static int peer_socket(const char *ifname)
 	memset(&addr, 0, sizeof(addr));
 	addr.can_family = AF_CAN;
 	addr.can_ifindex = (int)if_nametoindex(ifname);
-	if ((addr.can_ifindex == 0) || (bind(fd, (const struct sockaddr *)&addr, sizeof(addr)) != 0)) {
+	/* FD frames too (refused by the kernel only when sent on an MTU-16
+	 * interface) */
+	if ((addr.can_ifindex == 0) || (setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FD_FRAMES, &(int){ 1 },
+						   (socklen_t)sizeof(int)) != 0) ||
+	    (bind(fd, (const struct sockaddr *)&addr, sizeof(addr)) != 0)) {
 		(void)close(fd);
 		return -1;
 	}
@@ -100,17 +107,33 @@ int conf_backend_setup(void)
 	return SQ_OK;
 }
 
-static int peer_send(uint8_t bus, const struct can_frame *cf)
+bool conf_bus_fd(uint8_t bus)
+{
+	struct ifreq ifr;
+	const char *name = iface_of(bus);
+
+	if ((bus >= HAL_CAN_BUSES) || (peer[bus] < 0) || (name == NULL) ||
+	    (strlen(name) >= sizeof(ifr.ifr_name))) {
+		return false;
+	}
+	memset(&ifr, 0, sizeof(ifr));
+	memcpy(ifr.ifr_name, name, strlen(name) + 1U);
+	return (ioctl(peer[bus], SIOCGIFMTU, &ifr) == 0) && (ifr.ifr_mtu >= (int)CANFD_MTU);
+}
+
+/* A classic frame goes as CAN_MTU bytes, an FD one as CANFD_MTU. */
+static int peer_send(uint8_t bus, const struct canfd_frame *cf, size_t size)
 {
 	if ((bus >= HAL_CAN_BUSES) || (peer[bus] < 0)) {
 		return SQ_ENODEV;
 	}
-	return (send(peer[bus], cf, sizeof(*cf), 0) == (ssize_t)sizeof(*cf)) ? SQ_OK : SQ_EIO;
+	return (send(peer[bus], cf, size, 0) == (ssize_t)size) ? SQ_OK : SQ_EIO;
 }
 
 int conf_wire_inject(uint8_t bus, const hal_can_frame_t *frame)
 {
-	struct can_frame cf;
+	struct canfd_frame cf;
+	size_t size = CAN_MTU;
 
 	memset(&cf, 0, sizeof(cf));
 	cf.can_id = frame->id;
@@ -120,19 +143,26 @@ int conf_wire_inject(uint8_t bus, const hal_can_frame_t *frame)
 	if ((frame->flags & HAL_CAN_FLAG_RTR) != 0U) {
 		cf.can_id |= CAN_RTR_FLAG;
 	}
+	if ((frame->flags & HAL_CAN_FLAG_FDF) != 0U) {
+		size = CANFD_MTU;
+		cf.flags = (uint8_t)((((frame->flags & HAL_CAN_FLAG_BRS) != 0U) ? CANFD_BRS : 0U) |
+				     (((frame->flags & HAL_CAN_FLAG_ESI) != 0U) ? CANFD_ESI : 0U));
+	}
 	cf.len = frame->dlc;
 	memcpy(cf.data, frame->data, frame->dlc);
-	return peer_send(bus, &cf);
+	return peer_send(bus, &cf, size);
 }
 
 int conf_wire_take(uint8_t bus, hal_can_frame_t *frame)
 {
-	struct can_frame cf;
+	struct canfd_frame cf;
+	ssize_t n;
 
 	if ((bus >= HAL_CAN_BUSES) || (peer[bus] < 0)) {
 		return SQ_EAGAIN;
 	}
-	if (recv(peer[bus], &cf, sizeof(cf), MSG_DONTWAIT) != (ssize_t)sizeof(cf)) {
+	n = recv(peer[bus], &cf, sizeof(cf), MSG_DONTWAIT);
+	if ((n != (ssize_t)CAN_MTU) && (n != (ssize_t)CANFD_MTU)) {
 		return SQ_EAGAIN;
 	}
 	memset(frame, 0, sizeof(*frame));
@@ -145,19 +175,24 @@ int conf_wire_take(uint8_t bus, hal_can_frame_t *frame)
 	if ((cf.can_id & CAN_RTR_FLAG) != 0U) {
 		frame->flags |= HAL_CAN_FLAG_RTR;
 	}
+	if (n == (ssize_t)CANFD_MTU) {
+		frame->flags |= HAL_CAN_FLAG_FDF;
+		frame->flags |= ((cf.flags & CANFD_BRS) != 0U) ? HAL_CAN_FLAG_BRS : 0U;
+		frame->flags |= ((cf.flags & CANFD_ESI) != 0U) ? HAL_CAN_FLAG_ESI : 0U;
+	}
 	frame->dlc = cf.len;
-	memcpy(frame->data, cf.data, sizeof(frame->data));
+	memcpy(frame->data, cf.data, (cf.len <= sizeof(frame->data)) ? cf.len : sizeof(frame->data));
 	return SQ_OK;
 }
 
 static int inject_error(uint8_t bus, uint32_t cls)
 {
-	struct can_frame cf;
+	struct canfd_frame cf;
 
 	memset(&cf, 0, sizeof(cf));
 	cf.can_id = CAN_ERR_FLAG | cls;
 	cf.len = CAN_ERR_DLC;
-	return peer_send(bus, &cf);
+	return peer_send(bus, &cf, CAN_MTU);
 }
 
 int conf_force_error_frame(uint8_t bus)

@@ -36,6 +36,12 @@ uint32_t conf_bus_count(void)
 	return HAL_CAN_BUSES;
 }
 
+bool conf_bus_fd(uint8_t bus)
+{
+	(void)bus;
+	return true; /* every in-memory bus carries FD frames */
+}
+
 int conf_wire_inject(uint8_t bus, const hal_can_frame_t *frame)
 {
 	hal_can_frame_t f = *frame;

@@ -15,7 +15,13 @@
  * refusals counted, receiving goes on, the other bus keeps working, the
  * mode survives a bus-off), that no frame of one bus appears on the
  * other, SQ_ENODEV for a bus the backend lacks, and that a bad bus index or
- * NULL goes to the contract handler. Every check prints one line:
+ * NULL goes to the contract handler. CAN FD: malformed FD frames (a length
+ * no DLC code has, FDF with RTR, BRS/ESI without FDF, more than 8 bytes
+ * without FDF) are SQ_EINVAL everywhere; on a bus that carries FD frames
+ * every DLC code 9..15 (64 bytes included) goes both ways with BRS/ESI
+ * kept, classic and FD frames mixed in order; on a classic-only bus an FD
+ * frame is refused with SQ_ENOTSUP, counted, nothing sent, and the round
+ * trips are a SKIP. Every check prints one line:
  *   PASS  hal-conformance [vbus] bus 0: ...
  *   FAIL  hal-conformance [vbus] bus 0: ... (what was seen)
  *   SKIP: hal-conformance [socketcan] bus 0: ... (why)
@@ -362,7 +368,7 @@ typedef struct {
 static void check_frame_validity(uint8_t bus)
 {
 	const bad_frame_t cases[] = {
-		{ "an undefined flag bit (0x08)", frame(0x100U, 0x08U, 1U, 1U) },
+		{ "an undefined flag bit (0x40)", frame(0x100U, 0x40U, 1U, 1U) },
 		{ "the top flag bit (0x80) on an extended frame",
 		  frame(0x100U, (uint8_t)(HAL_CAN_FLAG_EXT | 0x80U), 1U, 2U) },
 		{ "an error frame (HAL_CAN_FLAG_ERR)", frame(0x08U, HAL_CAN_FLAG_ERR, 8U, 3U) },
@@ -370,6 +376,15 @@ static void check_frame_validity(uint8_t bus)
 		{ "DLC 15 (remote frame)", frame(0x100U, HAL_CAN_FLAG_RTR, 15U, 5U) },
 		{ "standard id 0x800", frame(0x800U, 0U, 1U, 6U) },
 		{ "extended id 0x20000000", frame(0x20000000U, HAL_CAN_FLAG_EXT, 1U, 7U) },
+		{ "12 bytes without FDF", frame(0x100U, 0U, 12U, 8U) },
+		{ "FD length 9 (no DLC code's)", frame(0x100U, HAL_CAN_FLAG_FDF, 9U, 9U) },
+		{ "FD length 13 (no DLC code's)", frame(0x100U, HAL_CAN_FLAG_FDF, 13U, 10U) },
+		{ "FD length 63 (no DLC code's)", frame(0x100U, HAL_CAN_FLAG_FDF, 63U, 11U) },
+		{ "FD length 65 (above 64)", frame(0x100U, HAL_CAN_FLAG_FDF, 65U, 12U) },
+		{ "FDF with RTR", frame(0x100U, (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_RTR), 8U, 13U) },
+		{ "BRS without FDF", frame(0x100U, HAL_CAN_FLAG_BRS, 8U, 14U) },
+		{ "ESI without FDF", frame(0x100U, HAL_CAN_FLAG_ESI, 8U, 15U) },
+		{ "FD standard id 0x800", frame(0x800U, HAL_CAN_FLAG_FDF, 12U, 16U) },
 	};
 	uint32_t c;
 	uint32_t m;
@@ -641,6 +656,182 @@ static void check_no_such_bus(uint8_t bus)
 	conf_backend_teardown();
 }
 
+/* ---- CAN FD ------------------------------------------------------------------------ */
+
+/* The data lengths of DLC codes 9..15 (ISO 11898-1:2015, table of the DLC):
+ * written out here, not taken from hal.h's map. */
+static const uint8_t fd_len_of_code[7] = { 12U, 16U, 20U, 24U, 32U, 48U, 64U };
+
+#define FD_CASES 10U
+
+/* Every FD length, standard and extended ids, BRS and ESI in every
+ * combination, and FD frames of 0 and 8 bytes (FDF, not classic). */
+static uint32_t fd_frames(hal_can_frame_t *f)
+{
+	static const uint8_t fd_flags[4] = { HAL_CAN_FLAG_FDF,
+					     (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_BRS),
+					     (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_ESI),
+					     (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_BRS | HAL_CAN_FLAG_ESI) };
+	uint32_t i;
+
+	for (i = 0U; i < 7U; i++) {
+		const uint8_t ext = ((i % 2U) == 1U) ? (uint8_t)HAL_CAN_FLAG_EXT : 0U;
+
+		f[i] = frame((ext != 0U) ? 0x1ABCDE00U + i : 0x0A0U + i, (uint8_t)(fd_flags[i % 4U] | ext),
+			     fd_len_of_code[i], (uint8_t)(0x30U + i));
+	}
+	f[7] = frame(0x7FFU, fd_flags[1], 0U, 0U);
+	f[8] = frame(0x1FFFFFFFU, (uint8_t)(fd_flags[3] | HAL_CAN_FLAG_EXT), 8U, 0x77U);
+	f[9] = frame(0x0A0U, fd_flags[1], 64U, 0xF0U); /* 64 bytes, last byte distinct */
+	return FD_CASES;
+}
+
+static bool same_frames(const hal_can_frame_t *got, uint32_t n, const hal_can_frame_t *want, uint32_t m)
+{
+	uint32_t i;
+	bool same = (n == m);
+
+	for (i = 0U; same && (i < n); i++) {
+		same = same_frame(&got[i], &want[i]);
+	}
+	return same;
+}
+
+/* A bus that carries FD: each frame both ways, intact, flags kept. */
+static void check_fd_round_trip(uint8_t bus)
+{
+	hal_can_frame_t f[FD_CASES];
+	hal_can_frame_t got[FD_CASES + 2U];
+	const uint32_t m = fd_frames(f);
+	uint32_t n;
+	uint32_t i;
+	int rc = SQ_OK;
+
+	if (!set_up(bus, "FD round trip")) {
+		return;
+	}
+	for (i = 0U; i < m; i++) {
+		const int r = hal_can_send(bus, &f[i]);
+
+		rc = (rc != SQ_OK) ? rc : r;
+	}
+	conf_let_time_pass(SETTLE_US);
+	n = wire(bus, got, FD_CASES + 2U);
+	report((rc == SQ_OK) && same_frames(got, n, f, m), bus,
+	       "FD send: DLC codes 9..15 (12..64 bytes), 0 and 8 bytes, std/ext, BRS/ESI kept, in order",
+	       "rc %d, %u of %u on the wire intact", rc, (unsigned int)n, (unsigned int)m);
+	inject_all(bus, f, m);
+	n = drain(bus, got, FD_CASES + 2U);
+	report(same_frames(got, n, f, m), bus,
+	       "FD receive: DLC codes 9..15 (12..64 bytes), 0 and 8 bytes, std/ext, BRS/ESI kept, in order",
+	       "%u of %u received intact", (unsigned int)n, (unsigned int)m);
+	conf_backend_teardown();
+}
+
+/* Classic and FD frames on one bus: one order, each keeps its format. */
+static void check_fd_mixed(uint8_t bus)
+{
+	const hal_can_frame_t f[6] = {
+		frame(0x120U, 0U, 8U, 1U), frame(0x120U, HAL_CAN_FLAG_FDF, 8U, 1U),
+		frame(0x121U, (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_BRS), 24U, 2U),
+		frame(0x18DAF110U, HAL_CAN_FLAG_EXT, 3U, 3U), frame(0x122U, HAL_CAN_FLAG_RTR, 4U, 0U),
+		frame(0x18DAF111U, (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_EXT), 64U, 4U),
+	};
+	/* a filter applies to FD frames as to classic ones: 0x122 (classic
+	 * remote) and 0x120..0x121 pass, extended ones by their own filter */
+	const hal_can_filter_t filt[2] = { { 0x120U, 0x7FCU, 0U },
+					   { 0x18DAF110U, 0x1FFFFFFEU, HAL_CAN_FLAG_EXT } };
+	hal_can_frame_t got[8];
+	uint32_t n;
+	uint32_t i;
+	int rc = SQ_OK;
+
+	if (!set_up(bus, "classic and FD on one bus")) {
+		return;
+	}
+	for (i = 0U; i < 6U; i++) {
+		const int r = hal_can_send(bus, &f[i]);
+
+		rc = (rc != SQ_OK) ? rc : r;
+	}
+	conf_let_time_pass(SETTLE_US);
+	n = wire(bus, got, 8U);
+	report((rc == SQ_OK) && same_frames(got, n, f, 6U), bus,
+	       "classic and FD frames sent on one bus: in order, each in its format", "rc %d, %u of 6",
+	       rc, (unsigned int)n);
+	rc = hal_can_set_rx_filter(bus, filt, 2U);
+	inject_all(bus, f, 6U);
+	n = drain(bus, got, 8U);
+	report(((rc == SQ_OK) || (rc == SQ_ENOTSUP)) && same_frames(got, n, f, 6U), bus,
+	       "classic and FD frames received on one bus (through filters): in order, each in its format",
+	       "filter rc %d, %u of 6", rc, (unsigned int)n);
+	conf_backend_teardown();
+}
+
+/* A bus that carries classic frames only: an FD frame (of any length) is
+ * refused with SQ_ENOTSUP, counted, nothing sent; classic frames go on;
+ * a malformed FD frame is still SQ_EINVAL (the frame rule first). */
+static void check_fd_refused(uint8_t bus)
+{
+	const char *what = "classic-only bus: FD frames refused (SQ_ENOTSUP), counted, nothing sent";
+	const hal_can_frame_t fd[3] = { frame(0x0A0U, HAL_CAN_FLAG_FDF, 24U, 1U),
+					frame(0x0A1U, (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_BRS), 8U, 2U),
+					frame(0x1ABCDEF0U, (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_EXT), 64U, 3U) };
+	const hal_can_frame_t classic = frame(0x0A2U, 0U, 8U, 4U);
+	hal_can_frame_t bad = frame(0x0A0U, HAL_CAN_FLAG_FDF, 13U, 5U);
+	hal_can_status_t st0;
+	hal_can_status_t st1;
+	hal_can_frame_t got[4];
+	uint32_t on_wire;
+	uint32_t i;
+	int rc_bad;
+	int rc_classic;
+	bool refused = true;
+
+	if (!set_up(bus, what)) {
+		return;
+	}
+	(void)hal_can_get_status(bus, &st0);
+	for (i = 0U; i < 3U; i++) {
+		refused = refused && (hal_can_send(bus, &fd[i]) == SQ_ENOTSUP);
+	}
+	rc_bad = hal_can_send(bus, &bad);
+	conf_let_time_pass(SETTLE_US);
+	on_wire = wire(bus, got, 4U);
+	(void)hal_can_get_status(bus, &st1);
+	report(refused && (rc_bad == SQ_EINVAL) && (on_wire == 0U) &&
+		       (st1.fd_unsupported == st0.fd_unsupported + 3U) &&
+		       (st1.tx_dropped == st0.tx_dropped),
+	       bus, what, "bad %d, %u on the wire, fd_unsupported %u -> %u", rc_bad, (unsigned int)on_wire,
+	       (unsigned int)st0.fd_unsupported, (unsigned int)st1.fd_unsupported);
+	rc_classic = hal_can_send(bus, &classic);
+	conf_let_time_pass(SETTLE_US);
+	on_wire = wire(bus, got, 4U);
+	report((rc_classic == SQ_OK) && (on_wire == 1U) && same_frame(&got[0], &classic), bus,
+	       "classic-only bus: classic frames still sent after FD refusals", "rc %d, %u on the wire",
+	       rc_classic, (unsigned int)on_wire);
+	conf_backend_teardown();
+}
+
+static void check_fd(uint8_t bus)
+{
+	bool fd;
+
+	if (!set_up(bus, "CAN FD")) {
+		return;
+	}
+	fd = conf_bus_fd(bus);
+	conf_backend_teardown();
+	if (fd) {
+		check_fd_round_trip(bus);
+		check_fd_mixed(bus);
+	} else {
+		check_fd_refused(bus);
+		skip(bus, "FD send/receive: DLC codes 9..15, BRS/ESI kept", "this bus carries classic frames only");
+		skip(bus, "classic and FD frames on one bus", "this bus carries classic frames only");
+	}
+}
+
 static void check_contracts(void)
 {
 	const hal_can_frame_t f = frame(0x100U, 0U, 1U, 0U);
@@ -681,6 +872,7 @@ int main(void)
 		check_bus_off(bus);
 		check_listen_only(bus);
 		check_listen_only_kept(bus);
+		check_fd(bus);
 		if (buses > 1U) {
 			check_isolation(bus);
 		}

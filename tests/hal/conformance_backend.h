@@ -35,8 +35,16 @@ void conf_backend_teardown(void);
 /* How many buses this backend really has (1 or HAL_CAN_BUSES). */
 uint32_t conf_bus_count(void);
 
-/* Another node on `bus` sends this frame: it reaches the backend's receive
- * path as a real frame on the wire would (its filters apply). */
+/* Whether `bus` carries CAN FD frames, as the harness knows its backend
+ * (the in-memory bus: yes; bxCAN: no, a classic controller; SocketCAN: the
+ * interface's MTU, asked by the harness itself). The suite then checks FD
+ * round trips, or that FD frames are refused with SQ_ENOTSUP and counted
+ * (and says SKIP for the round trips). */
+bool conf_bus_fd(uint8_t bus);
+
+/* Another node on `bus` sends this frame (classic or FD): it reaches the
+ * backend's receive path as a real frame on the wire would (its filters
+ * apply). */
 int conf_wire_inject(uint8_t bus, const hal_can_frame_t *frame);
 
 /* The next frame this node put on `bus`'s wire, oldest first:

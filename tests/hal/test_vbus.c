@@ -165,10 +165,10 @@ static void test_frame_check_table(void **state)
 		{ 0x100U, 0x00U, 9U, SQ_EINVAL },
 		{ 0x100U, 0x02U, 15U, SQ_EINVAL },
 		{ 0x100U, 0x04U, 8U, SQ_EINVAL },      /* error frame */
-		{ 0x100U, 0x08U, 1U, SQ_EINVAL },      /* undefined bits, each one */
-		{ 0x100U, 0x10U, 1U, SQ_EINVAL },
-		{ 0x100U, 0x20U, 1U, SQ_EINVAL },
-		{ 0x100U, 0x40U, 1U, SQ_EINVAL },
+		{ 0x100U, 0x08U, 1U, SQ_OK },          /* FDF: an FD frame of 1 byte */
+		{ 0x100U, 0x10U, 1U, SQ_EINVAL },      /* BRS without FDF */
+		{ 0x100U, 0x20U, 1U, SQ_EINVAL },      /* ESI without FDF */
+		{ 0x100U, 0x40U, 1U, SQ_EINVAL },      /* undefined bits */
 		{ 0x100U, 0x81U, 1U, SQ_EINVAL },
 	};
 	size_t i;
