@@ -46,10 +46,6 @@ FD_LENGTHS = (0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64)
 FRAMES = 3000
 
 
-def same_num(text, value):
-    return abs(float(text) - float(value)) <= 1e-12 * max(1.0, abs(float(value)))
-
-
 def tool(args):
     return vehref.run_tool([vehref.PY, vehref.TOOL] + list(args))
 
@@ -84,15 +80,7 @@ def check_layout(r, name, layout, tmp):
                 "byte_order": "intel" if sig.is_little_endian else "motorola",
                 "signed": "yes" if sig.is_signed else "no", "unit": sig.unit,
                 "min_dlc": exp["min_dlc"], "protection": exp["protection"]}
-        bad = []
-        for k, v in want.items():
-            got = inp.get(k)
-            ok = got is not None and (int(got, 0) == v if isinstance(v, int) else got == v)
-            if not ok:
-                bad.append((k, got, v))
-        for k in ("factor", "offset"):
-            if not same_num(inp.get(k, "0"), getattr(sig, k)):
-                bad.append((k, inp.get(k), getattr(sig, k)))
+        bad = vehref.wrong_keys(inp, want, sig)
         r.check(not bad, "%s %s: layout keys equal canmatrix's signal (wrong: %s)" % (name, ref, bad))
         r.check(inp.get("fd") == ("yes" if fr.is_fd else None) == exp["fd"],
                 "%s %s: fd = %s as canmatrix's is_fd %s" % (name, ref, inp.get("fd"), fr.is_fd))

@@ -234,6 +234,25 @@ def yes(d, k):
     return d.get(k, "no").lower() in ("yes", "1")
 
 
+def same_num(text, value):
+    return abs(float(text) - float(value)) <= 1e-12 * max(1.0, abs(float(value)))
+
+
+def wrong_keys(inp, want, sig):
+    """[(key, written, wanted)] where an input's keys differ from want
+    (integers compared by value) or its factor and offset from the DBC
+    signal's."""
+    bad = []
+    for k, v in want.items():
+        got = inp.get(k)
+        if got is None or not (int(got, 0) == v if isinstance(v, int) else got == v):
+            bad.append((k, got, v))
+    for k in ("factor", "offset"):
+        if not same_num(inp.get(k, "0"), getattr(sig, k)):
+            bad.append((k, inp.get(k), getattr(sig, k)))
+    return bad
+
+
 # ------------------------------------------------------------ reference extraction
 
 def bits_of(start, length, intel):
