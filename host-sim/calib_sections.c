@@ -22,7 +22,7 @@
 #include "sq_status.h"
 
 static const char *const pos_names[CALIB_MAX_CORNERS] = { "FL", "FR", "RL", "RR" };
-static const char *const prot_names[CALIB_PROT_COUNT] = { "none", "p01", "p02", "counter" };
+static const char *const prot_names[CALIB_PROT_COUNT] = { "none", "p01", "p02", "counter", "p05" };
 
 void calib_sections_init(calib_sections_t *s)
 {
@@ -468,10 +468,10 @@ static int get_signal(const ctx_t *c, const char *prefix, bool required, can_sig
 	snprintf(k1, sizeof(k1), "%sstart_bit", prefix);
 	snprintf(k2, sizeof(k2), "%slength", prefix);
 	snprintf(k3, sizeof(k3), "%sbyte_order", prefix);
-	if (get_int(c, k1, 0, 63, required, &v, &p1) != 0) {
+	if (get_int(c, k1, 0, (int64_t)CAN_SIGNAL_MAX_BITS - 1, required, &v, &p1) != 0) {
 		return -1;
 	}
-	sig->start_bit = (uint8_t)v;
+	sig->start_bit = (uint16_t)v;
 	if (get_int(c, k2, 0, 255, required, &v, &p2) != 0) {
 		return -1;
 	}
@@ -489,7 +489,7 @@ static int get_signal(const ctx_t *c, const char *prefix, bool required, can_sig
 			      prefix, prefix, prefix);
 	}
 	if (*present && !can_signal_valid(sig)) {
-		return kv_err(c, kv_of(c->sec, k1), "%s signal runs beyond the 64 bits of a frame",
+		return kv_err(c, kv_of(c->sec, k1), "%s signal runs beyond the 512 bits of an FD frame",
 			      prefix[0] != '\0' ? prefix : "value");
 	}
 	return 0;
@@ -529,7 +529,7 @@ static const char *const input_keys[] = {
 	"mux2_value", "mux2_value_max", "na_raw", "na_raw2", "qualifier_bit", "qualifier_invalid", "protection",
 	"data_id", "data_id_list", "counter_start_bit", "counter_length",
 	"counter_byte_order", "counter_modulus", "max_delta_counter", "period_ms",
-	"stale_cycles", "max", "min", "step_max", NULL
+	"stale_cycles", "max", "min", "step_max", "fd", "e2e_offset_byte", NULL
 };
 
 /* the brake's standard deviations: flat keys a corner may override */
@@ -584,7 +584,7 @@ static const calib_section_kv_t *blame(const ctx_t *c, const char *why)
 	if (lead_key(c->sec, why) != NULL) {
 		return lead_key(c->sec, why);
 	}
-	static const char *const keys[] = { "min_dlc", "max_delta_counter", "counter_modulus",
+	static const char *const keys[] = { "min_dlc", "e2e_offset_byte", "max_delta_counter", "counter_modulus",
 		"mux_value", "qualifier", "na_raw", "step_max", "period_ms", "factor",
 		"length", "id", NULL };
 	size_t i;
@@ -632,6 +632,9 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 	if ((in->id > 0x7FFU) && ((in->flags & CALIB_IN_EXTENDED) == 0U)) {
 		return kv_err(c, kv_of(c->sec, "id"), "id 0x%" PRIX32 " is above 0x7FF: needs extended = yes",
 			      in->id);
+	}
+	if (get_bool(c, "fd", &in->fd, &present) != 0) {
+		return -1;
 	}
 	if (get_bool(c, "exact_dlc", &b, &present) != 0) {
 		return -1;
@@ -764,12 +767,12 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 		in->flags |= CALIB_IN_NA2;
 		in->na_raw2 = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
 	}
-	if (get_int(c, "qualifier_bit", 0, 63, false, &v, &present) != 0) {
+	if (get_int(c, "qualifier_bit", 0, (int64_t)CAN_SIGNAL_MAX_BITS - 1, false, &v, &present) != 0) {
 		return -1;
 	}
 	if (present) {
 		in->flags |= CALIB_IN_QUALIFIER;
-		in->qualifier_bit = (uint8_t)v;
+		in->qualifier_bit = (uint16_t)v;
 	}
 	if (get_u8(c, "qualifier_invalid", 0, 1, false, &in->qualifier_invalid) != 0) {
 		return -1;
@@ -784,16 +787,25 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 			}
 		}
 		if (p == (unsigned int)CALIB_PROT_COUNT) {
-			return kv_err(c, kv, "protection must be none, p01, p02 or counter, got '%s'",
+			return kv_err(c, kv, "protection must be none, p01, p02, p05 or counter, got '%s'",
 				      kv->value);
 		}
 		in->protection = (uint8_t)p;
 	}
-	if (in->protection == (uint8_t)CALIB_PROT_P01) {
+	if ((in->protection == (uint8_t)CALIB_PROT_P01) ||
+	    (in->protection == (uint8_t)CALIB_PROT_P05)) {
 		if (get_int(c, "data_id", 0, 0xFFFF, true, &v, NULL) != 0) {
 			return -1;
 		}
 		in->data_id = (uint16_t)v;
+	}
+	if (get_u8(c, "e2e_offset_byte", 0, (int64_t)CAN_SIGNAL_MAX_BYTES - 3, false,
+		   &in->e2e_offset_byte) != 0) {
+		return -1;
+	}
+	if ((kv_of(c->sec, "e2e_offset_byte") != NULL) &&
+	    (in->protection != (uint8_t)CALIB_PROT_P05)) {
+		return kv_err(c, kv_of(c->sec, "e2e_offset_byte"), "e2e_offset_byte is for protection = p05");
 	}
 	if ((in->protection == (uint8_t)CALIB_PROT_P02) && (get_dil(c, in) != 0)) {
 		return -1;
@@ -808,7 +820,7 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 			return -1;
 		}
 	}
-	if (get_u8(c, "max_delta_counter", 1, 15, false, &in->max_delta_counter) != 0) {
+	if (get_u8(c, "max_delta_counter", 1, 255, false, &in->max_delta_counter) != 0) {
 		return -1;
 	}
 	if (get_int(c, "period_ms", 1, 1000, true, &v, NULL) != 0) {
@@ -823,8 +835,8 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 		return -1;
 	}
 	need = calib_input_needed_dlc(in);
-	in->min_dlc = need;
-	if (get_int(c, "min_dlc", 0, 8, false, &v, &present) != 0) {
+	in->min_dlc = calib_input_frame_len(in); /* fd: the next FD length */
+	if (get_int(c, "min_dlc", 0, (int64_t)CAN_SIGNAL_MAX_BYTES, false, &v, &present) != 0) {
 		return -1;
 	}
 	if (present) {
@@ -1088,6 +1100,9 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 		if ((in->flags & CALIB_IN_EXTENDED) != 0U) {
 			fprintf(f, "extended = yes\n");
 		}
+		if (in->fd != 0U) {
+			fprintf(f, "fd = yes\n");
+		}
 		fprintf(f, "min_dlc = %u\n", in->min_dlc);
 		if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
 			fprintf(f, "exact_dlc = yes\n");
@@ -1125,8 +1140,12 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 				in->qualifier_invalid);
 		}
 		fprintf(f, "protection = %s\n", prot_names[in->protection]);
-		if (in->protection == (uint8_t)CALIB_PROT_P01) {
+		if ((in->protection == (uint8_t)CALIB_PROT_P01) ||
+		    (in->protection == (uint8_t)CALIB_PROT_P05)) {
 			fprintf(f, "data_id = 0x%04X\n", in->data_id);
+		}
+		if ((in->protection == (uint8_t)CALIB_PROT_P05) && (in->e2e_offset_byte != 0U)) {
+			fprintf(f, "e2e_offset_byte = %u\n", in->e2e_offset_byte);
 		}
 		if (in->protection == (uint8_t)CALIB_PROT_P02) {
 			fprintf(f, "data_id_list =");

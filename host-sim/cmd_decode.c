@@ -53,6 +53,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "candump_hal.h"
 #include "candump_log.h"
 #include "crc8_p01.h"
 #include "decode_inputs.h"
@@ -516,18 +517,7 @@ static int decode_iface(decoder_t *d, const char *iface)
 	while (!stop_flag) {
 		hal_idle_until(hal_time_us() + 200000U);
 		while (!stop_flag && (hal_can_receive(0U, &hf) == SQ_OK)) {
-			memset(&f, 0, sizeof(f));
-			f.t_ns = hf.timestamp_us * 1000U;
-			f.id = hf.id;
-			f.len = hf.dlc;
-			f.ext = (hf.flags & HAL_CAN_FLAG_EXT) != 0U;
-			memcpy(f.data, hf.data, HAL_CAN_MAX_DLEN);
-			if ((hf.flags & HAL_CAN_FLAG_ERR) != 0U) {
-				f.kind = CANDUMP_KIND_ERROR;
-				f.id &= CANDUMP_ERR_MASK;
-			} else if ((hf.flags & HAL_CAN_FLAG_RTR) != 0U) {
-				f.kind = CANDUMP_KIND_RTR;
-			}
+			candump_from_hal(&hf, hf.timestamp_us * 1000U, iface, &f);
 			if (decode_one(d, &f) != 0) {
 				hal_linux_close();
 				return 1;
@@ -535,6 +525,9 @@ static int decode_iface(decoder_t *d, const char *iface)
 		}
 	}
 	hal_linux_close();
+	if (d->inputs != NULL) {
+		decode_inputs_summary(d->inputs, stderr);
+	}
 	return 0;
 }
 
@@ -588,6 +581,9 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 		default:
 			break;
 		}
+	}
+	if (d->inputs != NULL) {
+		decode_inputs_summary(d->inputs, stderr);
 	}
 	if (rc < 0) {
 		fprintf(stderr, "squeal-sim decode: %s: read error\n", name);

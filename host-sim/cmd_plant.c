@@ -19,6 +19,8 @@
 
 #include "calib.h"
 #include "calib_text.h"
+#include "candump_hal.h"
+#include "candump_log.h"
 #include "e2e_p01.h"
 #include "hal.h"
 #include "hal_linux.h"
@@ -394,18 +396,16 @@ static int next_sender(const plant_t *p)
 static void write_log_line(FILE *out, const char *iface, uint64_t t_ns,
 			   const hal_can_frame_t *f)
 {
-	const uint64_t us = (t_ns + 500U) / 1000U;
-	char data[2 * HAL_CAN_MAX_DLEN + 1];
-	unsigned int k;
+	const uint64_t us = (t_ns + 500U) / 1000U; /* to the nearest microsecond */
+	candump_frame_t c;
+	char line[CANDUMP_FORMAT_MAX + 2U];
+	int n;
 
-	for (k = 0U; k < f->dlc; k++) {
-		snprintf(&data[2U * k], 3, "%02X", f->data[k]);
+	candump_from_hal(f, us * 1000U, iface, &c);
+	n = candump_format_frame(&c, true, line, sizeof(line));
+	if (n > 0) {
+		(void)fwrite(line, 1U, (size_t)n, out);
 	}
-	data[2U * f->dlc] = '\0';
-	fprintf(out, ((f->flags & HAL_CAN_FLAG_EXT) != 0U) ?
-		"(%010" PRIu64 ".%06" PRIu64 ") %s %08" PRIX32 "#%s\n" :
-		"(%010" PRIu64 ".%06" PRIu64 ") %s %03" PRIX32 "#%s\n",
-		us / 1000000U, us % 1000000U, iface, f->id, data);
 }
 
 static uint64_t mono_ns(void)
@@ -471,6 +471,13 @@ static int plant_setup(plant_t *p, int argc, char **argv)
 	}
 	memset(p->s, 0, sizeof(p->s));
 	p->n_senders = plant_vehicle_frames(&p->cal, p->vframes);
+	for (i = 0U; i < p->n_senders; i++) {
+		if (p->vframes[i].dlc > HAL_CAN_MAX_DLEN) {
+			fprintf(stderr, "squeal-sim plant: message 0x%" PRIX32 " has %u bytes, this build's CAN frames hold %u\n",
+				p->vframes[i].id, p->vframes[i].dlc, (unsigned)HAL_CAN_MAX_DLEN);
+			return 1;
+		}
+	}
 	if (p->n_senders > 0U) {
 		/* a vehicle layout: one sender per frame, at its inputs' period
 		 * (--rate-hz scales it: 100 Hz is each frame's own period) */

@@ -70,6 +70,7 @@
 #include "calib.h"
 #include "calib_text.h"
 #include "input_rx.h"
+#include "candump_hal.h"
 #include "candump_log.h"
 #include "hal_vbus.h"
 #include "json_writer.h"
@@ -117,19 +118,18 @@ typedef struct {
 	uint64_t at_us;
 } segment_point_t;
 
-/* A frame waiting in the reorder window (classic, RTR, error; FD and XL
- * frames keep only their kind: they are counted, not given). */
+/* A frame waiting in the reorder window, as the HAL frame it will be
+ * (classic, RTR, error, FD); a frame this build's HAL cannot hold (XL, FD
+ * beyond HAL_CAN_MAX_DLEN) keeps only its kind: it is counted, not given. */
 typedef struct {
 	uint64_t t_us;       /* log time, re-based                            */
 	uint64_t seq;        /* read order: ties keep the file's order        */
 	uint64_t line_no;
-	uint32_t id;
 	uint8_t iface;       /* index in replay_t.ifaces                      */
 	uint8_t kind;        /* candump_kind_t                                */
-	uint8_t len;
-	bool ext;
+	bool unsupported;    /* not a HAL frame here (candump_to_hal)         */
 	bool detour;         /* read after a jump back not yet decided        */
-	uint8_t data[HAL_CAN_MAX_DLEN];
+	hal_can_frame_t frame;
 } held_t;
 
 /* Per corner: reasons by the input stage's own names, time per state and
@@ -153,6 +153,9 @@ typedef struct {
 	uint64_t dropcount_lines;
 	uint64_t dropped;
 	uint64_t malformed;
+	/* frames by format: classic data, remote and error frames; CAN FD */
+	uint64_t classic_frames;
+	uint64_t fd_frames;
 	/* frames not given to the firmware or refused by its controller */
 	uint64_t unsupported_fd;
 	uint64_t unsupported_xl;
@@ -253,7 +256,8 @@ static void replay_usage(FILE *f)
 		"                   the time per (v0, force) cell; - for stdout (needs\n"
 		"                   --no-output)\n"
 		"  --no-output      do not write the ECU's frames (only count them)\n\n"
-		"CAN FD and XL frames are counted as unsupported (classic controller).\n"
+		"CAN FD frames (##) reach the firmware as FD frames; CAN XL frames are\n"
+		"counted as unsupported.\n"
 		"Exit status: 0 done (also with malformed lines), 1 input/calibration\n"
 		"error or no CAN frame in the log, 2 bad usage.\n");
 }
@@ -377,14 +381,7 @@ static void emit(replay_t *r, uint8_t bus, const hal_can_frame_t *hf)
 	if (r->no_output) {
 		return;
 	}
-	memset(&f, 0, sizeof(f));
-	f.t_ns = hf->timestamp_us * 1000U;
-	memcpy(f.iface, r->iface[bus], sizeof(f.iface));
-	f.kind = ((hf->flags & HAL_CAN_FLAG_RTR) != 0U) ? CANDUMP_KIND_RTR : CANDUMP_KIND_CLASSIC;
-	f.ext = (hf->flags & HAL_CAN_FLAG_EXT) != 0U;
-	f.id = hf->id;
-	f.len = hf->dlc;
-	memcpy(f.data, hf->data, HAL_CAN_MAX_DLEN);
+	candump_from_hal(hf, hf->timestamp_us * 1000U, r->iface[bus], &f);
 	n = candump_format_frame(&f, true, line, sizeof(line));
 	if (n < 0) {
 		r->out_error = true;
@@ -601,7 +598,7 @@ static bool bus_of_frame(replay_t *r, const held_t *h, const hal_can_frame_t *hf
 			r->multi_reported = true;
 			fprintf(stderr, "%s:%llu: the input identifiers arrive on %s and %s (0x%X here): the inputs are taken from %s (the first that carried one), the other's are ignored; --bus NAME or input_iface chooses\n",
 				a->log_name, (unsigned long long)h->line_no, r->ifaces[r->auto_iface],
-				name, (unsigned)h->id, r->ifaces[r->auto_iface]);
+				name, (unsigned)hf->id, r->ifaces[r->auto_iface]);
 		}
 	}
 	if (h->iface != r->auto_iface) {
@@ -614,32 +611,17 @@ static bool bus_of_frame(replay_t *r, const held_t *h, const hal_can_frame_t *hf
 static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 {
 	const calib_t *cal = squeal_app_monitor()->cal;
-	hal_can_frame_t hf;
+	hal_can_frame_t hf = h->frame;
 	uint8_t bus = 0U;
 	int rc;
 
-	switch ((candump_kind_t)h->kind) {
-	case CANDUMP_KIND_FD:
-		r->unsupported_fd++;
+	if (h->unsupported) {
+		if (h->kind == (uint8_t)CANDUMP_KIND_XL) {
+			r->unsupported_xl++;
+		} else {
+			r->unsupported_fd++; /* longer than this build's HAL frame */
+		}
 		return;
-	case CANDUMP_KIND_XL:
-		r->unsupported_xl++;
-		return;
-	default:
-		break;
-	}
-	memset(&hf, 0, sizeof(hf));
-	hf.id = h->id;
-	hf.dlc = (h->len > HAL_CAN_MAX_DLEN) ? (uint8_t)HAL_CAN_MAX_DLEN : h->len;
-	if (h->kind == (uint8_t)CANDUMP_KIND_RTR) {
-		hf.flags |= HAL_CAN_FLAG_RTR;
-	} else {
-		memcpy(hf.data, h->data, hf.dlc);
-	}
-	if (h->kind == (uint8_t)CANDUMP_KIND_ERROR) {
-		hf.flags |= HAL_CAN_FLAG_ERR;
-	} else if (h->ext) {
-		hf.flags |= HAL_CAN_FLAG_EXT;
 	}
 	if (!bus_of_frame(r, h, &hf, a, &bus)) {
 		return;
@@ -896,12 +878,16 @@ static void on_frame(replay_t *r, const candump_frame_t *f, const replay_args_t 
 	memset(&h, 0, sizeof(h));
 	h.seq = r->seq++;
 	h.line_no = line_no;
-	h.id = f->id;
 	h.iface = iface_index(r, f->iface);
 	h.kind = (uint8_t)f->kind;
-	h.len = f->len;
-	h.ext = f->ext;
-	memcpy(h.data, f->data, HAL_CAN_MAX_DLEN);
+	h.unsupported = candump_to_hal(f, &h.frame) != SQ_OK;
+	if (f->kind == CANDUMP_KIND_FD) {
+		r->fd_frames++;
+	} else if (f->kind != CANDUMP_KIND_XL) {
+		r->classic_frames++;
+	} else {
+		/* XL: counted as unsupported when given */
+	}
 	t_us = rebased_us(r, f);
 	if (r->detour) {
 		if (t_us + SEGMENT_BACK_US < r->prev_t_us) {
@@ -1122,7 +1108,10 @@ static void summary(const replay_t *r, const replay_args_t *a)
 	fprintf(o, " (from ");
 	print_us(o, r->t0_us);
 	fprintf(o, ", tail %llu ms)\n", (unsigned long long)(a->tail_us / 1000U));
-	fprintf(o, "  frames_read           %llu\n", (unsigned long long)r->frames);
+	fprintf(o, "  frames_read           %llu (classic_frames %llu, fd_frames %llu, xl_frames %llu)\n",
+		(unsigned long long)r->frames, (unsigned long long)r->classic_frames,
+		(unsigned long long)r->fd_frames,
+		(unsigned long long)(r->frames - r->classic_frames - r->fd_frames));
 	fprintf(o, "  frames_used           %llu (%s %u, %s %u)\n",
 		(unsigned long long)sp->used + fo->used, l0, sp->used, l1, fo->used);
 	for (i = 0U; (i < squeal_app_corner_count()) && (i < CALIB_MAX_CORNERS); i++) {
@@ -1386,6 +1375,12 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_kv_seconds(w, "virtual_time_s", r->now_us - r->t0_us);
 	json_kv_u64(w, "tail_ms", a->tail_us / 1000U);
 	json_kv_u64(w, "frames_read", r->frames);
+	json_key(w, "frames_by_format");
+	json_begin_object(w);
+	json_kv_u64(w, "classic", r->classic_frames);
+	json_kv_u64(w, "fd", r->fd_frames);
+	json_kv_u64(w, "xl", r->frames - r->classic_frames - r->fd_frames);
+	json_end_object(w);
 	json_pair(w, "frames_used", r->started ? sp->used : 0U, r->started ? fo->used : 0U);
 	json_key(w, "rejected");
 	json_begin_object(w);

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "calib_map.h"
+#include "candump_hal.h"
 #include "calib_text.h"
 #include "sq_status.h"
 
@@ -82,21 +83,6 @@ void decode_inputs_csv_header(FILE *out)
 	fprintf(out, "t_s,iface,id,input,raw,physical,unit,valid,reason\n");
 }
 
-static hal_can_frame_t hal_frame(const candump_frame_t *f)
-{
-	hal_can_frame_t h;
-
-	memset(&h, 0, sizeof(h));
-	h.id = f->id;
-	h.dlc = (f->len > 8U) ? 8U : f->len;
-	h.flags = f->ext ? HAL_CAN_FLAG_EXT : 0U;
-	if (f->kind == CANDUMP_KIND_RTR) {
-		h.flags |= HAL_CAN_FLAG_RTR;
-	}
-	memcpy(h.data, f->data, h.dlc);
-	return h;
-}
-
 static double physical(const calib_input_t *in, int64_t value)
 {
 	return (double)value * calib_dec_value(in->factor) + calib_dec_value(in->offset);
@@ -136,10 +122,16 @@ static void corner_views(decode_inputs_t *d, uint32_t i, int64_t value, FILE *ou
 
 void decode_inputs_frame(decode_inputs_t *d, const candump_frame_t *f, bool csv, FILE *out)
 {
-	const hal_can_frame_t h = hal_frame(f);
+	hal_can_frame_t h;
 	uint32_t i;
 
-	if ((f->kind != CANDUMP_KIND_CLASSIC) && (f->kind != CANDUMP_KIND_RTR)) {
+	if (candump_to_hal(f, &h) != SQ_OK) {
+		/* the firmware would not see it either: counted, said at the end */
+		if (f->kind == CANDUMP_KIND_XL) {
+			d->skipped_xl++;
+		} else {
+			d->skipped_fd++;
+		}
 		return;
 	}
 	for (i = 0U; i < d->n_inputs; i++) {
@@ -180,4 +172,15 @@ void decode_inputs_frame(decode_inputs_t *d, const candump_frame_t *f, bool csv,
 		}
 		fprintf(out, "\n");
 	}
+}
+
+void decode_inputs_summary(const decode_inputs_t *d, FILE *out)
+{
+	if ((d->skipped_xl + d->skipped_fd) == 0U) {
+		return;
+	}
+	fprintf(out, "squeal-sim decode: %" PRIu64 " frames not decoded as inputs (CAN XL %" PRIu64
+		", CAN FD longer than this build's %u-byte frames %" PRIu64 ")\n",
+		d->skipped_xl + d->skipped_fd, d->skipped_xl, (unsigned)HAL_CAN_MAX_DLEN,
+		d->skipped_fd);
 }

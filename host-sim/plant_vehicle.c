@@ -7,6 +7,7 @@
 #include "calib_map.h"
 #include "calib_sections.h"
 #include "e2e_p02.h"
+#include "e2e_p05.h"
 #include "input_conv.h"
 
 #define NO_PROT 0xFFU
@@ -46,8 +47,12 @@ uint32_t plant_vehicle_frames(const calib_t *cal, plant_vframe_t frames[CALIB_MA
 			frames[n].mux2_value = in->mux2_value;
 			frames[n].prot = NO_PROT;
 			frames[n].period_ms = in->period_ms;
-			frames[n].dlc = 8U;
+			frames[n].fd = in->fd != 0U;
+			frames[n].dlc = frames[n].fd ? in->min_dlc : 8U;
 			n++;
+		}
+		if (frames[k].fd && (in->min_dlc > frames[k].dlc)) {
+			frames[k].dlc = in->min_dlc;
 		}
 		frames[k].in[frames[k].n] = (uint8_t)i;
 		frames[k].n++;
@@ -172,7 +177,7 @@ void plant_vehicle_pack(const calib_t *cal, const plant_vframe_t *fr, e2e_p01_tx
 
 	memset(f, 0, sizeof(*f));
 	f->id = fr->id;
-	f->flags = fr->ext ? HAL_CAN_FLAG_EXT : 0U;
+	f->flags = (uint8_t)((fr->ext ? HAL_CAN_FLAG_EXT : 0U) | (fr->fd ? HAL_CAN_FLAG_FDF : 0U));
 	f->dlc = fr->dlc;
 	for (j = 0U; j < fr->n; j++) {
 		const calib_input_t *in = &cal->inputs[fr->in[j]];
@@ -213,6 +218,13 @@ void plant_vehicle_pack(const calib_t *cal, const plant_vframe_t *fr, e2e_p01_tx
 			c.data_len = f->dlc;
 			c.max_delta_counter = in->max_delta_counter;
 			(void)e2e_p02_protect(&c, tx, f->data, f->dlc);
+			break;
+		}
+		case CALIB_PROT_P05: {
+			const e2e_p05_config_t c = { in->data_id, f->dlc, in->e2e_offset_byte,
+						     in->max_delta_counter };
+
+			(void)e2e_p05_protect(&c, tx, f->data, f->dlc);
 			break;
 		}
 		default:

@@ -5,7 +5,9 @@
  * (identifier, format, multiplexer value) of the map, each input's value
  * converted from the scenario's operating point back into the input's unit
  * and raw value (the inverse of the monitor's conversion, in double), the
- * frame protected as its inputs say (P01, P02 or the alive counter).
+ * frame protected as its inputs say (P01, P02, P05 or the alive counter).
+ * An FD message (fd = yes) is sent as an FD frame of its inputs' largest
+ * min_dlc; a classic one as 8 bytes (or exactly min_dlc).
  *
  * The physical value of an input comes from the first corner that uses it
  * (its radii, piston area, efficiency, axle factor): a pressure shared by an
@@ -25,6 +27,7 @@
 typedef struct {
 	uint32_t id;
 	bool ext;
+	bool fd;                            /* sent as a CAN FD frame          */
 	uint8_t dlc;
 	bool has_mux;
 	uint32_t mux_value;                 /* written: the low end of the range */

@@ -22,9 +22,18 @@ statement, against the DBC grammar of the statements the calibration needs
     it as a 29-bit identifier would be a guess (canmatrix refuses it too).
 
 The rest goes to canmatrix unchanged (the original bytes of the kept lines,
-so every number is read exactly as in the file). Messages and signals are
-found by their DBC name or by their long name (the SystemMessageLongSymbol
-and SystemSignalLongSymbol attributes, which canmatrix makes the names).
+so every number is read exactly as in the file), but for one spelling: an
+ENUM attribute's value written as its text ("StandardCAN_FD") instead of its
+index (14) is handed over as the index, which is all canmatrix reads (it
+stops at the text). A text the ENUM does not list is a bad statement.
+Messages and signals are found by their DBC name or by their long name (the
+SystemMessageLongSymbol and SystemSignalLongSymbol attributes, which
+canmatrix makes the names).
+
+A message's frame format (Index.frame_format) is its VFrameFormat attribute
+read here, as the ENUM of its BA_DEF_ lists the values: the value by index or
+by text, else the BA_DEF_DEF_ default (and whether the message's own BA_
+said it); None without the attribute.
 """
 import contextlib
 import io
@@ -64,6 +73,11 @@ OWNER = [
     re.compile(r"^(?:VAL_|SG_MUL_VAL_|SIG_VALTYPE_|BO_TX_BU_|SIG_GROUP_|SIG_TYPE_REF_) +(\d+)\b"),
     re.compile(r"^BA_REL_ +\"[^\"]*\" +BU_(?:SG|BO)_REL_ +%s +(?:SG_ +)?(\d+)\b" % NAME),
 ]
+ENUM_DEF = re.compile(r'^BA_DEF_ +(BO_|SG_|BU_|EV_)? *"(%s)" +ENUM +(.*?) *;\s*$' % NAME, re.S)
+ENUM_DEFAULT = re.compile(r'^BA_DEF_DEF_ +"(%s)" +(%s|%s) *;\s*$' % (NAME, STR, NUM), re.S)
+# BA_ "name" [object] value; : 1 the text before the value, 2 the name, 3 the object, 4 the value
+BA_VALUE = re.compile(r'^(BA_ +"(%s)" +(BO_ +\d+|SG_ +\d+ +%s|BU_ +%s|EV_ +%s)? *)(%s|%s) *;\s*$'
+                      % (NAME, NAME, NAME, NAME, STR, NUM), re.S)
 LONG_MSG = re.compile(r'^BA_ +"SystemMessageLongSymbol" +BO_ +(\d+) +"([^"]*)" *;')
 LONG_SIG = re.compile(r'^BA_ +"SystemSignalLongSymbol" +SG_ +(\d+) +(%s) +"([^"]*)" *;' % NAME)
 
@@ -73,13 +87,14 @@ class DbcRefusal(Exception):
 
 
 class Statement:
-    __slots__ = ("first", "last", "text", "kind", "owner", "bad")
+    __slots__ = ("first", "last", "text", "kind", "owner", "bad", "enum_index")
 
     def __init__(self, first, last, text):
         self.first, self.last, self.text = first, last, text   # 0-based line indices
         self.kind = text.split(None, 1)[0] if text.strip() else ""
         self.owner = None
         self.bad = None
+        self.enum_index = None   # a BA_ of an ENUM written as text: the index to hand over
 
 
 def _statements(lines):
@@ -172,9 +187,64 @@ class Index:
         self.msg_id = {}      # DBC name or long name -> identifier (as in the file)
         self.msg_line = {}    # identifier -> 1-based line of its BO_
         self.long_sig = {}    # (identifier, long name) -> DBC name
+        self.enums = {}       # ENUM attribute name -> [value texts] (BA_DEF_)
+        self.defaults = {}    # attribute name -> BA_DEF_DEF_ value (text unquoted, or number text)
+        self.msg_attr = {}    # (identifier, attribute name) -> BA_ value (text unquoted, or number text)
 
     def lookup(self, name):
         return self.msg_id.get(name)
+
+    def enum_text(self, name, value):
+        """An ENUM attribute's value as its text: a number is the index into
+        the BA_DEF_'s list; None when it lists no such value."""
+        values = self.enums.get(name)
+        if values is None:
+            return None
+        if re.match(r"^\d+$", value):
+            k = int(value)
+            return values[k] if k < len(values) else None
+        return value if value in values else None
+
+    def frame_format(self, cid):
+        """(the message's VFrameFormat text ("StandardCAN_FD", ...) or None,
+        True when its own BA_ says so, False for the default or nothing)."""
+        given = (cid, "VFrameFormat") in self.msg_attr
+        v = self.msg_attr.get((cid, "VFrameFormat"), self.defaults.get("VFrameFormat"))
+        if v is None:
+            return None, False
+        return (self.enum_text("VFrameFormat", v) if "VFrameFormat" in self.enums else v), given
+
+
+def _unquote(v):
+    return v[1:-1] if v.startswith('"') else v
+
+
+def _attributes(sts, idx):
+    """ENUM lists, defaults and message attribute values into idx; an ENUM
+    value written as text is marked for its index, or bad when not listed."""
+    for st in sts:
+        t = st.text.strip()
+        m = ENUM_DEF.match(t)
+        if m and st.bad is None:
+            idx.enums[m.group(2)] = [_unquote(v.strip()) for v in re.findall(r'"(?:[^"\\]|\\.)*"|[^,]+',
+                                                                             m.group(3))]
+            continue
+        m = ENUM_DEFAULT.match(t)
+        if m:
+            idx.defaults[m.group(1)] = _unquote(m.group(2))
+    for st in sts:
+        m = BA_VALUE.match(st.text.strip()) if st.kind == "BA_" and st.bad is None else None
+        if m is None:
+            continue
+        name, obj, value = m.group(2), m.group(3) or "", m.group(4)
+        if name in idx.enums and value.startswith('"'):
+            text = _unquote(value)
+            if text not in idx.enums[name]:
+                st.bad = "value %s of ENUM attribute %s is none of its values" % (value, name)
+                continue
+            st.enum_index = idx.enums[name].index(text)
+        if obj.startswith("BO_"):
+            idx.msg_attr[(int(obj.split()[1]), name)] = _unquote(value)
 
 
 def scan(path):
@@ -210,6 +280,7 @@ def scan(path):
         m = LONG_SIG.match(st.text.strip())
         if m:
             idx.long_sig[(int(m.group(1)), m.group(3))] = m.group(2)
+    _attributes(sts, idx)
     return blines, sts, idx
 
 
@@ -250,6 +321,11 @@ def load(path, wanted):
             for k in range(st.first, st.last + 1):
                 keep[k] = False
     kept_lines = [k for k in range(len(blines)) if keep[k]]
+    for st in sts:   # ENUM values written as text: the index, as canmatrix reads them
+        if st.enum_index is not None and keep[st.first] and st.first == st.last:
+            line = blines[st.first].decode("latin-1")
+            m = BA_VALUE.match(line.strip())
+            blines[st.first] = (m.group(1) + str(st.enum_index) + ";").encode("latin-1")
     fd, tmp = tempfile.mkstemp(prefix="vcalib-", suffix=".dbc")
     try:
         with os.fdopen(fd, "wb") as f:

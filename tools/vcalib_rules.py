@@ -29,6 +29,25 @@ preference:
   OK. A VAL_ table on the bit that names one of 0/1 as invalid, fault or
   error (or the other as valid) decides instead. Two equally good
   candidates: none is chosen (say which with --qualifier).
+
+Frame format (frame_kind): a message is an FD frame when its VFrameFormat
+says StandardCAN_FD or ExtendedCAN_FD (canmatrix's is_fd), or, without a
+VFrameFormat of its own, when its DLC exceeds 8 bytes (only an FD frame
+carries more; a classic BA_DEF_DEF_ default then does not apply). Its own
+classic VFrameFormat with a DLC above 8 is a refusal. An FD frame's
+length is one of the DLC code lengths 0..8, 12, 16, 20, 24, 32, 48, 64: a DBC
+length between them is the next one (the sender pads to it).
+
+Counter: a signal of 2..8 bits named counter, alive, cnt, rolling or rc.
+
+E2E Profile 5 layout (p05_layout): a 16-bit unsigned Intel signal on a byte
+boundary named as a CRC or checksum (crc, checksum, chksum, chks) with an
+8-bit unsigned counter signal in the byte after it (P05 stores the CRC
+little-endian at its offset and the counter in the next byte); neither
+multiplexed. The CRC of the monitor's P05 covers the whole frame, so a
+message with several such blocks (each CRC over its own block) is not P05;
+its counter check takes the counter of the block that holds the signal
+(block_counter: a block runs from its CRC to the next block's CRC).
 """
 import decimal
 import re
@@ -47,6 +66,12 @@ QUAL_BAD_WHEN_1 = ("qualifier", "failure", "invalid", "fault", "error", "qual", 
 QUAL_BAD_WHEN_0 = ("valid", "vld", "ok", "v")
 LONG_WORDS = ("qualifier", "failure", "invalid", "fault", "error", "valid")   # also glued: Druckvalid
 STAT_WORDS = ("stat", "status", "sts")
+COUNTER_NAME = re.compile(r"counter|alive|cnt|rolling|\brc\b", re.I)
+CRC_NAME = re.compile(r"crc|checksum|chksum|chks", re.I)
+CLASSIC_MAX_DLEN = 8
+FD_LENGTHS = (12, 16, 20, 24, 32, 48, 64)   # the FD lengths above 8 (DLC codes 9..15)
+FD_FORMATS = ("StandardCAN_FD", "ExtendedCAN_FD")
+CLASSIC_FORMATS = ("StandardCAN", "ExtendedCAN", "J1939PG")
 
 
 class RuleRefusal(Exception):
@@ -341,3 +366,87 @@ def choose_qualifier(frame, sig, bit_of, dlc):
                                                                sig.name, frame.name))
     rank, q, bad, why = top[0]
     return q, bad, "qualifier %s (bit %d, invalid when %d): %s" % (q.name, bit_of(q), bad, why)
+
+
+# ---------------------------------------------------------------- frame format
+
+def frame_kind(name, size, vformat, given, is_fd):
+    """(fd, data length, why) of a message of DLC size whose VFrameFormat
+    reads vformat (None: not given; given: by the message's own BA_, not the
+    default); RuleRefusal when they contradict."""
+    size = int(size)
+    if size > FD_LENGTHS[-1]:
+        raise RuleRefusal("message %s: DLC %d, more than the %d bytes of an FD frame" % (name, size, FD_LENGTHS[-1]))
+    if vformat in FD_FORMATS or is_fd:
+        fd, why = True, "VFrameFormat %s" % (vformat or "FD")
+    elif vformat in CLASSIC_FORMATS and (given or size <= CLASSIC_MAX_DLEN):
+        if size > CLASSIC_MAX_DLEN:
+            raise RuleRefusal("message %s: VFrameFormat %s (a classic frame, at most %d bytes) but DLC %d"
+                              % (name, vformat, CLASSIC_MAX_DLEN, size))
+        fd, why = False, "VFrameFormat %s" % vformat
+    elif size > CLASSIC_MAX_DLEN:
+        fd, why = True, "DLC %d: more than a classic frame carries (%s)" % (
+            size, "the VFrameFormat default %s is not the message's own" % vformat if vformat
+            else "no VFrameFormat says so")
+    else:
+        fd, why = False, "classic (no VFrameFormat%s)" % (" %s" % vformat if vformat else "")
+    length = size
+    if fd and size > CLASSIC_MAX_DLEN and size not in FD_LENGTHS:
+        length = next(n for n in FD_LENGTHS if n > size)
+        why += "; DLC %d is no FD length, the frame is padded to %d" % (size, length)
+    return fd, length, why
+
+
+# ---------------------------------------------------------------- E2E Profile 5
+
+def _plain(s):
+    return s.mux_val is None and not getattr(s, "muxer_for_signal", None) and not s.is_multiplexer \
+        and not s.is_signed and not s.is_float
+
+
+def _in_byte(s, k, bit_of):
+    """s is 8 bits exactly filling byte k."""
+    if int(s.size) != 8:
+        return False
+    return bit_of(s) == 8 * k if s.is_little_endian else bit_of(s) == 8 * k + 7
+
+
+def p05_blocks(frame, bit_of):
+    """[(offset byte, CRC signal, counter signal)] of the message, by offset."""
+    out = []
+    for c in frame.signals:
+        if not (CRC_NAME.search(c.name) and int(c.size) == 16 and c.is_little_endian and _plain(c)
+                and bit_of(c) % 8 == 0):
+            continue
+        off = bit_of(c) // 8
+        ctrs = [s for s in frame.signals if s is not c and COUNTER_NAME.search(s.name) and _plain(s)
+                and _in_byte(s, off + 2, bit_of)]
+        if len(ctrs) == 1:
+            out.append((off, c, ctrs[0]))
+    return sorted(out, key=lambda b: b[0])
+
+
+def p05_layout(frame, sig, bit_of, length):
+    """(offset byte, CRC signal, counter signal) of the message's one P05
+    block, or RuleRefusal saying why it has none."""
+    blocks = [b for b in p05_blocks(frame, bit_of) if b[0] + 3 <= length]
+    if not blocks:
+        raise RuleRefusal("message %s has no P05 layout (a 16-bit Intel CRC or checksum signal on a byte "
+                          "boundary with an 8-bit counter in the byte after it)" % frame.name)
+    if len(blocks) > 1:
+        raise RuleRefusal("message %s has %d CRC-16 blocks (bytes %s), each CRC over its own block; the "
+                          "monitor's P05 takes one CRC over the whole frame"
+                          % (frame.name, len(blocks), ", ".join(str(b[0]) for b in blocks)))
+    if sig in blocks[0][1:]:
+        raise RuleRefusal("%s is the message's P05 CRC or counter" % sig.name)
+    return blocks[0]
+
+
+def block_counter(frame, sig, bit_of):
+    """The counter of the P05-like block holding sig, when the message has
+    several blocks; else None."""
+    blocks = p05_blocks(frame, bit_of)
+    if len(blocks) < 2:
+        return None
+    mine = [b for b in blocks if b[0] <= bit_of(sig) // 8]   # the start bit's byte lies in the block
+    return mine[-1][2] if mine else None

@@ -9,7 +9,8 @@ written.
             [--force-unit U [--unit-scale S]] [--piston-area-mm2 A] [--efficiency E]
             [--axle-factor K] [--torque-share K]
         [--corner FR ...] [--wheel-radius-m R] [--pad-radius-m R] [--period-ms MS]
-        [--protection none|p01|p02|counter] [--counter MSG.SIG]
+        [--protection none|p01|p02|p05|counter|auto] [--counter MSG.SIG]
+        [--data-id MSG=ID] [--data-id-xor MASK]
         [--qualifier MSG.SIG=MSG.QSIG:invalid-when=0|1] [--na-raw MSG.SIG=RAW[,RAW]]
         [--ignore-dbc-range] [--keep-all-ones] [--base FILE.cal] [-o FILE.cal] [--dbc-out FILE.dbc]
 
@@ -18,7 +19,14 @@ What is taken from where:
     (canmatrix; start bits in the DBC's own numbering); factor and offset as
     the DBC writes them (exact), times the --unit-scale when one is given;
   - signal = MSG.SIG: the DBC names (long names where the DBC has them);
-  - min_dlc: the message's DLC in the DBC (a shorter frame is a bad DLC);
+  - min_dlc: the message's DLC in the DBC (a shorter frame is a bad DLC),
+    up to 64 bytes for an FD frame;
+  - fd = yes: the message is a CAN FD frame: its VFrameFormat attribute is
+    StandardCAN_FD or ExtendedCAN_FD (as the text or as the index into the
+    BA_DEF_'s ENUM list), or, without a VFrameFormat, its DLC exceeds 8; an
+    FD length between the DLC code lengths is the next one (12, 16, 20, 24,
+    32, 48, 64); a classic VFrameFormat with a DLC above 8 is refused. A
+    classic frame with an FD message's identifier is not that message;
   - multiplexing: the selectors the DBC defines, simple (m3), extended
     (SG_MUL_VAL_ with value ranges), cascaded (the outer selector's page is
     mux_*, the inner one's mux2_*) and independent multiplexors (the one
@@ -51,9 +59,21 @@ What is taken from where:
   - protection: --protection for every input: p01 takes the message's
     E2E_DataID attribute, p02 its E2E_DataIDList attribute (16 bytes), counter
     the signal named by --counter (repeatable, one per message) or else the
-    one sibling whose name says counter/alive/cnt/rolling.
+    one sibling whose name says counter/alive/cnt/rolling (in a message of
+    several CRC-16 blocks: the one of the signal's block);
+    p05 (AUTOSAR E2E Profile 5, CRC-16/CCITT-FALSE) the message's CRC-16
+    signal (16 bits, Intel, on a byte boundary, named CRC/checksum) with an
+    8-bit counter in the byte after it, written as e2e_offset_byte, and the
+    Data ID: --data-id MSG=ID, else the E2E_DataID attribute, else the CAN
+    identifier XOR --data-id-xor MASK (a maker's rule: Hyundai/Kia FD frames
+    use 0xF800); a message with several CRC-16 blocks is not P05 (the
+    monitor's CRC covers the whole frame);
+    auto, per message: p05 where it has that layout and a Data ID, else its
+    counter, else none, each with a note saying why.
 With --log, each input's line says how many logged values lie outside the
-declared range and how many are all ones.
+declared range and how many are all ones. The log may hold CAN FD lines
+(`ID##F<data>`, F the flags digit); an FD message's period and counts come
+from its FD frames only, a classic message's from its classic frames.
 DBC files as found in the field: a line no reader accepts that the request
 does not need is skipped with a warning naming its line (tools/dbc_tolerant.py).
 A recorded drive drops frames (gaps of 2-3 periods), so the inputs accept
@@ -107,7 +127,7 @@ LEGACY_KEYS = ("disc_speed_id", "pad_force_id", "e2e_check_inputs", "input_perio
 OUTPUT_KEYS = (("status_id", 0x300), ("detail_id", 0x301), ("diag_id", 0x302), ("detail2_id", 0x303))
 OUTPUT_MSGS = (("SquealStatus", 0x300), ("SquealDetail", 0x301), ("SquealDiag", 0x302),
                ("SquealDetail2", 0x303))
-COUNTER_NAME = re.compile(r"counter|alive|cnt|rolling|\brc\b", re.I)
+P05_COUNTER_MODULUS = 256
 
 
 class Refusal(Exception):
@@ -147,6 +167,14 @@ class Dbc:
         if f is not None:
             return f, f.arbitration_id.to_compound_integer()
         return None, None
+
+    def kind(self, frame):
+        """(fd, data length, why) of a message (vcalib_rules.frame_kind)."""
+        try:
+            vformat, given = self.idx.frame_format(frame.arbitration_id.to_compound_integer())
+            return rules.frame_kind(frame.name, frame.size, vformat, given, bool(getattr(frame, "is_fd", False)))
+        except rules.RuleRefusal as e:
+            raise Refusal(str(e))
 
     def find(self, ref, what):
         """(frame, signal) of MSG.SIG, or Refusal naming what is unknown."""
@@ -190,9 +218,12 @@ def find_counter(dbc, frame, sig, counters):
         f, s = dbc.find(ref, "--counter")
         if f is frame:
             return s
+    mine = rules.block_counter(frame, sig, dbc_start_bit)
+    if mine is not None:
+        return mine
     cands = []
     for s in frame.signals:
-        if s is sig or s.is_multiplexer or not COUNTER_NAME.search(s.name) or not 2 <= s.size <= 8:
+        if s is sig or s.is_multiplexer or not rules.COUNTER_NAME.search(s.name) or not 2 <= s.size <= 8:
             continue
         try:
             if rules.same_page(frame, sig, s):
@@ -210,14 +241,16 @@ def find_counter(dbc, frame, sig, counters):
 # ---------------------------------------------------------------- logs and periods
 
 def read_log(path):
-    """[(t, iface, id, extended, data)] of a candump log (-L or the default format)."""
-    rx_l = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+(\S+)\s+([0-9A-Fa-f]{1,8})#(R?)([0-9A-Fa-f]*)")
+    """([(t, iface, id, extended, data, fd)], FD lines skipped) of a candump
+    log (-L or the default format); an FD line (ID##F<data>) of a length that
+    is no DLC code length is skipped and counted."""
+    rx_l = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+(\S+)\s+([0-9A-Fa-f]{1,8})#(#[0-9A-Fa-f]|R?)([0-9A-Fa-f]*)")
     rx_d = re.compile(r"^\((\d+(?:\.\d+)?)\)\s+(\S+)\s+([0-9A-Fa-f]{3,8})\s+\[(\d)\]\s*((?:[0-9A-Fa-f]{2}\s*)*)")
     try:
         f = open(path, "r", errors="replace")
     except OSError as e:
         raise Refusal("cannot read log %s: %s" % (path, e.strerror or e))
-    frames = []
+    frames, skipped = [], 0
     with f:
         try:
             text = f.read()
@@ -226,21 +259,31 @@ def read_log(path):
     for line in re.split(r"\r\n|\r|\n", text):
         m = rx_l.match(line)
         if m:
-            if m.group(4):
+            if m.group(4) == "R":
                 continue
-            ids, hexd = m.group(3), m.group(5)
-            if len(hexd) % 2:
+            ids, hexd, fd = m.group(3), m.group(5), m.group(4).startswith("#")
+            if len(hexd) % 2 or (fd and len(hexd) // 2 > rules.CLASSIC_MAX_DLEN
+                                 and len(hexd) // 2 not in rules.FD_LENGTHS):
+                skipped += fd
                 continue
-            frames.append((float(m.group(1)), m.group(2), int(ids, 16), len(ids) == 8, bytes.fromhex(hexd)))
+            frames.append((float(m.group(1)), m.group(2), int(ids, 16), len(ids) == 8, bytes.fromhex(hexd), fd))
             continue
         m = rx_d.match(line)
         if m:
             ids = m.group(3)
             frames.append((float(m.group(1)), m.group(2), int(ids, 16), len(ids) == 8,
-                           bytes.fromhex(m.group(5).replace(" ", ""))))
+                           bytes.fromhex(m.group(5).replace(" ", "")), False))
     if not frames:
         raise Refusal("log %s holds no candump frame" % path)
-    return frames
+    return frames, skipped
+
+
+def message_frames(frame, fd, log_frames):
+    """[(t, data)] of the log's frames of a message: its identifier and kind
+    (a classic frame with an FD message's identifier is another message)."""
+    ext = bool(frame.arbitration_id.extended)
+    fid = frame.arbitration_id.id
+    return [(t, d) for t, _, i, e, d, f in log_frames if i == fid and e == ext and f == fd]
 
 
 def measure_period(times):
@@ -292,15 +335,13 @@ def carries(conds, data):
     return True
 
 
-def input_period(frame, sig, conds, log_frames, period_ms, what):
+def input_period(frame, fd, sig, conds, log_frames, period_ms, what):
     pages = rules.pages_factor(frame, conds)
     if frame.cycle_time and frame.cycle_time > 0:
         return int(math.ceil(int(frame.cycle_time) * pages - 1e-9)), "GenMsgCycleTime" + (
             " x %g pages" % pages if conds else "")
     if log_frames is not None:
-        ext = bool(frame.arbitration_id.extended)
-        fid = frame.arbitration_id.id
-        mine = [(t, d) for t, _, i, e, d in log_frames if i == fid and e == ext]
+        mine = message_frames(frame, fd, log_frames)
         if conds:
             p = measure_period([t for t, _ in mine])
             n_in = sum(1 for _, d in mine if carries(conds, d))
@@ -315,7 +356,8 @@ def input_period(frame, sig, conds, log_frames, period_ms, what):
         return period_ms, "--period-ms"
     raise Refusal("%s %s.%s: no period: the DBC has no GenMsgCycleTime for %s%s; give --log DRIVE.log "
                   "to measure it or --period-ms MS" % (what, frame.name, sig.name, frame.name,
-                                                         ", the log has too few of its frames"
+                                                         ", the log has too few of its %s frames"
+                                                         % ("FD" if fd else "classic")
                                                          if log_frames is not None else ""))
 
 
@@ -405,10 +447,17 @@ def build_input(dbc, ref, role, c, args, log_frames, manual, notes):
     except rules.RuleRefusal as e:
         raise Refusal("%s %s: %s" % (what, ref, e))
     cid_text = "%s.%s" % (frame.name, sig.name)
+    fd, length, kind_why = dbc.kind(frame)
+    last_bit = max(signal_bits(dbc_start_bit(sig), int(sig.size), sig.is_little_endian))
+    if last_bit // 8 >= length:
+        raise Refusal("%s %s: bit %d lies beyond the %d bytes of %s" % (what, ref, last_bit, length, frame.name))
     d = {"id": frame.arbitration_id.id, "extended": bool(frame.arbitration_id.extended),
-         "min_dlc": int(frame.size), "start_bit": dbc_start_bit(sig), "length": int(sig.size),
+         "min_dlc": length, "start_bit": dbc_start_bit(sig), "length": int(sig.size),
          "byte_order": order(sig), "signed": bool(sig.is_signed), "factor": factor, "offset": offset,
          "unit": unit}
+    if fd:
+        d["fd"] = True
+        notes.append("%s: an FD frame of %d bytes (%s)" % (cid_text, length, kind_why))
     if re.match(r"^[!-~]{1,%d}$" % SIGNAL_MAX, cid_text):   # the key takes 1..63 printable non-blanks
         d["signal"] = cid_text
     for k, (sel, (lo, hi)) in enumerate(conds):
@@ -481,19 +530,19 @@ def build_input(dbc, ref, role, c, args, log_frames, manual, notes):
             if not page_ok:
                 raise Refusal("--qualifier %s=%s: %s is not in every frame that carries %s (another page)"
                               % (ref, mq[0], qsig.name, sig.name))
-            if bit_of(qsig) // 8 >= int(frame.size):
+            if bit_of(qsig) // 8 >= length:
                 raise Refusal("--qualifier %s=%s: bit %d lies beyond the DLC %d of %s"
-                              % (ref, mq[0], bit_of(qsig), frame.size, frame.name))
+                              % (ref, mq[0], bit_of(qsig), length, frame.name))
             qnote = "qualifier %s (bit %d, invalid when %d): --qualifier" % (qsig.name, bit_of(qsig), bad)
     else:
-        qsig, bad, qnote = rules.choose_qualifier(frame, sig, bit_of, int(frame.size))
+        qsig, bad, qnote = rules.choose_qualifier(frame, sig, bit_of, length)
     if qsig is not None:
         d["qualifier_bit"], d["qualifier_invalid"] = bit_of(qsig), bad
     notes.append("%s: %s" % (cid_text, qnote))
-    d["period_ms"], d["period_source"] = input_period(frame, sig, conds, log_frames, args.period_ms, what)
+    d["period_ms"], d["period_source"] = input_period(frame, fd, sig, conds, log_frames, args.period_ms, what)
     if not 1 <= d["period_ms"] <= 1000:
         raise Refusal("%s %s: period %d ms outside 1..1000" % (what, ref, d["period_ms"]))
-    protection(d, dbc, frame, sig, conds, args)
+    protection(d, dbc, frame, sig, conds, args, length, notes)
     d["stale_cycles"] = STALE_CYCLES
     if q == "speed":
         si, kind = SPEED_SI[unit.lower()]
@@ -503,19 +552,18 @@ def build_input(dbc, ref, role, c, args, log_frames, manual, notes):
         step = float(d["max"]) / 4.0
     d["step_max"] = D("%.6g" % max(step, float(abs(factor))))
     if log_frames is not None:
-        notes.append("%s: %s" % (cid_text, log_counts(frame, sig, conds, log_frames, phys, declared, unit)))
+        notes.append("%s: %s" % (cid_text, log_counts(frame, fd, length, sig, conds, log_frames, phys, declared,
+                                                       unit)))
     d["_ref"], d["_quantity"], d["_scale"] = ref, q, scale
     return d
 
 
-def log_counts(frame, sig, conds, log_frames, phys, declared, unit):
+def log_counts(frame, fd, length, sig, conds, log_frames, phys, declared, unit):
     """How many logged values lie outside the declared range, how many are all ones."""
-    ext = bool(frame.arbitration_id.extended)
-    fid = frame.arbitration_id.id
     n = out = ones = 0
     ones_raw = rules.all_ones(sig)
-    for _, _, i, e, data in log_frames:
-        if i != fid or e != ext or len(data) < frame.size or not carries(conds, data):
+    for _, data in message_frames(frame, fd, log_frames):
+        if len(data) < length or not carries(conds, data):
             continue
         raw = extract(data, dbc_start_bit(sig), int(sig.size), sig.is_little_endian, sig.is_signed)
         if raw is None:
@@ -530,16 +578,74 @@ def log_counts(frame, sig, conds, log_frames, phys, declared, unit):
     return "%d logged values, %d %s, %d all ones (raw %d)" % (n, out, rng, ones, ones_raw)
 
 
-def protection(d, dbc, frame, sig, conds, args):
+def data_id_of(frame, args):
+    """(Data ID, where from) of a message for p01/p05, or (None, why not)."""
+    if frame.name in args.data_ids:
+        return args.data_ids[frame.name], "--data-id"
+    if "E2E_DataID" in frame.attributes:
+        try:
+            v = int(str(frame.attributes["E2E_DataID"]).strip('"'), 0)
+        except ValueError:
+            v = -1
+        if not 0 <= v <= 0xFFFF:
+            raise Refusal("message %s: E2E_DataID %s is not a number in 0..65535"
+                          % (frame.name, frame.attributes["E2E_DataID"]))
+        return v, "its E2E_DataID attribute"
+    if args.data_id_xor is not None:
+        v = frame.arbitration_id.id ^ args.data_id_xor
+        if v > 0xFFFF:
+            return None, "identifier 0x%X XOR --data-id-xor 0x%X is beyond 16 bits" % (
+                frame.arbitration_id.id, args.data_id_xor)
+        return v, "identifier 0x%X XOR 0x%X (--data-id-xor)" % (frame.arbitration_id.id, args.data_id_xor)
+    return None, ("message %s has no E2E_DataID attribute; give --data-id %s=ID (or --data-id-xor MASK where "
+                  "the maker derives it from the identifier)" % (frame.name, frame.name))
+
+
+def p05_keys(frame, sig, length, args):
+    """The P05 keys of the input, or Refusal saying why the message is not P05."""
+    try:
+        off, crc, ctr = rules.p05_layout(frame, sig, dbc_start_bit, length)
+    except rules.RuleRefusal as e:
+        raise Refusal(str(e))
+    did, src = data_id_of(frame, args)
+    if did is None:
+        raise Refusal("%s has the P05 layout (CRC %s in bytes %d-%d, counter %s in byte %d) but no Data ID: %s"
+                      % (frame.name, crc.name, off, off + 1, ctr.name, off + 2, src))
+    return {"data_id": did, "e2e_offset_byte": off}, "p05: CRC %s in bytes %d-%d, counter %s in byte %d, Data ID " \
+        "0x%04X from %s" % (crc.name, off, off + 1, ctr.name, off + 2, did, src)
+
+
+def counter_keys(dbc, frame, sig, args):
+    c = find_counter(dbc, frame, sig, args.counter)
+    return {"counter_start_bit": dbc_start_bit(c), "counter_length": int(c.size),
+            "counter_byte_order": order(c), "counter_modulus": 1 << int(c.size)}, c
+
+
+def protection(d, dbc, frame, sig, conds, args, length, notes):
     prot = args.protection
+    where = "%s.%s" % (frame.name, sig.name)
+    if prot == "auto":
+        try:
+            keys, why = p05_keys(frame, sig, length, args)
+            prot = "p05"
+            d.update(keys)
+            notes.append("%s: protection %s" % (where, why))
+        except Refusal as e:
+            no_p05 = str(e)
+            try:
+                keys, c = counter_keys(dbc, frame, sig, args)
+                prot = "counter"
+                d.update(keys)
+                notes.append("%s: protection counter %s only (not p05: %s)" % (where, c.name, no_p05))
+            except Refusal as e2:
+                prot = "none"
+                notes.append("%s: no protection (not p05: %s; no counter: %s)" % (where, no_p05, e2))
     d["protection"] = prot
     if prot == "p01":
-        try:
-            d["data_id"] = int(str(frame.attributes["E2E_DataID"]).strip('"'), 0)
-        except (KeyError, ValueError):
-            raise Refusal("--protection p01: message %s has no E2E_DataID attribute (0..65535)" % frame.name)
-        if not 0 <= d["data_id"] <= 0xFFFF:
-            raise Refusal("--protection p01: message %s: E2E_DataID %d outside 0..65535" % (frame.name, d["data_id"]))
+        did, src = data_id_of(frame, args)
+        if did is None:
+            raise Refusal("--protection p01: %s" % src)
+        d["data_id"] = did
     elif prot == "p02":
         lst = frame.attributes.get("E2E_DataIDList")
         try:
@@ -550,13 +656,18 @@ def protection(d, dbc, frame, sig, conds, args):
             raise Refusal("--protection p02: message %s has no E2E_DataIDList attribute of 16 bytes"
                           % frame.name)
         d["data_id_list"] = " ".join("0x%02X" % v for v in vals)
-    elif prot == "counter":
-        c = find_counter(dbc, frame, sig, args.counter)
-        d.update(counter_start_bit=dbc_start_bit(c), counter_length=int(c.size),
-                 counter_byte_order=order(c), counter_modulus=1 << int(c.size))
+    elif prot == "p05" and args.protection == "p05":
+        try:
+            keys, why = p05_keys(frame, sig, length, args)
+        except Refusal as e:
+            raise Refusal("--protection p05: %s" % e)
+        d.update(keys)
+        notes.append("%s: protection %s" % (where, why))
+    elif prot == "counter" and args.protection == "counter":
+        d.update(counter_keys(dbc, frame, sig, args)[0])
     if prot != "none":
         # the sender counts frames; a multiplexed input sees every pages-th of them
-        modulus = d.get("counter_modulus", 15 if prot == "p01" else 16)
+        modulus = d.get("counter_modulus", {"p01": 15, "p05": P05_COUNTER_MODULUS}.get(prot, 16))
         pages = int(math.ceil(rules.pages_factor(frame, conds) - 1e-9))
         d["max_delta_counter"] = min(MAX_DELTA_COUNTER * pages, modulus - 1)
 
@@ -643,8 +754,16 @@ def parse_args(argv):
     p.add_argument("--wheel-radius-m", type=float, metavar="R", help="wheel radius [m] (default: --base's or 0.3)")
     p.add_argument("--pad-radius-m", type=float, metavar="R", help="effective pad radius [m] (default: --base's)")
     p.add_argument("--period-ms", type=int, metavar="MS", help="period where neither the DBC nor the log has one")
-    p.add_argument("--protection", choices=("none", "p01", "p02", "counter"), default="none",
-                   help="the inputs' protection (default none)")
+    p.add_argument("--protection", choices=("none", "p01", "p02", "p05", "counter", "auto"), default="none",
+                   help="the inputs' protection (default none): p05 is AUTOSAR E2E Profile 5 (CRC-16 and "
+                   "8-bit counter found in the message); auto: p05 where the message has its layout and a "
+                   "Data ID, else its counter, else none")
+    p.add_argument("--data-id", action="append", default=[], metavar="MSG=ID",
+                   help="the Data ID (0..65535) of a message for p01/p05 where the DBC has no E2E_DataID "
+                   "attribute (repeatable, one per message)")
+    p.add_argument("--data-id-xor", metavar="MASK",
+                   help="p01/p05: a message without E2E_DataID or --data-id has the Data ID identifier XOR "
+                   "MASK (a maker's rule, e.g. 0xF800 for Hyundai/Kia CAN FD frames)")
     p.add_argument("--counter", action="append", default=[], metavar="MSG.SIG",
                    help="the alive counter of a message for --protection counter (one per message)")
     p.add_argument("--qualifier", action="append", default=[], metavar="MSG.SIG=MSG.QSIG:invalid-when=0|1",
@@ -676,6 +795,21 @@ def parse_args(argv):
         raise Refusal("--period-ms %d: outside 1 .. 1000" % args.period_ms)
     if args.bus is not None and not IFACE.match(args.bus):
         raise Refusal("--bus %r: 1..15 characters of A-Z a-z 0-9 _ . -" % args.bus)
+    args.data_ids = {}
+    for spec in args.data_id:
+        m = re.match(r"^([A-Za-z_][A-Za-z0-9_]*)=(0[xX][0-9A-Fa-f]+|\d+)$", spec)
+        if not m or not 0 <= int(m.group(2), 0) <= 0xFFFF:
+            raise Refusal("--data-id %s: give MSG=ID with ID in 0..65535 (0x0000..0xFFFF)" % spec)
+        if m.group(1) in args.data_ids:
+            raise Refusal("--data-id %s given twice" % m.group(1))
+        args.data_ids[m.group(1)] = int(m.group(2), 0)
+    if args.data_id_xor is not None:
+        try:
+            args.data_id_xor = int(args.data_id_xor, 0)
+        except ValueError:
+            args.data_id_xor = -1
+        if not 0 <= args.data_id_xor <= 0xFFFF:
+            raise Refusal("--data-id-xor: give a mask in 0..0xFFFF")
     return args, corners
 
 
@@ -709,7 +843,7 @@ def wanted_messages(corners, args):
     refs = [c[k] for c in corners for k in ("speed", "force")] + list(args.counter)
     refs += [s.split("=", 1)[0] for s in args.qualifier + args.na_raw]
     refs += [s.split("=", 1)[1].split(":", 1)[0] for s in args.qualifier if "=" in s]
-    return {r.split(".", 1)[0] for r in refs if "." in r}
+    return {r.split(".", 1)[0] for r in refs if "." in r} | set(args.data_ids)
 
 
 def select_bus(log_frames, inputs_msgs, args):
@@ -721,7 +855,7 @@ def select_bus(log_frames, inputs_msgs, args):
                           % (args.bus, args.bus, ", ".join(ifaces)))
         return [f for f in log_frames if f[1] == args.bus]
     seen = {}
-    for _, iface, i, e, _ in log_frames:
+    for _, iface, i, e, _, _ in log_frames:
         seen.setdefault((i, e), set()).add(iface)
     for name, key in inputs_msgs:
         on = sorted(seen.get(key, ()))
@@ -743,9 +877,19 @@ def build(argv):
     manual = manual_options(args)
     dbc = Dbc(args.dbc, wanted_messages(corners, args))
     notes = list(dbc.notes)
+    ids = {}
+    for name, v in args.data_ids.items():
+        f, _ = dbc.frame(name)
+        if f is None:
+            raise Refusal("--data-id %s=%d: unknown message %r in the DBC" % (name, v, name))
+        ids[f.name] = v
+    args.data_ids = ids
     log_frames = None
     if args.log:
-        log_frames = read_log(args.log)
+        log_frames, skipped = read_log(args.log)
+        if skipped:
+            notes.append("log %s: %d FD lines skipped (a data length that is no DLC code length)"
+                         % (args.log, skipped))
         msgs = []
         for c in corners:
             for role in ("speed", "force"):
@@ -806,10 +950,10 @@ def build(argv):
     return args, corners, inputs, base, notes
 
 
-INPUT_KEYS = ("signal", "id", "extended", "min_dlc", "start_bit", "length", "byte_order", "signed", "factor",
+INPUT_KEYS = ("signal", "id", "extended", "fd", "min_dlc", "start_bit", "length", "byte_order", "signed", "factor",
               "offset", "unit", "mux_start_bit", "mux_length", "mux_byte_order", "mux_value", "mux_value_max",
               "mux2_start_bit", "mux2_length", "mux2_byte_order", "mux2_value", "mux2_value_max",
-              "na_raw", "na_raw2", "qualifier_bit", "qualifier_invalid", "protection", "data_id",
+              "na_raw", "na_raw2", "qualifier_bit", "qualifier_invalid", "protection", "data_id", "e2e_offset_byte",
               "data_id_list", "counter_start_bit", "counter_length", "counter_byte_order",
               "counter_modulus", "max_delta_counter", "period_ms", "stale_cycles", "min", "max",
               "step_max")

@@ -5,6 +5,7 @@
 
 #include "hal.h"
 #include "calib_map.h"
+#include "e2e_p05.h"
 #include "sq_status.h"
 #include "squeal_msgs.h"
 
@@ -93,8 +94,9 @@ static const calib_field_t fields[] = {
 	F_I32(uncertain_k_q16, 0, 100LL << 16),  /* 0: rule off */
 	FI(offsetof(calib_t, inputs[0].id), 4U, 0U, 0, 0x1FFFFFFF),
 	FI(offsetof(calib_t, inputs[0].flags), 1U, 0U, 0, (int64_t)CALIB_IN_FLAGS_ALL),
-	FI(offsetof(calib_t, inputs[0].min_dlc), 1U, 0U, 0, 8),
-	FI(offsetof(calib_t, inputs[0].sig.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].min_dlc), 1U, 0U, 0, (int64_t)CAN_SIGNAL_MAX_BYTES),
+	FI(offsetof(calib_t, inputs[0].fd), 1U, 0U, 0, 1),
+	FI(offsetof(calib_t, inputs[0].sig.start_bit), 2U, 0U, 0, (int64_t)CAN_SIGNAL_MAX_BITS - 1),
 	FI(offsetof(calib_t, inputs[0].sig.length), 1U, 0U, 0, 32),
 	FI(offsetof(calib_t, inputs[0].sig.byte_order), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].sig.is_signed), 1U, 0U, 0, 1),
@@ -103,13 +105,13 @@ static const calib_field_t fields[] = {
 	FI(offsetof(calib_t, inputs[0].offset.mant), 8U, 1U, -INPUT_DEC_MANT_MAX, INPUT_DEC_MANT_MAX),
 	FI(offsetof(calib_t, inputs[0].offset.exp), 1U, 1U, INPUT_DEC_EXP_MIN, INPUT_DEC_EXP_MAX),
 	FI(offsetof(calib_t, inputs[0].unit), 1U, 0U, 0, 255),
-	FI(offsetof(calib_t, inputs[0].mux.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].mux.start_bit), 2U, 0U, 0, (int64_t)CAN_SIGNAL_MAX_BITS - 1),
 	FI(offsetof(calib_t, inputs[0].mux.length), 1U, 0U, 0, 32),
 	FI(offsetof(calib_t, inputs[0].mux.byte_order), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].mux.is_signed), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].mux_value), 4U, 0U, 0, (int64_t)UINT32_MAX),
 	FI(offsetof(calib_t, inputs[0].mux_value_max), 4U, 0U, 0, (int64_t)UINT32_MAX),
-	FI(offsetof(calib_t, inputs[0].mux2.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].mux2.start_bit), 2U, 0U, 0, (int64_t)CAN_SIGNAL_MAX_BITS - 1),
 	FI(offsetof(calib_t, inputs[0].mux2.length), 1U, 0U, 0, 32),
 	FI(offsetof(calib_t, inputs[0].mux2.byte_order), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].mux2.is_signed), 1U, 0U, 0, 1),
@@ -117,7 +119,7 @@ static const calib_field_t fields[] = {
 	FI(offsetof(calib_t, inputs[0].mux2_value_max), 4U, 0U, 0, (int64_t)UINT32_MAX),
 	FI(offsetof(calib_t, inputs[0].na_raw), 4U, 0U, 0, (int64_t)UINT32_MAX),
 	FI(offsetof(calib_t, inputs[0].na_raw2), 4U, 0U, 0, (int64_t)UINT32_MAX),
-	FI(offsetof(calib_t, inputs[0].qualifier_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].qualifier_bit), 2U, 0U, 0, (int64_t)CAN_SIGNAL_MAX_BITS - 1),
 	FI(offsetof(calib_t, inputs[0].qualifier_invalid), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].protection), 1U, 0U, 0, (int64_t)CALIB_PROT_COUNT - 1),
 	FI(offsetof(calib_t, inputs[0].data_id), 2U, 0U, 0, 0xFFFF),
@@ -137,12 +139,14 @@ static const calib_field_t fields[] = {
 	FI(offsetof(calib_t, inputs[0].data_id_list[13]), 1U, 0U, 0, 255),
 	FI(offsetof(calib_t, inputs[0].data_id_list[14]), 1U, 0U, 0, 255),
 	FI(offsetof(calib_t, inputs[0].data_id_list[15]), 1U, 0U, 0, 255),
-	FI(offsetof(calib_t, inputs[0].counter.start_bit), 1U, 0U, 0, 63),
+	FI(offsetof(calib_t, inputs[0].counter.start_bit), 2U, 0U, 0, (int64_t)CAN_SIGNAL_MAX_BITS - 1),
 	FI(offsetof(calib_t, inputs[0].counter.length), 1U, 0U, 0, 32),
 	FI(offsetof(calib_t, inputs[0].counter.byte_order), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].counter.is_signed), 1U, 0U, 0, 1),
 	FI(offsetof(calib_t, inputs[0].counter_modulus), 1U, 0U, 0, 16),
-	FI(offsetof(calib_t, inputs[0].max_delta_counter), 1U, 0U, 0, 15),
+	FI(offsetof(calib_t, inputs[0].max_delta_counter), 1U, 0U, 0, 255),
+	FI(offsetof(calib_t, inputs[0].e2e_offset_byte), 1U, 0U, 0,
+	   (int64_t)CAN_SIGNAL_MAX_BYTES - (int64_t)E2E_P05_HEADER_LEN),
 	FI(offsetof(calib_t, inputs[0].period_ms), 2U, 0U, 0, 1000),
 	FI(offsetof(calib_t, inputs[0].stale_cycles), 1U, 0U, 0, 100),
 	FI(offsetof(calib_t, inputs[0].max.mant), 8U, 1U, -INPUT_DEC_MANT_MAX, INPUT_DEC_MANT_MAX),

@@ -32,8 +32,10 @@
 #include "squeal_sigma.h"
 
 #define CALIB_MAGIC 0x42435153UL /* "SQCB" little-endian */
-#define CALIB_VERSION 3U /* 2: buses, input map and corners; 3: 64-bit decimals,
-                          * selector ranges and a second selector, torque share */
+#define CALIB_VERSION 4U /* 2: buses, input map and corners; 3: 64-bit decimals,
+                          * selector ranges and a second selector, torque share;
+                          * 4: CAN FD inputs (fd, min_dlc to 64, start and
+                          * qualifier bits to 511), E2E P05 and its offset */
 
 /*
  * The input map (docs/calib-input-map.md). n_corners == 0 is the legacy
@@ -61,7 +63,9 @@
 #define CALIB_PROT_P01     1U /* AUTOSAR E2E P01 1A: CRC byte 0, counter byte 1 */
 #define CALIB_PROT_P02     2U /* AUTOSAR E2E P02: CRC-8H2F, DataIDList          */
 #define CALIB_PROT_COUNTER 3U /* alive counter signal only                      */
-#define CALIB_PROT_COUNT   4U
+#define CALIB_PROT_P05     4U /* AUTOSAR E2E P05: CRC-16 + 8-bit counter at
+                               * e2e_offset_byte, data_id                      */
+#define CALIB_PROT_COUNT   5U
 
 /* A decimal as DBC files write it: mant x 10^exp, up to 17 significant
  * digits (|mant| <= INPUT_DEC_MANT_MAX), exp INPUT_DEC_EXP_MIN..MAX
@@ -100,21 +104,26 @@ typedef struct {
 	uint32_t mux2_value_max;
 	uint32_t na_raw;           /* CALIB_IN_NA                             */
 	uint32_t na_raw2;          /* CALIB_IN_NA2                            */
-	uint16_t data_id;          /* P01                                     */
+	uint16_t data_id;          /* P01, P05                                */
 	uint16_t period_ms;        /* expected period                         */
-	uint8_t flags;             /* CALIB_IN_*                              */
-	uint8_t min_dlc;           /* shorter frames: bad DLC                 */
+	uint16_t qualifier_bit;    /* DBC bit number (CALIB_IN_QUALIFIER)     */
 	can_signal_t sig;          /* the value                               */
-	uint8_t unit;              /* input_unit_t                            */
 	can_signal_t mux;          /* selector (CALIB_IN_MUX): the outer one  */
 	can_signal_t mux2;         /* inner selector (CALIB_IN_MUX2)          */
-	uint8_t qualifier_bit;     /* DBC bit number (CALIB_IN_QUALIFIER)     */
+	can_signal_t counter;      /* CALIB_PROT_COUNTER                      */
+	uint8_t flags;             /* CALIB_IN_*                              */
+	uint8_t min_dlc;           /* shorter frames: bad DLC (data length in
+				    * bytes, 0..8, with fd up to 64)         */
+	uint8_t fd;                /* 1: a CAN FD message (a classic frame
+				    * with its id is of the wrong format)     */
+	uint8_t unit;              /* input_unit_t                            */
 	uint8_t qualifier_invalid; /* the bit's value that means invalid     */
 	uint8_t protection;        /* CALIB_PROT_*                            */
 	uint8_t data_id_list[CALIB_DATA_ID_LIST_LEN]; /* P02                  */
-	can_signal_t counter;      /* CALIB_PROT_COUNTER                      */
 	uint8_t counter_modulus;   /* 2..16                                   */
-	uint8_t max_delta_counter; /* largest accepted counter step           */
+	uint8_t max_delta_counter; /* largest accepted counter step (P05:
+				    * 1..255)                                 */
+	uint8_t e2e_offset_byte;   /* P05: CRC bytes off, off+1, counter off+2 */
 	uint8_t stale_cycles;      /* missed periods before stale             */
 	/* Not stored: the share of the value the conversion applies, 1e-6 (0:
 	 * the whole value). 0 in calib_t.inputs[]; calib_corner_view() sets it
@@ -209,11 +218,12 @@ typedef struct {
 /* Size of the stored block: header 8 + fields + CRC 4 (v1: 103 bytes, then
  * 3 bus bytes, 2 counts, the flat deviations and k, 8 inputs of
  * CALIB_INPUT_STORED_LEN (five decimals of 9 bytes, three selector range
- * ends and the second selector), 4 corners of CALIB_CORNER_STORED_LEN (with
- * torque share and deviations): 1440 bytes, within the two 1 KiB flash
- * pages of a slot). */
+ * ends and the second selector; v4: four start bits and the qualifier bit
+ * in 2 bytes, fd, e2e_offset_byte), 4 corners of CALIB_CORNER_STORED_LEN
+ * (with torque share and deviations): 1496 bytes, within the two 1 KiB
+ * flash pages of a slot). */
 #define CALIB_SD_STORED_LEN 28U
-#define CALIB_INPUT_STORED_LEN 118U
+#define CALIB_INPUT_STORED_LEN 125U
 #define CALIB_CORNER_STORED_LEN (61U + CALIB_SD_STORED_LEN)
 #define CALIB_BLOCK_LEN (103U + 3U + 2U + CALIB_SD_STORED_LEN + 4U + \
 			 (CALIB_MAX_INPUTS * CALIB_INPUT_STORED_LEN) + \

@@ -3,6 +3,8 @@
 
 #include <stddef.h>
 
+#include "e2e_p05.h"
+#include "hal.h"
 #include "input_conv.h"
 #include "sq_status.h"
 #include "squeal_msgs.h"
@@ -16,7 +18,7 @@ static int prepare_share(const calib_input_t *in, uint32_t share_ppm, const inpu
 #define STD_ID_MAX 0x7FFU
 #define CORNER_ID_STEP 0x10U
 
-static bool bit_in(const can_signal_t *s, uint8_t bit)
+static bool bit_in(const can_signal_t *s, uint16_t bit)
 {
 	const can_signal_t b = { bit, 1U, (uint8_t)CAN_SIGNAL_INTEL, 0U };
 
@@ -51,6 +53,10 @@ uint8_t calib_input_needed_dlc(const calib_input_t *in)
 	    (in->protection == (uint8_t)CALIB_PROT_P02)) {
 		need = (need < 2U) ? 2U : need;
 	}
+	if (in->protection == (uint8_t)CALIB_PROT_P05) {
+		d = (uint8_t)(in->e2e_offset_byte + E2E_P05_HEADER_LEN);
+		need = (d > need) ? d : need;
+	}
 	if (in->protection == (uint8_t)CALIB_PROT_COUNTER) {
 		d = can_signal_min_dlc(&in->counter);
 		need = (d > need) ? d : need;
@@ -58,10 +64,33 @@ uint8_t calib_input_needed_dlc(const calib_input_t *in)
 	return need;
 }
 
+uint8_t calib_input_frame_len(const calib_input_t *in)
+{
+	const uint8_t need = calib_input_needed_dlc(in);
+	uint8_t code;
+
+	if ((need == 0U) || (in->fd == 0U) || (need <= HAL_CAN_CLASSIC_MAX_DLEN)) {
+		return need;
+	}
+	for (code = 9U; code < 16U; code++) {
+		if (hal_can_dlc_to_len(code) >= need) {
+			return hal_can_dlc_to_len(code);
+		}
+	}
+	return 0U; /* unreachable: a valid signal ends within 64 bytes */
+}
+
 static int fail(const char **why, const char *msg)
 {
 	*why = msg;
 	return SQ_EINVAL;
+}
+
+/* The P05 header: CRC (2 bytes) and counter at e2e_offset_byte. */
+static can_signal_t p05_header(const calib_input_t *in)
+{
+	return (can_signal_t){ (uint16_t)(8U * in->e2e_offset_byte), 8U * E2E_P05_HEADER_LEN,
+			       (uint8_t)CAN_SIGNAL_INTEL, 0U };
 }
 
 /* raw values that fit the signal */
@@ -79,6 +108,11 @@ static int check_protection(const calib_input_t *in, const char **why)
 		return SQ_OK;
 	case CALIB_PROT_P01:
 	case CALIB_PROT_P02:
+		if (in->fd != 0U) {
+			/* their CRCs cover a classic frame (2..8 bytes); an FD
+			 * frame of the id would be a contract failure there */
+			return fail(why, "protection p01 and p02 protect classic frames: fd = yes needs p05, counter or none");
+		}
 		if (can_signal_overlap(&in->sig, &header)) {
 			return fail(why, "signal overlaps the E2E CRC byte or counter nibble");
 		}
@@ -87,9 +121,23 @@ static int check_protection(const calib_input_t *in, const char **why)
 			return fail(why, "max_delta_counter out of range (p01 1..14, p02 1..15)");
 		}
 		return SQ_OK;
+	case CALIB_PROT_P05: {
+		const can_signal_t h = p05_header(in);
+
+		if (((uint32_t)in->e2e_offset_byte + E2E_P05_HEADER_LEN) > in->min_dlc) {
+			return fail(why, "e2e_offset_byte: the P05 CRC and counter (3 bytes from it) run beyond min_dlc");
+		}
+		if (can_signal_overlap(&in->sig, &h)) {
+			return fail(why, "signal overlaps the P05 CRC or counter (e2e_offset_byte .. +2)");
+		}
+		if (in->max_delta_counter < 1U) {
+			return fail(why, "max_delta_counter out of range (p05 1..255)");
+		}
+		return SQ_OK;
+	}
 	case CALIB_PROT_COUNTER:
 		if (!can_signal_valid(&in->counter) || (in->counter.length > 4U)) {
-			return fail(why, "counter signal: length 1..4 within 64 bits");
+			return fail(why, "counter signal: length 1..4 within the frame");
 		}
 		if (can_signal_overlap(&in->counter, &in->sig)) {
 			return fail(why, "counter overlaps the value signal");
@@ -114,6 +162,11 @@ static bool in_header(const calib_input_t *in, const can_signal_t *sel)
 	if ((in->protection == (uint8_t)CALIB_PROT_P01) ||
 	    (in->protection == (uint8_t)CALIB_PROT_P02)) {
 		return can_signal_overlap(sel, &header);
+	}
+	if (in->protection == (uint8_t)CALIB_PROT_P05) {
+		const can_signal_t h = p05_header(in);
+
+		return can_signal_overlap(sel, &h);
 	}
 	if (in->protection == (uint8_t)CALIB_PROT_COUNTER) {
 		return can_signal_overlap(sel, &in->counter);
@@ -202,6 +255,27 @@ static int check_range(const calib_input_t *in, const char **why)
 	return SQ_OK;
 }
 
+/* The frame format: classic up to 8 bytes, FD with its lengths. */
+static int check_format(const calib_input_t *in, const char **why)
+{
+	if (in->fd > 1U) {
+		return fail(why, "fd must be yes or no");
+	}
+	if ((in->fd == 0U) && (can_signal_min_dlc(&in->sig) > HAL_CAN_CLASSIC_MAX_DLEN)) {
+		return fail(why, "start_bit: the value runs beyond the 8 bytes of a classic frame (an FD message needs fd = yes)");
+	}
+	if ((in->fd == 0U) && (calib_input_needed_dlc(in) > HAL_CAN_CLASSIC_MAX_DLEN)) {
+		return fail(why, "a selector, qualifier bit or E2E header beyond the 8 bytes of a classic frame (an FD message needs fd = yes)");
+	}
+	if ((in->fd == 0U) && (in->min_dlc > HAL_CAN_CLASSIC_MAX_DLEN)) {
+		return fail(why, "min_dlc above 8 needs fd = yes (a classic frame has at most 8 bytes)");
+	}
+	if ((in->min_dlc > HAL_CAN_CLASSIC_MAX_DLEN) && (hal_can_len_to_dlc(in->min_dlc) == 0xFFU)) {
+		return fail(why, "min_dlc: above 8 an FD frame has 12, 16, 20, 24, 32, 48 or 64 bytes");
+	}
+	return SQ_OK;
+}
+
 int calib_input_check(const calib_input_t *in, const char **why)
 {
 	input_unit_t unit;
@@ -217,7 +291,7 @@ int calib_input_check(const calib_input_t *in, const char **why)
 		return fail(why, "length must be 1..32");
 	}
 	if (!can_signal_valid(&in->sig)) {
-		return fail(why, "signal beyond the 64 bits of a frame");
+		return fail(why, "signal beyond the 512 bits of an FD frame");
 	}
 	if (in->factor.mant == 0) {
 		return fail(why, "factor 0");
@@ -239,8 +313,11 @@ int calib_input_check(const calib_input_t *in, const char **why)
 	if (check_protection(in, why) != SQ_OK) {
 		return SQ_EINVAL;
 	}
+	if (check_format(in, why) != SQ_OK) {
+		return SQ_EINVAL;
+	}
 	need = calib_input_needed_dlc(in);
-	if ((in->min_dlc < need) || (in->min_dlc > 8U)) {
+	if (in->min_dlc < need) {
 		return fail(why, "a signal beyond min_dlc");
 	}
 	if ((in->period_ms < 1U) || (in->period_ms > 1000U) || (in->stale_cycles < 1U)) {

@@ -39,8 +39,13 @@ int calib_input_prepare(const calib_input_t *in, const input_geom_t *geom,
 /* The conversion geometry of a corner. */
 input_geom_t calib_corner_geom(const calib_corner_t *corner);
 
-/* The smallest DLC that holds every bit the input uses (0: a bad signal). */
+/* The smallest data length in bytes that holds every bit the input uses
+ * (the value, selectors, qualifier, E2E header; 0: a bad signal). */
 uint8_t calib_input_needed_dlc(const calib_input_t *in);
+
+/* The same, rounded up to a length a frame of the input's format has
+ * (fd: 12, 16, 20, 24, 32, 48 or 64 above 8): the default min_dlc. */
+uint8_t calib_input_frame_len(const calib_input_t *in);
 
 /* Corners in use: n_corners, or 1 for the legacy form. */
 uint32_t calib_corner_count(const calib_t *cal);

@@ -5,6 +5,7 @@
 
 #include "calib_map.h"
 #include "e2e_p02.h"
+#include "e2e_p05.h"
 #include "hal.h"
 #include "sq_status.h"
 
@@ -38,13 +39,14 @@ int input_rx_setup(const calib_input_t *desc, const input_geom_t *geom,
 }
 
 /* One selector condition: the raw selector within lo .. hi, or a frame too
- * short to hold it (it matches, then fails the DLC check). */
+ * short to hold it (it matches, then fails the DLC check; so does a
+ * length beyond the frame's buffer, which is never read). */
 static bool selector_holds(const can_signal_t *sel, uint32_t lo, uint32_t hi,
 			   const hal_can_frame_t *f)
 {
 	uint32_t v;
 
-	if (f->dlc < can_signal_min_dlc(sel)) {
+	if ((f->dlc < can_signal_min_dlc(sel)) || (f->dlc > HAL_CAN_MAX_DLEN)) {
 		return true;
 	}
 	v = can_signal_get(sel, f->data);
@@ -84,15 +86,17 @@ static input_rx_reason_t protection(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e
 				    e2e_p01_status_t *st)
 {
 	const calib_input_t *in = &cfg->desc;
-	/* with a bad DLC the check still runs once with the configured length
-	 * (it fails): one receive cycle of the E2E state machine, as always */
+	/* with a bad DLC (or format) the check still runs once with the
+	 * configured length and a frame of length 0, which fails: one receive
+	 * cycle of the E2E state machine, as always, and no byte read */
 	const uint8_t len = dlc_ok ? f->dlc : in->min_dlc;
+	const uint8_t flen = dlc_ok ? f->dlc : 0U;
 
 	switch (in->protection) {
 	case CALIB_PROT_P01: {
 		const e2e_p01_config_t c = { in->data_id, len, in->max_delta_counter };
 
-		*st = e2e_p01_check(&c, e2e, f->data, f->dlc);
+		*st = e2e_p01_check(&c, e2e, f->data, flen);
 		break;
 	}
 	case CALIB_PROT_P02: {
@@ -104,7 +108,14 @@ static input_rx_reason_t protection(const input_rx_cfg_t *cfg, e2e_p01_rx_t *e2e
 		}
 		c.data_len = len;
 		c.max_delta_counter = in->max_delta_counter;
-		*st = e2e_p02_check(&c, e2e, f->data, f->dlc);
+		*st = e2e_p02_check(&c, e2e, f->data, flen);
+		break;
+	}
+	case CALIB_PROT_P05: {
+		const e2e_p05_config_t c = { in->data_id, len, in->e2e_offset_byte,
+					     in->max_delta_counter };
+
+		*st = e2e_p05_check(&c, e2e, f->data, flen);
 		break;
 	}
 	case CALIB_PROT_COUNTER:
@@ -181,6 +192,21 @@ static input_rx_reason_t plausibility(const input_rx_cfg_t *cfg, input_rx_state_
 	return why;
 }
 
+/* The frame's format is the message's (FD or classic) and its length one
+ * that format has and this build's frame buffer holds. */
+static bool format_ok(const calib_input_t *in, const hal_can_frame_t *f)
+{
+	const bool fd = (f->flags & HAL_CAN_FLAG_FDF) != 0U;
+
+	if (fd != (in->fd != 0U)) {
+		return false;
+	}
+	if (f->dlc > HAL_CAN_MAX_DLEN) {
+		return false;
+	}
+	return fd ? (hal_can_len_to_dlc(f->dlc) != 0xFFU) : (f->dlc <= HAL_CAN_CLASSIC_MAX_DLEN);
+}
+
 void input_rx_state_init(input_rx_state_t *st)
 {
 	HAL_REQUIRE(st != NULL);
@@ -200,10 +226,12 @@ input_rx_result_t input_rx_judge(const input_rx_cfg_t *cfg, input_rx_state_t *st
 
 	HAL_REQUIRE((cfg != NULL) && (st != NULL) && (f != NULL));
 	in = &cfg->desc;
-	if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
+	if (!format_ok(in, f)) {
+		dlc_ok = false;
+	} else if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
 		dlc_ok = f->dlc == in->min_dlc;
 	} else {
-		dlc_ok = (f->dlc >= in->min_dlc) && (f->dlc <= CAN_SIGNAL_FRAME_BYTES);
+		dlc_ok = f->dlc >= in->min_dlc;
 	}
 	why = protection(cfg, &st->e2e, f, dlc_ok, &st_e2e);
 	r.e2e_status = (uint8_t)st_e2e;

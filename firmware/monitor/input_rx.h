@@ -6,7 +6,7 @@
  *
  *   input_rx_matches()  identifier, 11/29-bit and every selector's range
  *   input_rx_judge()    the frame's one verdict, decided here and nowhere
- *                       else: DLC -> protection (none, P01, P02, counter) ->
+ *                       else: DLC -> protection (none, P01, P02, P05, counter) ->
  *                       raw value -> "not available" -> qualifier bit ->
  *                       range -> step (the physical min/max/step_max of the
  *                       calibration converted once to the raw domain)
@@ -30,8 +30,10 @@
  * `reason` column). */
 typedef enum {
 	INPUT_RX_OK = 0,
-	INPUT_RX_DLC,          /* shorter than min_dlc (or not exactly it)   */
-	INPUT_RX_CRC,          /* P01/P02 CRC                                */
+	INPUT_RX_DLC,          /* shorter than min_dlc (or not exactly it),
+				* or of the wrong format (classic for an FD
+				* message, FD for a classic one)             */
+	INPUT_RX_CRC,          /* P01/P02/P05 CRC                            */
 	INPUT_RX_COUNTER,      /* counter jump beyond max_delta_counter      */
 	INPUT_RX_REPEATED,     /* same counter again: no new data            */
 	INPUT_RX_NA,           /* a "not available" raw value                */
@@ -93,7 +95,8 @@ void input_rx_state_init(input_rx_state_t *st);
 /*
  * The verdict on one matching frame, every check in the order of
  * input_rx_reason_t; the first that fails is the reason:
- *   DLC         the frame's length (the protection still runs one receive
+ *   DLC         the frame's format (FDF as the input's fd) and length (the
+ *               protection still runs one receive
  *               cycle with the configured length, which fails: a frame of
  *               the wrong length is one cycle of the E2E state machine);
  *   protection  CRC, counter jump, repeated counter (OKSOMELOST is used,

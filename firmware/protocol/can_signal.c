@@ -5,67 +5,51 @@
 
 #include "sq_contract.h"
 
-#define BITS_PER_FRAME 64U
-
 /*
- * Position of the signal's bits, LSB first. Intel counts up from the start
- * bit; Motorola's start bit is the MSB, so its LSB is found by walking the
- * sawtooth length - 1 steps, and from the LSB the walk goes back up
- * (bit 7 of a byte continues at bit 0 of the byte before). One walk per bit
- * keeps both orders in one loop of at most 32 steps.
+ * Motorola's sawtooth is a straight run in "big-endian bit order": number
+ * the bits of byte i from its MSB, m = 8 i + (7 - j). Then a Motorola
+ * signal takes m(start) .. m(start) + length - 1, MSB first, and every
+ * check is a range check; the mapping is its own inverse.
  */
-static uint8_t moto_next_down(uint8_t pos)
+static uint32_t moto_index(uint32_t pos)
 {
-	/* MSB -> LSB direction: 8i+j -> 8i+j-1, bit 0 of byte i -> bit 7 of i+1 */
-	return ((pos % 8U) == 0U) ? (uint8_t)(pos + 15U) : (uint8_t)(pos - 1U);
+	return (pos & ~7U) | (7U - (pos & 7U));
 }
 
-static uint8_t moto_next_up(uint8_t pos)
+/* Where the signal's bits run in its order's linear numbering (Intel: the
+ * DBC numbers, Motorola: moto_index): first .. first + length - 1. */
+static uint32_t run_first(const can_signal_t *sig)
 {
-	/* LSB -> MSB: the inverse of moto_next_down */
-	return ((pos % 8U) == 7U) ? (uint8_t)(pos - 15U) : (uint8_t)(pos + 1U);
+	return (sig->byte_order == (uint8_t)CAN_SIGNAL_INTEL) ? sig->start_bit :
+		moto_index(sig->start_bit);
 }
 
-/* The LSB's number, or 0xFF when a bit falls outside the frame. */
-static uint8_t lsb_position(const can_signal_t *sig)
+/* The DBC number of the signal's bit i, LSB first (i < length). */
+static uint32_t bit_pos(const can_signal_t *sig, uint32_t i)
 {
-	uint32_t pos = sig->start_bit;
-	uint32_t i;
-
 	if (sig->byte_order == (uint8_t)CAN_SIGNAL_INTEL) {
-		pos += (uint32_t)sig->length - 1U;
-		return (pos < BITS_PER_FRAME) ? (uint8_t)sig->start_bit : 0xFFU;
+		return (uint32_t)sig->start_bit + i;
 	}
-	for (i = 1U; i < sig->length; i++) {
-		pos = moto_next_down((uint8_t)pos);
-		if (pos >= BITS_PER_FRAME) {
-			return 0xFFU;
-		}
-	}
-	return (uint8_t)pos;
+	return moto_index(run_first(sig) + sig->length - 1U - i);
 }
 
 uint8_t can_signal_min_dlc(const can_signal_t *sig)
 {
-	uint8_t lsb;
-	uint32_t hi_byte;
+	uint32_t last;
 
 	HAL_REQUIRE(sig != NULL);
 	if ((sig->length == 0U) || (sig->length > CAN_SIGNAL_MAX_LEN) ||
-	    (sig->start_bit >= BITS_PER_FRAME) || (sig->byte_order > 1U) ||
+	    (sig->start_bit >= CAN_SIGNAL_MAX_BITS) || (sig->byte_order > 1U) ||
 	    (sig->is_signed > 1U)) {
 		return 0U;
 	}
-	lsb = lsb_position(sig);
-	if (lsb == 0xFFU) {
+	/* the far end of the run: Intel's MSB, Motorola's LSB; both keep the
+	 * byte number of the DBC bit they stand for */
+	last = run_first(sig) + sig->length - 1U;
+	if (last >= CAN_SIGNAL_MAX_BITS) {
 		return 0U;
 	}
-	if (sig->byte_order == (uint8_t)CAN_SIGNAL_INTEL) {
-		hi_byte = ((uint32_t)sig->start_bit + sig->length - 1U) / 8U;
-	} else {
-		hi_byte = (uint32_t)lsb / 8U; /* Motorola: the LSB is in the last byte */
-	}
-	return (uint8_t)(hi_byte + 1U);
+	return (uint8_t)((last / 8U) + 1U);
 }
 
 bool can_signal_valid(const can_signal_t *sig)
@@ -73,47 +57,42 @@ bool can_signal_valid(const can_signal_t *sig)
 	return can_signal_min_dlc(sig) != 0U;
 }
 
-static uint8_t step_up(const can_signal_t *sig, uint8_t pos)
+/* Does the (valid) signal hold DBC bit pos? */
+static bool holds(const can_signal_t *sig, uint32_t pos)
 {
-	return (sig->byte_order == (uint8_t)CAN_SIGNAL_INTEL) ? (uint8_t)(pos + 1U) :
-		moto_next_up(pos);
-}
+	const uint32_t first = run_first(sig);
+	const uint32_t m = (sig->byte_order == (uint8_t)CAN_SIGNAL_INTEL) ? pos : moto_index(pos);
 
-/* The signal's bits as a 64-bit mask over the frame (bit n = DBC bit n). */
-static uint64_t bit_mask(const can_signal_t *sig)
-{
-	uint64_t m = 0U;
-	uint8_t pos = lsb_position(sig);
-	uint32_t i;
-
-	for (i = 0U; i < sig->length; i++) {
-		m |= (uint64_t)1U << pos;
-		pos = step_up(sig, pos);
-	}
-	return m;
+	return (m >= first) && (m < (first + sig->length));
 }
 
 bool can_signal_overlap(const can_signal_t *a, const can_signal_t *b)
 {
+	uint32_t i;
+
 	HAL_REQUIRE((a != NULL) && (b != NULL));
 	if (!can_signal_valid(a) || !can_signal_valid(b)) {
 		return true; /* a bad descriptor clashes with everything (validation) */
 	}
-	return (bit_mask(a) & bit_mask(b)) != 0U;
+	for (i = 0U; i < a->length; i++) {
+		if (holds(b, bit_pos(a, i))) {
+			return true;
+		}
+	}
+	return false;
 }
 
-uint32_t can_signal_get(const can_signal_t *sig, const uint8_t data[8])
+uint32_t can_signal_get(const can_signal_t *sig, const uint8_t *data)
 {
 	uint32_t raw = 0U;
-	uint8_t pos;
 	uint32_t i;
 
 	/* descriptors are validated with the calibration, before use */
 	HAL_REQUIRE(can_signal_valid(sig) && (data != NULL));
-	pos = lsb_position(sig);
 	for (i = 0U; i < sig->length; i++) {
+		const uint32_t pos = bit_pos(sig, i);
+
 		raw |= (((uint32_t)data[pos / 8U] >> (pos % 8U)) & 1U) << i;
-		pos = step_up(sig, pos);
 	}
 	return raw;
 }
@@ -138,14 +117,13 @@ uint32_t can_signal_raw_of(const can_signal_t *sig, int64_t value)
 	return (uint32_t)((uint64_t)value & (((uint64_t)1U << sig->length) - 1U));
 }
 
-void can_signal_put(const can_signal_t *sig, uint8_t data[8], uint32_t raw)
+void can_signal_put(const can_signal_t *sig, uint8_t *data, uint32_t raw)
 {
-	uint8_t pos;
 	uint32_t i;
 
 	HAL_REQUIRE(can_signal_valid(sig) && (data != NULL));
-	pos = lsb_position(sig);
 	for (i = 0U; i < sig->length; i++) {
+		const uint32_t pos = bit_pos(sig, i);
 		const uint8_t bit = (uint8_t)(1U << (pos % 8U));
 
 		if (((raw >> i) & 1U) != 0U) {
@@ -153,6 +131,5 @@ void can_signal_put(const can_signal_t *sig, uint8_t data[8], uint32_t raw)
 		} else {
 			data[pos / 8U] &= (uint8_t)~bit;
 		}
-		pos = step_up(sig, pos);
 	}
 }

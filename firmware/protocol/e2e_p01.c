@@ -93,11 +93,11 @@ void e2e_p01_rx_init(e2e_p01_rx_t *rx)
 
 /*
  * The sequence part of the check, for a frame whose CRC is good, with the
- * counter running 0 .. modulus - 1 (P01: 15, P02: 16, a maker's counter
- * 2..16). Shared by every protection that has a counter.
+ * counter running 0 .. modulus - 1 (P01: 15, P02: 16, P05: 256, a maker's
+ * counter 2..16). Shared by every protection that has a counter.
  */
 e2e_p01_status_t e2e_rx_sequence(e2e_p01_rx_t *rx, uint8_t counter,
-				 uint8_t modulus, uint8_t max_delta_counter)
+				 uint16_t modulus, uint8_t max_delta_counter)
 {
 	uint8_t delta;
 
@@ -132,7 +132,7 @@ e2e_p01_status_t e2e_rx_sequence(e2e_p01_rx_t *rx, uint8_t counter,
 	return delta == 1U ? E2E_P01_STATUS_OK : E2E_P01_STATUS_OKSOMELOST;
 }
 
-void e2e_rx_cycle(e2e_p01_rx_t *rx, uint8_t modulus)
+void e2e_rx_cycle(e2e_p01_rx_t *rx, uint16_t modulus)
 {
 	if ((uint32_t)rx->max_delta_counter + 1U < modulus) {
 		rx->max_delta_counter++;

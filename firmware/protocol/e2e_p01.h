@@ -124,14 +124,14 @@ e2e_p01_status_t e2e_p01_check(const e2e_p01_config_t *cfg,
 
 /*
  * The receiver's sequence machine above, for any counter that runs
- * 0 .. modulus - 1 (2..16), shared by E2E P02 and the counter-only check
- * (input_rx). e2e_rx_cycle: one receive cycle (the tolerated jump grows up
+ * 0 .. modulus - 1 (2..256), shared by E2E P02 (16), P05 (256) and the
+ * counter-only check (input_rx). e2e_rx_cycle: one receive cycle (the tolerated jump grows up
  * to modulus - 1). e2e_rx_sequence: the status of a frame whose CRC (if
  * any) is good. e2e_rx_record: store and count a status; returns it.
  */
-void e2e_rx_cycle(e2e_p01_rx_t *rx, uint8_t modulus);
+void e2e_rx_cycle(e2e_p01_rx_t *rx, uint16_t modulus);
 e2e_p01_status_t e2e_rx_sequence(e2e_p01_rx_t *rx, uint8_t counter,
-				 uint8_t modulus, uint8_t max_delta_counter);
+				 uint16_t modulus, uint8_t max_delta_counter);
 e2e_p01_status_t e2e_rx_record(e2e_p01_rx_t *rx, e2e_p01_status_t st);
 
 /* True exactly for OK, OKSOMELOST and INITIAL: the frame may be used. */

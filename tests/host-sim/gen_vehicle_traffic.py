@@ -4,10 +4,11 @@
 vehicle's own frames for a calibration's input map (written by
 `squeal-sim plant --calib CAL --log`, braking cycles 30 -> 0 m/s) among
 many frames of other ECUs on other identifiers (40 identifiers at 10, 20,
-50 and 100 ms, 8 random bytes each: 1,800 frames/s against the input map's
-own few hundred), merged in time order, candump -L.
+50 and 100 ms, 8 random bytes each, or --fd-bytes N: CAN FD frames of N
+bytes; 1,800 frames/s against the input map's own few hundred), merged in
+time order, candump -L.
 
-    gen_vehicle_traffic.py --calib CAL --frames N --out FILE [--sim PATH]
+    gen_vehicle_traffic.py --calib CAL --frames N --out FILE [--sim PATH] [--fd-bytes N]
 
 Prints the share of frames on the input map's identifiers.
 """
@@ -46,6 +47,8 @@ def main():
     ap.add_argument("--frames", type=int, required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--sim", default=os.path.join(ROOT, "build", "host", "squeal-sim"))
+    ap.add_argument("--fd-bytes", type=int, default=0,
+                    help="the other ECUs' frames as CAN FD frames of this many bytes (##1)")
     args = ap.parse_args()
     used = {int(x, 0) for x in re.findall(r"^\s*(?:id|status_id|detail_id|detail2_id|diag_id)\s*=\s*(\S+)",
                                           open(args.calib).read(), re.M)}
@@ -75,7 +78,11 @@ def main():
     for k, (cid, per) in enumerate(zip(ids, OTHER_PERIODS_MS)):
         phase = (k * 137) % (per * 1000)  # spread over the period
         for t in range(phase, end_us, per * 1000):
-            other.append((t, iface, "%03X#%016X" % (cid, rnd.getrandbits(64))))
+            if args.fd_bytes:
+                other.append((t, iface, "%03X##1%0*X" % (cid, 2 * args.fd_bytes,
+                                                         rnd.getrandbits(8 * args.fd_bytes))))
+            else:
+                other.append((t, iface, "%03X#%016X" % (cid, rnd.getrandbits(64))))
     frames = sorted(own + other, key=lambda x: x[0])[:args.frames]
     with open(args.out, "w") as f:
         f.writelines("(%010d.%06d) %s %s\n" % (t // 1000000, t % 1000000, i, body)

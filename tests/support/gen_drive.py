@@ -13,11 +13,19 @@ canmatrix (Frame.encode) from the fixture DBC, independently of the firmware:
   - other traffic (other messages of the DBC and foreign identifiers);
   - the layout's protection: alive counter, E2E P02 (CRC-8H2F with the
     DataIDList indexed by the counter) or P01; maker checksum bits filled;
+    E2E P05 blocks (layout "p05": message -> [(start byte, CRC offset byte,
+    end byte or None, Data ID)]: CRC-16/CCITT-FALSE over the block's bytes
+    but the CRC's, then the Data ID low byte first; 8-bit counter in the
+    byte after the CRC);
+  - CAN FD messages (the DBC's VFrameFormat, or a DLC above 8) as candump FD
+    lines `ID##F<data>`, F the layout's flags digit (fd_flags: FDF 4 | BRS 1
+    as newer can-utils write it, or BRS 1 alone as older ones do);
   - optionally the timestamps jump back 2.8 s (a logger restart).
 
     gen_drive.py LAYOUT OUT.log [--seed N] [--jump] [--unseen]
 """
 import argparse
+import binascii
 import os
 import random
 import sys
@@ -50,6 +58,42 @@ def braking_run(t):
             w = max(0.0, (t - t0) / (t1 - t0))
             return v0 + (v1 - v0) * w, n0 + (n1 - n0) * w
     return PROFILE[-1][1], PROFILE[-1][2]
+
+
+class FdData(bytes):
+    """The data of a CAN FD frame (written as a `##` line), with its flags digit."""
+    flags = 0x5
+
+
+def fd_message(frame):
+    """The DBC message is sent as CAN FD frames (VFrameFormat, or a DLC above 8)."""
+    return bool(frame.is_fd) or frame.size > 8
+
+
+def is_message(frame, data):
+    """A logged frame of the message's identifier is that message: its
+    format (FD or classic) and at least its DLC."""
+    return isinstance(data, FdData) == fd_message(frame) and len(data) >= frame.size
+
+
+def fd_data(data, flags):
+    d = FdData(data)
+    d.flags = flags
+    return d
+
+
+def p05_fill(data, block, counter):
+    """E2E P05 on the block (start byte, CRC offset byte, end byte or None for
+    the frame's end, Data ID): the counter in the byte after the CRC, then the
+    CRC (binascii.crc_hqx is CRC-16/CCITT-FALSE from init 0xFFFF) over the
+    block's bytes but the CRC's and the Data ID low byte first, stored
+    little-endian."""
+    start, off, end, data_id = block
+    end = len(data) if end is None else end
+    data[off + 2] = counter & 0xFF
+    covered = bytes(data[start:off]) + bytes(data[off + 2:end]) + bytes([data_id & 0xFF, data_id >> 8])
+    crc = binascii.crc_hqx(covered, 0xFFFF)
+    data[off:off + 2] = bytes([crc & 0xFF, crc >> 8])
 
 
 T0 = 1700000000.0
@@ -119,7 +163,7 @@ class Drive:
                 values[s.name] = self.raw(s, feeds[s.name](t))
             elif s.name in self.layout.get("qualifier_ok", {}):
                 values[s.name] = self.layout["qualifier_ok"][s.name]
-            elif s.name == self.layout.get("counters", {}).get(frame.name):
+            elif s.name in counter_names(self.layout, frame.name):
                 values[s.name] = seq % (1 << s.size)
             else:
                 values[s.name] = 0
@@ -140,6 +184,10 @@ class Drive:
             ctr = seq % 15
             data[1] = (data[1] & 0xF0) | ctr
             data[0] = vehref.p01_crc(data, int(frame.attributes["E2E_DataID"]))
+        for block in self.layout.get("p05", {}).get(frame.name, ()):
+            p05_fill(data, block, seq)
+        if fd_message(frame):
+            return fd_data(data, self.layout.get("fd_flags", FdData.flags))
         return bytes(data)
 
     def frames(self):
@@ -177,10 +225,17 @@ class Drive:
         return [(T0 + t, i, e, d) for t, i, e, d in out]
 
 
+def counter_names(layout, msg):
+    """The counter signals of a message (one name, or a list for several blocks)."""
+    c = layout.get("counters", {}).get(msg, ())
+    return (c,) if isinstance(c, str) else tuple(c)
+
+
 def candump_line(t, cid, ext, data, iface="can0"):
     us = int(round(t * 1e6))
-    return "(%010d.%06d) %s %s#%s\n" % (us // 1000000, us % 1000000, iface,
-                                        ("%08X" if ext else "%03X") % cid, data.hex().upper())
+    sep = "##%X" % data.flags if isinstance(data, FdData) else "#"
+    return "(%010d.%06d) %s %s%s%s\n" % (us // 1000000, us % 1000000, iface,
+                                         ("%08X" if ext else "%03X") % cid, sep, data.hex().upper())
 
 
 def write_log(path, frames):

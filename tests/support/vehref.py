@@ -7,7 +7,8 @@
   - a reference extractor written from vehicle-bus.md (bit by bit, no
     canmatrix), used to validate the harnesses in their self-tests;
   - the conversions of vehicle-bus.md (speed -> v0, pressure/torque -> N);
-  - CRC-8H2F (E2E P02) and CRC-8 0x1D (P01), bitwise from their definitions.
+  - CRC-8H2F (E2E P02) and CRC-8 0x1D (P01), CRC-16/CCITT-FALSE (P05),
+    bitwise from their definitions.
 """
 import contextlib
 import io
@@ -237,6 +238,25 @@ def yes(d, k):
     return d.get(k, "no").lower() in ("yes", "1")
 
 
+def same_num(text, value):
+    return abs(float(text) - float(value)) <= 1e-12 * max(1.0, abs(float(value)))
+
+
+def wrong_keys(inp, want, sig):
+    """[(key, written, wanted)] where an input's keys differ from want
+    (integers compared by value) or its factor and offset from the DBC
+    signal's."""
+    bad = []
+    for k, v in want.items():
+        got = inp.get(k)
+        if got is None or not (int(got, 0) == v if isinstance(v, int) else got == v):
+            bad.append((k, got, v))
+    for k in ("factor", "offset"):
+        if not same_num(inp.get(k, "0"), getattr(sig, k)):
+            bad.append((k, inp.get(k), getattr(sig, k)))
+    return bad
+
+
 # ------------------------------------------------------------ reference extraction
 
 def bits_of(start, length, intel):
@@ -280,14 +300,15 @@ def reference_rows(inputs, frames):
     text alone: [(t_text, id_text, input, raw or None, physical or None, reason)]
     for frames [(t_text, can_id, extended, data)]. Reasons modelled: dlc, na,
     qualifier, ok (protection is not modelled: the harness compares raw,
-    physical and dlc only)."""
+    physical and dlc only). A classic frame of an FD input's identifier
+    (data not marked FD: gen_drive.FdData) is the wrong format: dlc."""
     rows = []
     for t, cid, ext, data in frames:
         for name, inp in inputs.items():
             if ival(inp, "id") != cid or yes(inp, "extended") != ext or not mux_match(inp, data):
                 continue
             idt = ("%08X" if ext else "%03X") % cid
-            if len(data) < ival(inp, "min_dlc", 8):
+            if len(data) < ival(inp, "min_dlc", 8) or (yes(inp, "fd") and not hasattr(data, "flags")):
                 rows.append((t, idt, name, None, None, "dlc"))
                 continue
             raw = extract(data, ival(inp, "start_bit"), ival(inp, "length"), inp["byte_order"],
@@ -360,6 +381,21 @@ def crc8h2f(data):
 def p02_crc(frame, data_id_list, counter):
     """E2E P02: CRC over bytes 1..n-1 then DataIDList[counter]."""
     return crc8h2f(list(frame[1:]) + [data_id_list[counter]])
+
+
+def crc16_ccitt_false(data):
+    """CRC-16/CCITT-FALSE: poly 0x1021, init 0xFFFF, not reflected, no final XOR."""
+    c = 0xFFFF
+    for b in data:
+        c ^= b << 8
+        for _ in range(8):
+            c = ((c << 1) ^ 0x1021) & 0xFFFF if c & 0x8000 else (c << 1) & 0xFFFF
+    return c
+
+
+def p05_crc(frame, data_id, offset=0):
+    """E2E P05: CRC-16 over the frame's bytes but the two at offset, then the Data ID low byte, high byte."""
+    return crc16_ccitt_false(list(frame[:offset]) + list(frame[offset + 2:]) + [data_id & 0xFF, data_id >> 8])
 
 
 def p01_crc(frame, data_id):

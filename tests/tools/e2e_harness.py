@@ -15,6 +15,9 @@ test_vehicle_e2e.py and test_vehicle_unseen.py:
 A second run of the same drive with a 2.8 s backward timestamp jump must be
 replayed as a new segment (reported in the summary) without squeezing: the
 corner's status frames cover the whole drive.
+A layout whose calibration checks E2E P05 (p05_checked: CAN FD): the summary's crc verdict of every
+input of a P05 message is 0 on the clean drive, and above 0 (the others'
+still 0) on the drive with one frame's CRC corrupted.
 
 fake_replay() is a pure-Python stand-in for squeal-sim replay (the harness's
 self-test): it applies the calibration text (vehref.reference_rows and the
@@ -40,7 +43,10 @@ V0_MIN_MPS = 0.01      # calibration defaults: below these, not sliding
 FORCE_MIN_N = 100.0
 STATUS_PERIOD_US = 10000
 FAULT = 15
-LINE = re.compile(r"^\((\d+)\.(\d{6})\) (\S+) ([0-9A-F]{3}|[0-9A-F]{8})#((?:[0-9A-F]{2})*)$")
+LINE = re.compile(r"^\((\d+)\.(\d{6})\) (\S+) ([0-9A-F]{3}|[0-9A-F]{8})#(#[0-9A-F])?((?:[0-9A-F]{2})*)$")
+# a corner's input line of the replay summary: position, quantity, signal, frames, used, verdicts
+INPUT_LINE = re.compile(r"^\s+(FL|FR|RL|RR) (\w+) (\S+): frames (\d+), used (\d+), rejected((?: \w+ \d+)*), "
+                        r"stale events")
 
 
 def ref_state(v0, force):
@@ -68,7 +74,8 @@ def expected_points(layout, db, frames):
         pts = []
         for t, cid, ext, data in frames:
             for frame, sig, role in ((sframe, ssig, "s"), (fframe, fsig, "f")):
-                if cid != frame.arbitration_id.id or ext != bool(frame.arbitration_id.extended):
+                if cid != frame.arbitration_id.id or ext != bool(frame.arbitration_id.extended) \
+                        or not gen_drive.is_message(frame, data):
                     continue
                 dec = frame.decode(bytearray(data))
                 if sig not in dec:
@@ -184,6 +191,8 @@ def run_layout(r, label, layout, tmp, replay, seed=7):
         vehref.sim_missing(r, "%s: replay %s --calib %s" % (label, os.path.basename(log), os.path.basename(cal)),
                            rc, err)
         return
+    if layout.get("p05_checked"):
+        check_p05(r, label, layout, db, tmp, replay, frames, cal, err)
     outf = parse_out(out.decode())
     pts = expected_points(layout, db, frames)
     seen = set()
@@ -218,11 +227,72 @@ def run_layout(r, label, layout, tmp, replay, seed=7):
                 "%s %s, jump: inputs used across the jump (%d FAULT of %d)" % (label, pos, st.count(FAULT), len(st)))
 
 
+def input_verdicts(err):
+    """{(pos, quantity): (signal, frames, used, {verdict: count})} of a replay summary."""
+    out = {}
+    for line in err.splitlines():
+        m = INPUT_LINE.match(line)
+        if m:
+            v = m.group(6).split()
+            out[(m.group(1), m.group(2))] = (m.group(3), int(m.group(4)), int(m.group(5)),
+                                             {a: int(b) for a, b in zip(v[::2], v[1::2])})
+    return out
+
+
+def p05_inputs(layout):
+    """[(pos, quantity, message)] of the corners' inputs in P05 messages."""
+    out = []
+    for pos, spd, frc, _ in layout["corners"]:
+        for q, ref in (("speed", spd), ("force", frc)):
+            if ref.split(".")[0] in layout["p05_checked"]:
+                out.append((pos, q, ref.split(".")[0]))
+    return out
+
+
+def check_p05(r, label, layout, db, tmp, replay, frames, cal, err):
+    """crc verdicts: 0 on the clean drive, > 0 with one CRC corrupted."""
+    got = input_verdicts(err)
+    mine = p05_inputs(layout)
+    for pos, q, msg in mine:
+        v = got.get((pos, q))
+        r.check(v is not None and v[2] > 0 and v[3].get("crc") == 0,
+                "%s %s %s: P05 checked, no crc verdict on the clean drive (%s)" % (label, pos, q, v))
+    msg = mine[0][2]
+    f = db.frame_by_name(msg)
+    hit = next(k for k, (t, cid, ext, d) in enumerate(frames) if cid == f.arbitration_id.id
+               and ext == bool(f.arbitration_id.extended) and t > frames[0][0] + 1.0
+               and gen_drive.is_message(f, d))
+    t, cid, ext, d = frames[hit]
+    bad = bytearray(d)
+    off = layout["p05"][msg][0][1]
+    bad[off] ^= 0x01
+    bad = gen_drive.fd_data(bad, d.flags) if isinstance(d, gen_drive.FdData) else bytes(bad)
+    blog = os.path.join(tmp, stem(label) + "-badcrc.log")
+    gen_drive.write_log(blog, frames[:hit] + [(t, cid, ext, bad)] + frames[hit + 1:])
+    rc, _, berr = replay(blog, cal)
+    if rc != 0:
+        vehref.sim_missing(r, "%s: replay of the drive with one corrupted CRC" % label, rc, berr)
+        return
+    got = input_verdicts(berr)
+    for pos, q, m in mine:
+        v = got.get((pos, q))
+        want = (lambda n: n > 0) if m == msg else (lambda n: n == 0)
+        r.check(v is not None and want(v[3].get("crc", -1)),
+                "%s %s %s: one corrupted CRC of %s %s (%s)" % (label, pos, q, msg,
+                                                               "is a crc verdict" if m == msg else "not counted here", v))
+
+
 def sim_replay(log, cal):
     return vehref.run_sim(["replay", log, "--calib", cal])
 
 
 # ------------------------------------------------------------ self-test stand-in
+
+def p05_ok(inp, data):
+    """The frame's P05 CRC (little-endian at e2e_offset_byte) is right for the input's Data ID."""
+    off = vehref.ival(inp, "e2e_offset_byte", 0)
+    return vehref.p05_crc(data, vehref.ival(inp, "data_id"), off) == data[off] | data[off + 1] << 8
+
 
 def fake_replay(log, cal):
     """squeal-sim replay as the harness expects it, from the calibration text,
@@ -242,7 +312,10 @@ def fake_replay(log, cal):
                 t = last_t + 1000
                 segments += 1
             last_t = t
-            frames.append((t, int(m.group(4), 16), len(m.group(4)) == 8, bytes.fromhex(m.group(5))))
+            data = bytes.fromhex(m.group(6))
+            if m.group(5):
+                data = gen_drive.fd_data(data, int(m.group(5)[1], 16))
+            frames.append((t, int(m.group(4), 16), len(m.group(4)) == 8, data))
     values = {}
     out = []
     next_status = frames[0][0] + STATUS_PERIOD_US
@@ -269,16 +342,31 @@ def fake_replay(log, cal):
                     {"Force_N": int(round(n / 0.5))}))))
         tick += 1
 
+    verdicts = {}   # input -> [frames, used, dlc, crc]
     for t, cid, ext, data in frames:
         while next_status <= t:
             emit(next_status)
             next_status += STATUS_PERIOD_US
         for _, _, name, raw, phys, reason in vehref.reference_rows(inputs, [("", cid, ext, data)]):
+            inp = inputs[name]
+            if reason == "ok" and inp.get("protection") == "p05" and not p05_ok(inp, data):
+                reason = "crc"
+            v = verdicts.setdefault(name, [0, 0, 0, 0])
+            v[0] += 1
+            v[1] += reason == "ok"
+            v[2] += reason == "dlc"
+            v[3] += reason == "crc"
             if reason == "ok":
                 values[name] = phys
     text = "".join("(%010d.%06d) can0 %03X#%s\n" % (t // 1000000, t % 1000000, c, d.hex().upper())
                    for t, c, d in out)
-    return 0, text.encode(), "replay summary\n  segments %d\n" % (segments + 1)
+    summary = "replay summary\n  segments %d\n" % (segments + 1)
+    for pos, c in corners.items():
+        for q in ("speed", "force"):
+            v = verdicts.get(c[q], [0, 0, 0, 0])
+            summary += "    %s %s %s: frames %d, used %d, rejected dlc %d crc %d, stale events 0\n" % (
+                pos, q, inputs[c[q]].get("signal", c[q]), v[0], v[1], v[2], v[3])
+    return 0, text.encode(), summary
 
 
 def main(argv, layouts):

@@ -63,8 +63,7 @@ EXPECT = {
 }
 
 
-def same_num(text, value):
-    return abs(float(text) - float(value)) <= 1e-12 * max(1.0, abs(float(value)))
+same_num = vehref.same_num
 
 
 def signal_of(fr, inp):
@@ -124,18 +123,7 @@ def check_layout(r, name, layout, tmp):
             "signed": "yes" if sig.is_signed else "no", "unit": sig.unit,
             "period_ms": period, "protection": layout["protection"],
         }
-        bad = []
-        for k, v in want.items():
-            got = inp.get(k)
-            if k in ("id", "min_dlc", "start_bit", "length", "period_ms"):
-                ok = got is not None and int(got, 0) == v
-            else:
-                ok = got == v
-            if not ok:
-                bad.append((k, got, v))
-        for k in ("factor", "offset"):
-            if not same_num(inp.get(k, "0"), getattr(sig, k)):
-                bad.append((k, inp.get(k), getattr(sig, k)))
+        bad = vehref.wrong_keys(inp, want, sig)
         r.check(not bad, "%s %s: layout keys equal canmatrix's signal (wrong: %s)" % (name, ref, bad))
         if sig.mux_val is not None:
             m = next(s for s in fr.signals if s.is_multiplexer)

@@ -212,15 +212,16 @@ static void test_block_layout(void **state)
 	uint8_t buf[CALIB_BLOCK_LEN];
 
 	(void)state;
-	/* version 3: the 99 bytes of v1 (header + fields), then input_bus,
+	/* version 4: the 99 bytes of v1 (header + fields), then input_bus,
 	 * output_bus, input_listen_only, n_inputs, n_corners, the flat
-	 * deviations (7 x 4) and k (4), 8 inputs x 118 (v2's 82, the five
+	 * deviations (7 x 4) and k (4), 8 inputs x 125 (v2's 82, the five
 	 * decimals' mantissas 4 bytes wider, mux_value_max, the second
-	 * selector's 4 bytes and its two range ends) and 4 corners x 89 bytes
-	 * (57 + torque share 4 + their deviations 28), then the CRC:
-	 * 99 + 3 + 2 + 32 + 944 + 356 = 1436, block 1440 */
-	assert_int_equal(CALIB_VERSION, 3);
-	assert_int_equal(CALIB_BLOCK_LEN, 1440);
+	 * selector's 4 bytes and its two range ends; v4: the four start bits
+	 * and the qualifier bit 1 byte wider, fd, e2e_offset_byte) and 4
+	 * corners x 89 bytes (57 + torque share 4 + their deviations 28), then
+	 * the CRC: 99 + 3 + 2 + 32 + 1000 + 356 = 1492, block 1496 */
+	assert_int_equal(CALIB_VERSION, 4);
+	assert_int_equal(CALIB_BLOCK_LEN, 1496);
 	encode_default(buf);
 	assert_memory_equal(buf, "SQCB", 4);
 	assert_int_equal(get_le(&buf[4], 2U), CALIB_VERSION);
@@ -234,7 +235,7 @@ static void test_block_layout(void **state)
 		assert_int_equal(buf[i], 0); /* no deviations */
 	}
 	assert_int_equal(get_le(&buf[132], 4U), 2U << 16); /* k = 2 sigma, Q16 */
-	assert_int_equal(get_le(&buf[1436], 4U), ref_crc32(buf, 1436U));
+	assert_int_equal(get_le(&buf[1492], 4U), ref_crc32(buf, 1492U));
 }
 
 /* ---- round trip ---------------------------------------------------------------- */

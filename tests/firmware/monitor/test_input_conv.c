@@ -33,7 +33,7 @@
 
 /* ---- can_signal ---------------------------------------------------------- */
 
-static can_signal_t sig(uint8_t start, uint8_t len, uint8_t order, uint8_t sgn)
+static can_signal_t sig(uint16_t start, uint8_t len, uint8_t order, uint8_t sgn)
 {
 	return (can_signal_t){ start, len, order, sgn };
 }
@@ -138,10 +138,11 @@ static void test_bad_descriptors(void **state)
 {
 	const can_signal_t zero = sig(0, 0, CAN_SIGNAL_INTEL, 0);
 	const can_signal_t long33 = sig(0, 33, CAN_SIGNAL_INTEL, 0);
-	const can_signal_t intel_out = sig(60, 8, CAN_SIGNAL_INTEL, 0);
-	const can_signal_t moto_out = sig(63, 16, CAN_SIGNAL_MOTOROLA, 0); /* 63..56, then byte 8 */
+	/* the frame ends at bit 511 (64 bytes of CAN FD) */
+	const can_signal_t intel_out = sig(508, 8, CAN_SIGNAL_INTEL, 0);
+	const can_signal_t moto_out = sig(511, 16, CAN_SIGNAL_MOTOROLA, 0); /* 511..504, then byte 64 */
 	const can_signal_t moto_ok = sig(0, 2, CAN_SIGNAL_MOTOROLA, 0);    /* bit 0, then bit 15 */
-	const can_signal_t start64 = sig(64, 1, CAN_SIGNAL_INTEL, 0);
+	const can_signal_t start64 = sig(512, 1, CAN_SIGNAL_INTEL, 0);
 
 	(void)state;
 	assert_int_equal(can_signal_min_dlc(&zero), 0);
@@ -155,7 +156,7 @@ static void test_bad_descriptors(void **state)
 static void test_signal_contracts(void **state)
 {
 	const can_signal_t ok = sig(0, 8, CAN_SIGNAL_INTEL, 0);
-	const can_signal_t bad = sig(60, 8, CAN_SIGNAL_INTEL, 0); /* beyond bit 63 */
+	const can_signal_t bad = sig(508, 8, CAN_SIGNAL_INTEL, 0); /* beyond bit 511 */
 	const can_signal_t order = sig(0, 8, 2U, 0);               /* no such order */
 	uint8_t d[8] = { 0 };
 
