@@ -25,8 +25,8 @@ TEST_PROGS += tests/host-sim/test_cmd_replay_fd.py
 
 # CAN FD on a real vcan0 (MTU 72) in the QEMU guest: canplayer/candump of an
 # FD log give the same lines; plant --iface -> ecu of the FD layout live
-tests/system/run-fd-log.sh: build/host/squeal-sim
-TEST_PROGS += tests/system/run-fd-log.sh
+tests/system/integration/run-fd-log.sh: build/host/squeal-sim
+TEST_PROGS += tests/system/integration/run-fd-log.sh
 
 # make bench: replay frames/s of FD traffic beside classic traffic
 tests/host-sim/bench_cmd_replay_fd.sh: build/host/squeal-sim

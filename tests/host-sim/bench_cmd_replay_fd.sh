@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # make bench: replay throughput of CAN FD traffic beside classic traffic, one
-# run each on logs of the same size and rate (tests/replay/gen_vehicle_traffic.py):
-#   classic  the input map of tests/inputmap/moto15_p02.cal (8-byte frames,
+# run each on logs of the same size and rate (tests/host-sim/gen_vehicle_traffic.py):
+#   classic  the input map of tests/firmware/monitor/fixtures/moto15_p02.cal (8-byte frames,
 #            P02) among 40 other ECUs' 8-byte frames;
 #   FD       the FD layout of tests/host-sim/fd_p05.cal (24- and 32-byte FD
 #            frames, P05) among the same 40 ECUs sending 64-byte FD frames.
@@ -20,8 +20,8 @@ mkdir -p "$DIR"
 gen() { # calib out [--fd-bytes N]
 	local cal=$1 out=$2
 	shift 2
-	if [ ! -s "$out" ] || [ tests/replay/gen_vehicle_traffic.py -nt "$out" ] || [ "$cal" -nt "$out" ]; then
-		"$PY" tests/replay/gen_vehicle_traffic.py --calib "$cal" --frames "$N" --out "$out" \
+	if [ ! -s "$out" ] || [ tests/host-sim/gen_vehicle_traffic.py -nt "$out" ] || [ "$cal" -nt "$out" ]; then
+		"$PY" tests/host-sim/gen_vehicle_traffic.py --calib "$cal" --frames "$N" --out "$out" \
 			--sim "$SIM" "$@" >"$out.gen.txt"
 	fi
 }
@@ -31,7 +31,7 @@ cpu_s() { # command... -> CPU seconds of one run
 	awk '{printf "%.2f", $1 + $2}' "$DIR/t.txt"
 }
 
-CCAL=tests/inputmap/moto15_p02.cal
+CCAL=tests/firmware/monitor/fixtures/moto15_p02.cal
 FCAL=tests/host-sim/fd_p05.cal
 gen "$CCAL" "$DIR/classic.log"
 gen "$FCAL" "$DIR/fd.log" --fd-bytes 64

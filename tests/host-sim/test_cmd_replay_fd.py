@@ -7,7 +7,7 @@ tests/host-sim/fd_p05.cal (24-byte wheel speeds at 0x0A0, 32-byte pressures
 at 0x0B0, AUTOSAR E2E P05 with a CRC-16/CCITT-FALSE of our own below,
 checked against its check value and the published P05 example), a drive of
 5 s at v0 = 3 m/s then 5 s at v0 = 1 m/s at 9 kN; the expected states come
-from the reference model (tests/reference/squeal_reference.py). Then:
+from the reference model (tests/support/reference/squeal_reference.py). Then:
   - every FD frame is read as FD (fd_frames), used, none unsupported;
   - the state time follows the reference's states;
   - both flag conventions (##1 and ##5) are the same frame;

@@ -6,7 +6,7 @@ tools/vehicle_calib.py from its DBC (--protection auto; the periods measured
 from the drive's FD frames) -> a braking drive as candump `##` lines (E2E P05
 CRCs and counters, one CRC at byte 4, dropped frames, other traffic) ->
 `squeal-sim replay LOG --calib car.cal` ->
-tests/vehicle/e2e_harness.py's checks, as for the classic layouts: inputs
+tests/tools/e2e_harness.py's checks, as for the classic layouts: inputs
 used (no FAULT after start-up), V0_mps and Force_N follow the vehicle's
 signals, SquealState equals the reference at the converted points, the 2.8 s
 jump back; and P05 checked: the crc verdict of every input 0 on the clean

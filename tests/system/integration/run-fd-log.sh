@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # make test entry: CAN FD logs on a real vcan0 (MTU 72) in the QEMU guest of
-# tests/vcan/guest.sh (natively where this host has vcan0):
+# tests/system/vcan/guest.sh (natively where this host has vcan0):
 #   1. an FD log (frames of every FD length with flags digits 0..3, written
 #      here, then `squeal-sim plant --calib FD --log` of an FD layout with
 #      P05) played by canplayer: candump -L of the bus gives the same frame
@@ -11,7 +11,7 @@
 #      captured input frames offline.
 # Prints "RESULT: N passed, M failed". About 30-60 s (boot included).
 set -u
-cd "$(dirname "$0")/../.." || exit 1
+cd "$(dirname "$0")/../../.." || exit 1
 make -s build/host/squeal-sim || exit 1
 sim=build/host/squeal-sim
 cal=tests/host-sim/fd_p05.cal
@@ -44,7 +44,7 @@ with open(sys.argv[1], "a") as f:
 PY
 
 rc=0
-tests/vcan/guest.sh --timeout 170 --run tests/system/guest-fd-log.sh \
+tests/system/vcan/guest.sh --timeout 170 --run tests/system/integration/guest-fd-log.sh \
 	--add build/host/squeal-sim --add tests/system --add tests/host-sim --add "$out/fd-in.log" \
 	--out "$out" -- "$out/fd-in.log" || rc=$?
 if [ "$rc" != 0 ]; then

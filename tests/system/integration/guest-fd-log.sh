@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
-# Guest half of tests/system/run-fd-log.sh (POSIX sh; run by
-# tests/vcan/guest.sh in the QEMU guest, or natively where vcan0 exists and
+# Guest half of tests/system/integration/run-fd-log.sh (POSIX sh; run by
+# tests/system/vcan/guest.sh in the QEMU guest, or natively where vcan0 exists and
 # already has MTU 72). Runs the programs and captures the bus; the host
 # judges what lands in $SQ_OUT.
 #
