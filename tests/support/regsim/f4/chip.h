@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * The real STM32F405 chip header with every peripheral this test touches
- * moved into plain arrays (tests/hal/stm32f4/test_board_regsim.c), so clock.c and
- * iwdg.c run on the host against memory the test inspects and drives.
+ * moved into plain arrays, so the chip files (clock.c, iwdg.c ...) run on the
+ * host against memory their tests (tests/hal/stm32f4/test_*.c) inspect and
+ * drive. A test defines the arrays its file uses.
  */
 #ifndef REGSIM_F4_CHIP_H
 #define REGSIM_F4_CHIP_H
