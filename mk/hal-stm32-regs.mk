@@ -5,15 +5,17 @@ REGSIM_CFLAGS := $(WARN) -O1 -g $(SAN) $(FW_INC) -Ihal/stm32f4
 
 # One STM32F4 file per program, on tests/support/regsim/f4 (each test
 # defines the register arrays it uses and the functions of the other files
-# the one under test calls): build/test/tests/hal/stm32f4/test_MODULE
+# the one under test calls; $(2): more sources, e.g. the contract catcher):
+# build/test/tests/hal/stm32f4/test_MODULE
 REGSIM_F4_DEPS := tests/support/regsim/f4/chip.h hal/stm32f4/stm32f405/chip.h hal/stm32f4/cortex_m.h
 define regsim_f4_test
-build/test/tests/hal/stm32f4/test_$(1): tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $$(REGSIM_F4_DEPS)
+build/test/tests/hal/stm32f4/test_$(1): tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $(2) $$(REGSIM_F4_DEPS)
 	@mkdir -p $$(@D)
-	$$(CC) $$(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $$@ tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c -lcmocka $(2)
+	$$(CC) $$(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $$@ tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $(2) -lcmocka
 endef
-REGSIM_F4_MODULES := clock iwdg
-$(foreach m,$(REGSIM_F4_MODULES),$(eval $(call regsim_f4_test,$(m))))
+REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest
+$(foreach m,$(filter-out selftest,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
+$(eval $(call regsim_f4_test,selftest,tests/support/test_contract.c))
 TEST_PROGS += $(foreach m,$(REGSIM_F4_MODULES),build/test/tests/hal/stm32f4/test_$(m))
 
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
