@@ -13,7 +13,7 @@ build/test/tests/hal/stm32f4/test_$(1): tests/hal/stm32f4/test_$(1).c hal/stm32f
 	@mkdir -p $$(@D)
 	$$(CC) $$(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $$@ tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $(2) -lcmocka
 endef
-REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest
+REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest systick
 $(foreach m,$(filter-out selftest,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
 $(eval $(call regsim_f4_test,selftest,tests/support/test_contract.c))
 TEST_PROGS += $(foreach m,$(REGSIM_F4_MODULES),build/test/tests/hal/stm32f4/test_$(m))
