@@ -16,6 +16,15 @@ endef
 REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest systick
 $(foreach m,$(filter-out selftest,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
 $(eval $(call regsim_f4_test,selftest,tests/support/test_contract.c))
+
+# board.c's main() built as board_main(): the test has its own
+build/test/regsim/hal/stm32f4/board.o: hal/stm32f4/board.c $(REGSIM_F4_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -Itests/support/regsim/f4 -Dmain=board_main -c $< -o $@
+build/test/tests/hal/stm32f4/test_board: tests/hal/stm32f4/test_board.c build/test/regsim/hal/stm32f4/board.o
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $@ $^ -lcmocka
+TEST_PROGS += build/test/tests/hal/stm32f4/test_board
 TEST_PROGS += $(foreach m,$(REGSIM_F4_MODULES),build/test/tests/hal/stm32f4/test_$(m))
 
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
