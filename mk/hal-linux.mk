@@ -25,3 +25,10 @@ $(foreach v,$(VARIANTS),$(eval $(call hal_host_lib,$(v),linux,$(HAL_LINUX_SRCS))
 $(foreach v,$(VARIANTS),$(eval $(call hal_host_lib,$(v),vbus,$(HAL_VBUS_SRCS))))
 
 ALL_TARGETS += build/host/libhal_linux.a build/host-fixed/libhal_linux.a
+
+# The host's contract handler alone (print FILE:LINE, abort), its cases in
+# child processes: build/test/tests/hal/host/test_hal_contract_abort
+build/test/tests/hal/host/test_hal_contract_abort: build/test/app/tests/hal/host/test_hal_contract_abort.o build/test/app/$(HAL_CONTRACT_HOST:.c=.o)
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka
+TEST_PROGS += build/test/tests/hal/host/test_hal_contract_abort

@@ -1,14 +1,31 @@
 # SPDX-License-Identifier: MIT
-# Issue 14 register-level fixes, on the host: the chip files built against
-# their real chip.h with the peripherals moved into arrays (tests/support/regsim).
+# The chip files on the host, built against their real chip.h with the
+# peripherals moved into arrays (tests/support/regsim).
 REGSIM_CFLAGS := $(WARN) -O1 -g $(SAN) $(FW_INC) -Ihal/stm32f4
 
-build/test/tests/hal/stm32f4/test_board_regsim: tests/hal/stm32f4/test_board_regsim.c hal/stm32f4/clock.c hal/stm32f4/iwdg.c \
-		tests/support/regsim/f4/chip.h hal/stm32f4/stm32f405/chip.h
+# One STM32F4 file per program, on tests/support/regsim/f4 (each test
+# defines the register arrays it uses and the functions of the other files
+# the one under test calls; $(2): more sources, e.g. the contract catcher):
+# build/test/tests/hal/stm32f4/test_MODULE
+REGSIM_F4_DEPS := tests/support/regsim/f4/chip.h hal/stm32f4/stm32f405/chip.h hal/stm32f4/cortex_m.h
+define regsim_f4_test
+build/test/tests/hal/stm32f4/test_$(1): tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $(2) $$(REGSIM_F4_DEPS)
+	@mkdir -p $$(@D)
+	$$(CC) $$(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $$@ tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $(2) -lcmocka
+endef
+REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest systick
+$(foreach m,$(filter-out selftest,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
+$(eval $(call regsim_f4_test,selftest,tests/support/test_contract.c))
+
+# board.c's main() built as board_main(): the test has its own
+build/test/regsim/hal/stm32f4/board.o: hal/stm32f4/board.c $(REGSIM_F4_DEPS)
 	@mkdir -p $(@D)
-	$(CC) $(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $@ tests/hal/stm32f4/test_board_regsim.c \
-		hal/stm32f4/clock.c hal/stm32f4/iwdg.c -lcmocka
-TEST_PROGS += build/test/tests/hal/stm32f4/test_board_regsim
+	$(CC) $(REGSIM_CFLAGS) -Itests/support/regsim/f4 -Dmain=board_main -c $< -o $@
+build/test/tests/hal/stm32f4/test_board: tests/hal/stm32f4/test_board.c build/test/regsim/hal/stm32f4/board.o
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $@ $^ -lcmocka
+TEST_PROGS += build/test/tests/hal/stm32f4/test_board
+TEST_PROGS += $(foreach m,$(REGSIM_F4_MODULES),build/test/tests/hal/stm32f4/test_$(m))
 
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
 # answer SQ_ENODEV without touching one)

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
-# Input map (issue 11): signal descriptors, E2E P02, counter check, unit
-# conversion; cmocka, both numeric builds, ASan+UBSan.
+# Input map (issue 11): E2E P02, counter check, unit conversion (the
+# signal descriptors: mk/protocol.mk, test_can_signal); cmocka, both
+# numeric builds, ASan+UBSan.
 #   build/<v>/tests/firmware/monitor/test_input_conv
 INPUTMAP_TEST_VARIANTS := test test-fixed
 define inputmap_test_rules

@@ -47,3 +47,10 @@ build/$(1)/tests/firmware/monitor/test_model_adapter: build/$(1)/app/tests/firmw
 endef
 $(foreach v,$(MODEL_TEST_VARIANTS),$(eval $(call model_adapter_test_rules,$(v))))
 TEST_PROGS += $(foreach v,$(MODEL_TEST_VARIANTS),build/$(v)/tests/firmware/monitor/test_model_adapter)
+
+# sq_mathf against the host's double libm in ulp; the float build only (the
+# fixed build has no float functions)
+build/test/tests/firmware/model/test_sq_mathf: build/test/app/tests/firmware/model/test_sq_mathf.o build/test/libfirmware.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
+TEST_PROGS += build/test/tests/firmware/model/test_sq_mathf

@@ -75,3 +75,13 @@ endef
 $(foreach v,$(MONITOR_TEST_VARIANTS),$(eval $(call input_verdict_rules,$(v))))
 TEST_PROGS += $(foreach v,$(MONITOR_TEST_VARIANTS),build/$(v)/tests/firmware/monitor/test_input_rx_verdict build/$(v)/tests/firmware/protocol/test_e2e_p02 \
 	build/$(v)/tests/firmware/model/test_squeal_sigma_criterion)
+
+# The input map's and corners' meaning (calib_map.c), both builds:
+#   build/<v>/tests/firmware/monitor/test_calib_map
+define calib_map_test_rules
+build/$(1)/tests/firmware/monitor/test_calib_map: build/$(1)/app/tests/firmware/monitor/test_calib_map.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
+	@mkdir -p $$(@D)
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
+endef
+$(foreach v,$(MONITOR_TEST_VARIANTS),$(eval $(call calib_map_test_rules,$(v))))
+TEST_PROGS += $(foreach v,$(MONITOR_TEST_VARIANTS),build/$(v)/tests/firmware/monitor/test_calib_map)

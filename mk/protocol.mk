@@ -2,6 +2,9 @@
 # firmware/protocol tests (the protocol sources themselves are compiled into
 # libfirmware.a by the top-level Makefile):
 #   build/test/tests/firmware/protocol/test_squeal_msgs     cmocka, ASan+UBSan
+#   build/<v>/tests/firmware/protocol/test_crc8_p01  CRC-8 P01 and SAE J1850, both builds
+#   build/<v>/tests/firmware/protocol/test_e2e_p01   E2E P01 1A protect/check, both builds
+#   build/<v>/tests/firmware/protocol/test_can_signal DBC bit layouts, both builds
 #   build/test/tests/firmware/protocol/emit_frames   packs+protects frames, prints the
 #                                           C descriptor table (host helper)
 #   tests/firmware/protocol/check_squeal_msgs_dbc.py        C defines/descriptors == DBC
@@ -12,9 +15,29 @@
 PROTOCOL_TEST_BIN := build/test/tests/firmware/protocol/test_squeal_msgs
 PROTOCOL_EMIT := build/test/tests/firmware/protocol/emit_frames
 
-$(PROTOCOL_TEST_BIN): build/test/app/tests/firmware/protocol/test_squeal_msgs.o build/test/app/tests/support/test_contract.o build/test/libfirmware.a
+$(PROTOCOL_TEST_BIN): build/test/app/tests/firmware/protocol/test_squeal_msgs.o build/test/app/tests/support/p01_frames.o \
+		build/test/app/tests/support/test_contract.o build/test/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
+
+# CRC-8 P01 and E2E P01 on their own, both numeric builds (the P01 fixtures
+# and the bitwise reference CRC: tests/support/p01_frames.c)
+PROTOCOL_P01_TESTS := tests/firmware/protocol/test_crc8_p01 tests/firmware/protocol/test_e2e_p01
+define protocol_p01_rules
+build/$(1)/$(2): build/$(1)/app/$(2).o build/$(1)/app/tests/support/p01_frames.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
+	@mkdir -p $$(@D)
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka
+endef
+$(foreach v,test test-fixed,$(foreach t,$(PROTOCOL_P01_TESTS),$(eval $(call protocol_p01_rules,$(v),$(t)))))
+TEST_PROGS += $(foreach v,test test-fixed,$(foreach t,$(PROTOCOL_P01_TESTS),build/$(v)/$(t)))
+
+define protocol_signal_rules
+build/$(1)/tests/firmware/protocol/test_can_signal: build/$(1)/app/tests/firmware/protocol/test_can_signal.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a
+	@mkdir -p $$(@D)
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka
+endef
+$(foreach v,test test-fixed,$(eval $(call protocol_signal_rules,$(v))))
+TEST_PROGS += $(foreach v,test test-fixed,build/$(v)/tests/firmware/protocol/test_can_signal)
 
 $(PROTOCOL_EMIT): build/test/app/tests/firmware/protocol/emit_frames.o build/test/libfirmware.a
 	@mkdir -p $(@D)

@@ -1,16 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * STM32F405 clock start-up (hal/stm32f4/clock.c) and watchdog
- * (hal/stm32f4/iwdg.c) on the host, their registers in plain arrays
- * (tests/support/regsim/f4/chip.h). The "hardware" answers each bounded wait
+ * STM32F405 clock start-up (hal/stm32f4/clock.c) on the host, its
+ * registers in plain arrays (tests/support/regsim/f4/chip.h). The "hardware" answers each bounded wait
  * the way RM0090 says: HSERDY once HSEON is set and a crystal is fitted,
  * PLLRDY after PLLON, SWS following SW, and TIM11 capturing every IC1PSC-th
  * edge of HSE / RTCPRE on the HSI-clocked counter, only when the driver has
  * routed HSE_RTC to TI1 (TIM11_OR) and enabled the channel. Expected values
  * come from RM0090's formulas (f_VCO = f_HSE / M * N, SYSCLK = f_VCO / P,
- * USB = f_VCO / Q; IWDG timeout = 4 * 2^PR * (RLR + 1) / f_LSI).
- * Issue 14: crystal measured before the switch, M = 4, CSS, BOR level,
- * IWDG reload for the fastest LSI, DBGMCU freeze.
+ * USB = f_VCO / Q). Crystal measured before the switch, M = 4, CSS, BOR
+ * level. The watchdog: test_iwdg.c.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -23,10 +21,9 @@
 #include "chip.h"
 #include "sq_status.h"
 #include "stm32_board.h"
-#include "stm32_fault.h"
 #include "stm32_time.h"
 
-uint32_t regsim_rcc[64], regsim_pwr[4], regsim_flash[8], regsim_tim11[32], regsim_iwdg[4], regsim_dbgmcu[4];
+uint32_t regsim_rcc[64], regsim_pwr[4], regsim_flash[8], regsim_tim11[32];
 
 static bool crystal_fitted;
 static uint32_t crystal_hz;
@@ -36,12 +33,6 @@ static uint64_t capture_num; /* HSI ticks * crystal_hz since the first edge */
 void stm32_time_early_init(uint32_t core_hz)
 {
 	(void)core_hz;
-}
-
-bool stm32_fault_record_take(stm32_fault_record_t *out)
-{
-	(void)out;
-	return false;
 }
 
 /* TIM11 CH1 sees HSE / RTCPRE; IC1PSC captures every 1, 2, 4 or 8 edges. */
@@ -82,8 +73,6 @@ static int setup(void **state)
 	memset(regsim_pwr, 0, sizeof(regsim_pwr));
 	memset(regsim_flash, 0, sizeof(regsim_flash));
 	memset(regsim_tim11, 0, sizeof(regsim_tim11));
-	memset(regsim_iwdg, 0, sizeof(regsim_iwdg));
-	memset(regsim_dbgmcu, 0, sizeof(regsim_dbgmcu));
 	crystal_fitted = true;
 	crystal_hz = 8000000U;
 	tim11_edges = true;
@@ -186,43 +175,6 @@ static void test_bor_level(void **state)
 	assert_int_equal(chip_bor_level(), 3U);
 }
 
-#define IWDG_PR  regsim_iwdg[1]
-#define IWDG_RLR regsim_iwdg[2]
-#define LSI_FASTEST_HZ 47000U /* STM32F405 datasheet, LSI max */
-#define LSI_SLOWEST_HZ 17000U
-
-static void test_iwdg_fastest_lsi_and_debug_freeze(void **state)
-{
-	static const uint32_t timeouts_ms[] = { 1U, 50U, 100U, 1000U, 5000U, 20000U };
-	uint32_t i;
-
-	(void)state;
-	assert_false(stm32_watchdog_running());
-	for (i = 0; i < sizeof(timeouts_ms) / sizeof(timeouts_ms[0]); i++) {
-		uint32_t div;
-		uint64_t ticks;
-
-		assert_int_equal(hal_watchdog_start(timeouts_ms[i]), SQ_OK);
-		div = 4U << IWDG_PR;
-		ticks = (uint64_t)div * (IWDG_RLR + 1U);
-		/* never early at the fastest LSI: ticks / 47 kHz >= timeout */
-		assert_true(ticks * 1000U >= (uint64_t)timeouts_ms[i] * LSI_FASTEST_HZ);
-		/* and not more than one count late there */
-		assert_true((ticks - div) * 1000U < (uint64_t)timeouts_ms[i] * LSI_FASTEST_HZ);
-		/* the finest prescaler whose 12-bit reload reaches it */
-		if (IWDG_PR > 0U) {
-			assert_true((uint64_t)timeouts_ms[i] * LSI_FASTEST_HZ > (uint64_t)(div / 2U) * 4096U * 1000U);
-		}
-	}
-	assert_true((regsim_dbgmcu[2] & (1U << 12)) != 0U); /* DBG_IWDG_STOP */
-	assert_int_equal(regsim_iwdg[0], 0xAAAAU);            /* last key: reload */
-	assert_true(stm32_watchdog_running());
-	/* 30 s cannot be reached at 47 kHz (4096 * 256 / 47 kHz = 22.3 s) */
-	assert_int_equal(hal_watchdog_start(30000U), SQ_EINVAL);
-	assert_int_equal(hal_watchdog_start(0U), SQ_EINVAL);
-	(void)LSI_SLOWEST_HZ;
-}
-
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -232,7 +184,6 @@ int main(void)
 		cmocka_unit_test_setup(test_no_crystal, setup),
 		cmocka_unit_test_setup(test_no_capture_edges_is_no_switch, setup),
 		cmocka_unit_test_setup(test_bor_level, setup),
-		cmocka_unit_test_setup(test_iwdg_fastest_lsi_and_debug_freeze, setup),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
