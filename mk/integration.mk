@@ -23,7 +23,7 @@ tests/host-sim/test_cmd_plant_log.py: build/test/squeal-sim
 TEST_PROGS += tests/host-sim/test_cmd_plant_log.py
 
 # plant -> ecu -> candump on vcan0 in the QEMU guest, checked on the host
-# (tests/system/integration/check_vcan.py): about 60-90 s with the guest's boot.
+# (tests/support/check_vcan.py): about 60-90 s with the guest's boot.
 tests/system/integration/run-vcan.sh: build/host/squeal-sim
 TEST_PROGS += tests/system/integration/run-vcan.sh
 

@@ -13,7 +13,7 @@ FL):
   - "used to be accepted by the parser": the speed's max below its min: now
     refused by calib-check, ecu, plant and classify with exit 1 and the one
     line FILE:LINE: reason at the max line.
-Also: the fixture layouts of tests/inputmap check ok with their counts,
+Also: the fixture layouts of tests/firmware/monitor/fixtures check ok with their counts,
 --help exits 0, a missing file is one line and exit 1, bad usage exit 2.
 Prints "RESULT: N passed, M failed". Run from the repository root.
 """

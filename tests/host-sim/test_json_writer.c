@@ -3,7 +3,7 @@
  * host-sim/json_writer.c: exact output for hand-derived cases (escapes,
  * UTF-8 kept or replaced, fixed-point numbers, commas), and every misuse
  * sets the sticky error instead of writing broken JSON. (Whole documents are
- * parsed by Python's json module in tests/replay/test_summary_json.py.)
+ * parsed by Python's json module in tests/host-sim/test_replay_summary.py.)
  */
 #include <setjmp.h>
 #include <math.h>

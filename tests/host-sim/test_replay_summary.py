@@ -9,7 +9,7 @@
     occupancy (float and fixed builds) equal a recomputation here from the ECU's output frames,
     decoded with canmatrix from squeal.dbc (values compared as exact
     decimals); for four-corner streams that today's firmware cannot send,
-    through tests/replay/summary_driver (the summary module alone);
+    through tests/host-sim/summary_driver (the summary module alone);
   - the counts equal the text summary's; --no-output writes no frames and
     the same JSON; '--summary-json -' needs --no-output;
   - segments: a log whose clock jumps back 2.8 s (a logger restart) and

@@ -11,7 +11,7 @@
 References, independent of the firmware: the class from the model reference,
 the margin from numerical first-order propagation
 (tests/support/reference/sigma_margin_ref.py); the frames decoded with canmatrix from
-firmware/protocol/squeal.dbc; the input log written by tests/replay/
+firmware/protocol/squeal.dbc; the input log written by tests/host-sim/
 gen_inputs.py (E2E computed there).
 """
 

@@ -2,7 +2,7 @@
 # Guest half of tests/system/integration/run-vcan.sh (POSIX sh; run by
 # tests/system/vcan/guest.sh in the QEMU guest, or natively where vcan0 exists).
 # It only runs the programs and captures the bus; every judgement is made on
-# the host by tests/system/integration/check_vcan.py from what lands in $SQ_OUT.
+# the host by tests/support/check_vcan.py from what lands in $SQ_OUT.
 #
 #   stop.cap       candump -L of plant (stop scenario) -> ecu
 #   replay-in.log  plant --log of the stop scenario (virtual time)
