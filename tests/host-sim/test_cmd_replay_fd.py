@@ -26,10 +26,12 @@ import re
 import subprocess
 import sys
 import tempfile
+# tests/ of this checkout, and the folders its helper modules live in
+_TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
+sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, "tests", "reference"))
+ROOT = os.path.dirname(_TESTS)
 import squeal_reference as ref  # noqa: E402
 
 SIMS = [os.path.join(ROOT, "build", v, "squeal-sim") for v in ("test", "test-fixed")]

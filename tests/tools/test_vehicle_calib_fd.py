@@ -31,16 +31,18 @@ import re
 import sys
 import tempfile
 import zlib
+# tests/ of this checkout, and the folders its helper modules live in
+_TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
+sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
+ROOT = os.path.dirname(_TESTS)
 sys.path.insert(0, os.path.join(HERE, "fixtures"))
-sys.path.insert(0, os.path.join(ROOT, "tests", "vehicle"))
 import fd_layouts  # noqa: E402
 import vehref  # noqa: E402
 import gen_drive  # noqa: E402
 import e2e_harness  # noqa: E402
-import test_vehicle_crosscheck as xcheck  # noqa: E402
+import test_vehicle_calib_crosscheck as xcheck  # noqa: E402
 
 FD_LENGTHS = (0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64)
 FRAMES = 3000

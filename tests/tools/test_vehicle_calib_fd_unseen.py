@@ -24,11 +24,13 @@ import os
 import subprocess
 import sys
 import tempfile
+# tests/ of this checkout, and the folders its helper modules live in
+_TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
+sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
+ROOT = os.path.dirname(_TESTS)
 sys.path.insert(0, os.path.join(HERE, "fixtures"))
-sys.path.insert(0, os.path.join(ROOT, "tests", "vehicle"))
 import fd_layouts  # noqa: E402
 import vehref  # noqa: E402
 import gen_drive  # noqa: E402
