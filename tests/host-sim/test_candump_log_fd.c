@@ -7,7 +7,9 @@
  * writer against can-utils itself: a log of FD frames of every length and
  * flag written here is read by log2long (id, length, bytes), log2asc (BRS,
  * ESI, DLC code) and, through log2asc | asc2log, rewritten by can-utils'
- * own writer, which must give the same frame text byte for byte. Expected
+ * own writer, which must give the same frame text byte for byte but the
+ * FDF bit (ASC has none; the live candump check with FDF is
+ * tests/system/run-fd-log.sh). Expected
  * values are written by hand from the grammar or come from can-utils; runs
  * under ASan+UBSan.
  */
@@ -177,7 +179,9 @@ static void test_fd_frames_longer_than_the_hal_frame_are_refused(void **state)
 	assert_int_equal(candump_to_hal(&f, &h), SQ_ENOTSUP);
 }
 
-/* HAL -> log: the digit is BRS|ESI without FDF (Debian 12's candump). */
+/* HAL -> log: the digit is FDF|BRS|ESI, as Debian 12's candump writes a
+ * received FD frame (measured on vcan0 in the QEMU guest: kernel 6.1.0-57
+ * sets FDF). */
 static void test_hal_frames_are_written_as_debian_12_candump_writes_them(void **state)
 {
 	static const struct {
@@ -186,12 +190,12 @@ static void test_hal_frames_are_written_as_debian_12_candump_writes_them(void **
 		uint8_t dlc;
 		const char *line;
 	} cases[] = {
-		{ HAL_CAN_FLAG_FDF, 0xA0U, 2U, "(1700000000.000001) can0 0A0##0A0A1" },
-		{ HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_BRS, 0xA0U, 2U, "(1700000000.000001) can0 0A0##1A0A1" },
+		{ HAL_CAN_FLAG_FDF, 0xA0U, 2U, "(1700000000.000001) can0 0A0##4A0A1" },
+		{ HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_BRS, 0xA0U, 2U, "(1700000000.000001) can0 0A0##5A0A1" },
 		{ HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_ESI | HAL_CAN_FLAG_EXT, 0x18DAF110U, 0U,
-		  "(1700000000.000001) can0 18DAF110##2" },
+		  "(1700000000.000001) can0 18DAF110##6" },
 		{ HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_BRS | HAL_CAN_FLAG_ESI, 0x7FFU, 1U,
-		  "(1700000000.000001) can0 7FF##3A0" },
+		  "(1700000000.000001) can0 7FF##7A0" },
 		{ 0U, 0x110U, 2U, "(1700000000.000001) can0 110#A0A1" },
 		{ HAL_CAN_FLAG_RTR, 0x110U, 4U, "(1700000000.000001) can0 110#R4" },
 		{ HAL_CAN_FLAG_ERR, 0x4U, 1U, "(1700000000.000001) can0 20000004#A0" },
@@ -240,6 +244,11 @@ typedef struct {
 #define N_REF (N_LENS * 4U * 2U)
 
 static ref_frame_t refs[N_REF];
+
+static int hex_digit(char c)
+{
+	return ((c >= '0') && (c <= '9')) ? (c - '0') : ((c >= 'A') && (c <= 'F')) ? (c - 'A' + 10) : -1;
+}
 
 static bool have_tool(const char *name)
 {
@@ -431,7 +440,21 @@ static void test_log2asc_and_asc2log_agree_with_our_fd_lines(void **state)
 		}
 		assert_true(n < N_REF);
 		assert_int_equal(sscanf(buf, "%63s %31s %200s", ts, dev, frame), 3);
-		assert_string_equal(frame, refs[n].text);
+		/* asc2log knows no FDF (the ASC format has BRS and ESI only): it
+		 * writes the older convention, digit & 3; all else is the same */
+		{
+			char *hh = strstr(frame, "##");
+			char want[sizeof(refs[0].text)];
+			char *wh;
+
+			(void)snprintf(want, sizeof(want), "%s", refs[n].text);
+			wh = strstr(want, "##");
+			assert_non_null(hh);
+			assert_non_null(wh);
+			assert_int_equal(wh[2], "4567"[hex_digit(hh[2]) & 3]);
+			wh[2] = hh[2];
+			assert_string_equal(frame, want);
+		}
 		n++;
 	}
 	assert_int_equal(pclose(p), 0);
