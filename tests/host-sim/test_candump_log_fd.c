@@ -318,6 +318,21 @@ static void write_ref_log(char *path, size_t size)
 	assert_int_equal(fclose(fp), 0);
 }
 
+/* s: " XX XX ..." of a can-utils rendering, the frame's data */
+static void expect_bytes(const char *s, const ref_frame_t *r)
+{
+	unsigned i;
+
+	for (i = 0U; i < r->len; i++) {
+		unsigned b;
+		int m = 0;
+
+		assert_int_equal(sscanf(s, " %2x%n", &b, &m), 1);
+		assert_int_equal(b, r->data[i]);
+		s += m;
+	}
+}
+
 /* log2long: "(TS)  can0  ID  [LL]  XX XX ..." (then ASCII for <= 8 bytes) */
 static void test_log2long_reads_our_fd_lines(void **state)
 {
@@ -341,9 +356,7 @@ static void test_log2long_reads_our_fd_lines(void **state)
 		char dev[32];
 		char id[16];
 		unsigned len = 999U;
-		unsigned i;
 		int used = 0;
-		char *s;
 
 		assert_true(n < N_REF);
 		assert_int_equal(sscanf(buf, "%63s %31s %15s [%u]%n", ts, dev, id, &len, &used), 4);
@@ -351,15 +364,7 @@ static void test_log2long_reads_our_fd_lines(void **state)
 		assert_int_equal(strtoul(id, NULL, 16), r->id);
 		assert_int_equal(strlen(id), r->ext ? 8U : 3U);
 		assert_int_equal(len, r->len);
-		s = buf + used;
-		for (i = 0U; i < r->len; i++) {
-			unsigned b;
-			int m = 0;
-
-			assert_int_equal(sscanf(s, " %2x%n", &b, &m), 1);
-			assert_int_equal(b, r->data[i]);
-			s += m;
-		}
+		expect_bytes(buf + used, r);
 		n++;
 	}
 	assert_int_equal(pclose(p), 0);
@@ -399,9 +404,7 @@ static void test_log2asc_and_asc2log_agree_with_our_fd_lines(void **state)
 		unsigned esi;
 		unsigned dlc;
 		unsigned len;
-		unsigned i;
 		int used = 0;
-		char *s;
 
 		assert_true(n < N_REF);
 		assert_int_equal(sscanf(buf, "%lf CANFD %u %7s %15s %u %u %x %u%n", &t, &ch, dir, id,
@@ -412,15 +415,7 @@ static void test_log2asc_and_asc2log_agree_with_our_fd_lines(void **state)
 		assert_int_equal(esi, (r->flags >> 1) & 1U);
 		assert_int_equal(hal_can_dlc_to_len((uint8_t)dlc), r->len);
 		assert_int_equal(len, r->len);
-		s = buf + used;
-		for (i = 0U; i < r->len; i++) {
-			unsigned b;
-			int m = 0;
-
-			assert_int_equal(sscanf(s, " %2x%n", &b, &m), 1);
-			assert_int_equal(b, r->data[i]);
-			s += m;
-		}
+		expect_bytes(buf + used, r);
 		n++;
 	}
 	assert_int_equal(pclose(p), 0);

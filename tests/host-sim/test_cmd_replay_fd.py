@@ -30,7 +30,9 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "tests", "reference"))
+sys.path.insert(0, os.path.join(ROOT, "tests", "protocol"))
 import squeal_reference as ref  # noqa: E402
+from dbc_common import Results  # noqa: E402
 
 SIMS = [os.path.join(ROOT, "build", v, "squeal-sim") for v in ("test", "test-fixed")]
 CAL = os.path.join(HERE, "fd_p05.cal")
@@ -39,20 +41,6 @@ DATA_ID_WS, DATA_ID_P = 0x10A0, 0x10B0
 R_PAD_M, R_WHEEL_M = 0.12, 0.30      # the calibration's defaults
 AREA_M2 = 2290e-6
 FORCE_N = 9000.0
-
-
-class Results:
-    def __init__(self):
-        self.passed = 0
-        self.failed = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-            print("PASS: " + what)
-        else:
-            self.failed += 1
-            print("FAIL: " + what)
 
 
 def crc16_ccitt_false(data):
