@@ -56,7 +56,8 @@ void candump_from_hal(const hal_can_frame_t *hf, uint64_t t_ns, const char *ifac
 		f->ext = true;
 	} else if ((hf->flags & HAL_CAN_FLAG_FDF) != 0U) {
 		f->kind = CANDUMP_KIND_FD;
-		f->fd_flags = (uint8_t)((((hf->flags & HAL_CAN_FLAG_BRS) != 0U) ? CANDUMP_FD_BRS : 0U) |
+		f->fd_flags = (uint8_t)(CANDUMP_FD_FDF |
+					(((hf->flags & HAL_CAN_FLAG_BRS) != 0U) ? CANDUMP_FD_BRS : 0U) |
 					(((hf->flags & HAL_CAN_FLAG_ESI) != 0U) ? CANDUMP_FD_ESI : 0U));
 	} else if ((hf->flags & HAL_CAN_FLAG_RTR) != 0U) {
 		f->kind = CANDUMP_KIND_RTR;

@@ -4,11 +4,13 @@
  * and a HAL frame (hal.h), used by replay, decode and the plant's log.
  *
  * CAN FD flags: a `##F` line is an FD frame whatever its flags digit says
- * (can-utils before 2023 write BRS 1 | ESI 2 only, newer ones add FDF 4), so
- * the HAL frame gets HAL_CAN_FLAG_FDF always, plus BRS and ESI from the digit.
- * Written back, the digit is BRS | ESI without FDF: what candump of Debian
- * 12's can-utils (2020.11, kernel 6.1) writes for a received FD frame, so a
- * log we write and one candump wrote of the same traffic are the same bytes.
+ * (can-utils on kernels before CAN XL write BRS 1 | ESI 2 only, on newer
+ * ones the kernel adds FDF 4), so the HAL frame gets HAL_CAN_FLAG_FDF
+ * always, plus BRS and ESI from the digit. Written back, the digit is
+ * FDF | BRS | ESI: what candump of Debian 12 (can-utils 2020.11, kernel
+ * 6.1.0-57) writes for a received FD frame, measured on vcan0 in the QEMU
+ * guest (tests/system/run-fd-log.sh), so a log we write and one candump
+ * wrote of the same traffic are the same bytes.
  */
 #ifndef CANDUMP_HAL_H
 #define CANDUMP_HAL_H
@@ -20,7 +22,7 @@
 
 #define CANDUMP_FD_BRS 0x1U /* CANFD_BRS of linux/can.h */
 #define CANDUMP_FD_ESI 0x2U /* CANFD_ESI                */
-#define CANDUMP_FD_FDF 0x4U /* CANFD_FDF (newer kernels set it on every FD frame) */
+#define CANDUMP_FD_FDF 0x4U /* CANFD_FDF (set by newer kernels on every FD frame) */
 
 /*
  * The HAL frame of a log frame (timestamp_us 0: the caller sets when it

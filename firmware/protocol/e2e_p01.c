@@ -148,6 +148,22 @@ e2e_p01_status_t e2e_rx_record(e2e_p01_rx_t *rx, e2e_p01_status_t st)
 	return st;
 }
 
+e2e_p01_status_t e2e_rx_frame(e2e_p01_rx_t *rx, uint16_t modulus, bool present, bool crc_ok,
+			      uint8_t counter, uint8_t max_delta_counter)
+{
+	e2e_p01_status_t st;
+
+	e2e_rx_cycle(rx, modulus);
+	if (!present) {
+		st = E2E_P01_STATUS_NONEWDATA;
+	} else if (!crc_ok) {
+		st = E2E_P01_STATUS_WRONGCRC;
+	} else {
+		st = e2e_rx_sequence(rx, counter, modulus, max_delta_counter);
+	}
+	return e2e_rx_record(rx, st);
+}
+
 /* P01's sequence check: counter 15 is never sent by a P01 sender. */
 static e2e_p01_status_t check_sequence(const e2e_p01_config_t *cfg,
 				       e2e_p01_rx_t *rx, uint8_t counter)

@@ -133,6 +133,11 @@ void e2e_rx_cycle(e2e_p01_rx_t *rx, uint16_t modulus);
 e2e_p01_status_t e2e_rx_sequence(e2e_p01_rx_t *rx, uint8_t counter,
 				 uint16_t modulus, uint8_t max_delta_counter);
 e2e_p01_status_t e2e_rx_record(e2e_p01_rx_t *rx, e2e_p01_status_t st);
+/* One whole receive cycle of a profile whose every counter value is valid
+ * (P02, P05): the cycle, then NONEWDATA (no frame), WRONGCRC (!crc_ok: CRC
+ * or length wrong) or the sequence status of counter; recorded, returned. */
+e2e_p01_status_t e2e_rx_frame(e2e_p01_rx_t *rx, uint16_t modulus, bool present, bool crc_ok,
+			      uint8_t counter, uint8_t max_delta_counter);
 
 /* True exactly for OK, OKSOMELOST and INITIAL: the frame may be used. */
 bool e2e_p01_status_usable(e2e_p01_status_t status);

@@ -65,18 +65,11 @@ int e2e_p02_protect(const e2e_p02_config_t *cfg, e2e_p01_tx_t *tx,
 e2e_p01_status_t e2e_p02_check(const e2e_p02_config_t *cfg, e2e_p01_rx_t *rx,
 			       const uint8_t *data, uint8_t len)
 {
-	e2e_p01_status_t st;
+	bool ok;
 
 	/* a bad configuration is the caller's error, never a wrong CRC */
 	HAL_REQUIRE((rx != NULL) && (e2e_p02_config_check(cfg) == SQ_OK));
-	e2e_rx_cycle(rx, (uint8_t)E2E_P02_MODULUS);
-	if (data == NULL) {
-		st = E2E_P01_STATUS_NONEWDATA;
-	} else if ((len != cfg->data_len) || (data[0] != e2e_p02_crc(cfg, data, len))) {
-		st = E2E_P01_STATUS_WRONGCRC;
-	} else {
-		st = e2e_rx_sequence(rx, (uint8_t)(data[1] & COUNTER_MASK),
-				     (uint8_t)E2E_P02_MODULUS, cfg->max_delta_counter);
-	}
-	return e2e_rx_record(rx, st);
+	ok = (data != NULL) && (len == cfg->data_len) && (data[0] == e2e_p02_crc(cfg, data, len));
+	return e2e_rx_frame(rx, (uint16_t)E2E_P02_MODULUS, data != NULL, ok,
+			    ok ? (uint8_t)(data[1] & COUNTER_MASK) : 0U, cfg->max_delta_counter);
 }

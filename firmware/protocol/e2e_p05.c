@@ -58,18 +58,12 @@ int e2e_p05_protect(const e2e_p05_config_t *cfg, e2e_p01_tx_t *tx,
 e2e_p01_status_t e2e_p05_check(const e2e_p05_config_t *cfg, e2e_p01_rx_t *rx,
 			       const uint8_t *data, uint8_t len)
 {
-	e2e_p01_status_t st;
+	bool ok;
 
 	/* a bad configuration is the caller's error, never a wrong CRC */
 	HAL_REQUIRE((rx != NULL) && (e2e_p05_config_check(cfg) == SQ_OK));
-	e2e_rx_cycle(rx, (uint16_t)E2E_P05_MODULUS);
-	if (data == NULL) {
-		st = E2E_P01_STATUS_NONEWDATA;
-	} else if ((len != cfg->data_len) || (stored_crc(cfg, data) != e2e_p05_crc(cfg, data, len))) {
-		st = E2E_P01_STATUS_WRONGCRC;
-	} else {
-		st = e2e_rx_sequence(rx, data[cfg->offset_byte + 2U], (uint16_t)E2E_P05_MODULUS,
-				     cfg->max_delta_counter);
-	}
-	return e2e_rx_record(rx, st);
+	ok = (data != NULL) && (len == cfg->data_len) &&
+	     (stored_crc(cfg, data) == e2e_p05_crc(cfg, data, len));
+	return e2e_rx_frame(rx, (uint16_t)E2E_P05_MODULUS, data != NULL, ok,
+			    ok ? data[cfg->offset_byte + 2U] : 0U, cfg->max_delta_counter);
 }

@@ -257,7 +257,7 @@ def test_rejections_and_time(r, tmp, db):
         out.append("%s can0 %03X#%s" % (ts, fid, fd.hex().upper()))
         t += 10000
     out += [
-        "(0000000104.000000) can0 110##4%s" % enc.frame(sid, 500).hex().upper(),    # FD
+        "(0000000104.000000) can0 110##4%s" % enc.frame(sid, 500).hex().upper(),    # FD: wrong format
         "(0000000104.000000) can0 45110#81:00:12345678#00112233",                 # XL
         "(0000000104.001000) can0 110#R4",                                         # remote
         "(0000000104.002000) can0 00000110#%s" % enc.frame(sid, 500).hex().upper(),  # ext
@@ -275,13 +275,19 @@ def test_rejections_and_time(r, tmp, db):
         ("e2e_wrong_crc", expect["crc"], "DiscSpeed"),
         ("e2e_wrong_sequence", expect["seq"], "DiscSpeed"),
         ("repeated", expect["rep"], "DiscSpeed"),
-        ("bad_dlc", expect["dlc"], "PadForce"),
         ("implausible", expect["impl"], "PadForce"),
     ]
     for key, n, who in checks:
         r.check(summary_value(err, key) == str(n), "%s = %d (%s)" % (key, n, summary_value(err, key)))
         r.check(summary_detail(err, key, who) == n, "%s counted for %s" % (key, who))
-    r.check(summary_value(err, "unsupported_fd_xl") == "2", "FD and XL frames unsupported")
+    # the FD frame on DiscSpeed's (classic) identifier: a wrong-format frame,
+    # the input stage's dlc verdict; only the XL frame is unsupported
+    r.check(summary_value(err, "bad_dlc") == str(expect["dlc"] + 1) and
+            summary_detail(err, "bad_dlc", "PadForce") == expect["dlc"] and
+            summary_detail(err, "bad_dlc", "DiscSpeed") == 1,
+            "bad_dlc = %d (PadForce %d, DiscSpeed 1: the FD frame) (%s)" %
+            (expect["dlc"] + 1, expect["dlc"], summary_value(err, "bad_dlc")))
+    r.check(summary_value(err, "unsupported_fd_xl") == "1", "XL frame unsupported, FD frame given")
     # hal.h's filters match the identifier and its kind (standard or
     # extended), data and remote frames alike: the remote frame on
     # DiscSpeed's id passes the controller and the firmware rejects it
