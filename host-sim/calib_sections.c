@@ -17,9 +17,11 @@
 #include <strings.h>
 
 #include "calib_map.h"
-#include "calib_text.h"
+#include "num_text.h"
 #include "input_conv.h"
+#include "sq_contract.h"
 #include "sq_status.h"
+#include "squeal_model.h"
 
 static const char *const pos_names[CALIB_MAX_CORNERS] = { "FL", "FR", "RL", "RR" };
 static const char *const prot_names[CALIB_PROT_COUNT] = { "none", "p01", "p02", "counter" };
@@ -32,6 +34,473 @@ void calib_sections_init(calib_sections_t *s)
 bool calib_sections_open(const calib_sections_t *s)
 {
 	return s->count > 0U;
+}
+
+/* ---- the flat key_table ---------------------------------------------------------- */
+
+typedef enum {
+	KIND_Q,       /* value * scale, rounded to nearest (Q-format fields)   */
+	KIND_SCALED,  /* value * scale must be a whole number                  */
+	KIND_INT,     /* integer, decimal or 0x hex                            */
+	KIND_HEX,     /* integer, written as hex (CAN identifiers)             */
+	KIND_CRITERION, /* exact | cubic                                       */
+	KIND_BOOL     /* 0/1, no/yes, false/true, off/on                       */
+} key_kind_t;
+
+typedef struct {
+	const char *key;
+	uint16_t offset;
+	uint8_t size;      /* bytes in calib_t: 1, 2, 4 */
+	uint8_t is_signed; /* the int32_t Q-format model fields */
+	key_kind_t kind;
+	double scale;      /* stored = physical * scale (KIND_Q, KIND_SCALED) */
+	const char *unit;
+	const char *what;
+} key_desc_t;
+
+/* The valid range of each key is calib.c's (calib_field_range()). */
+#define K(key, field, kind, scale, unit, what) \
+	{ key, (uint16_t)offsetof(calib_t, field), \
+	  (uint8_t)sizeof(((calib_t *)0)->field), \
+	  (uint8_t)(((kind) == KIND_Q) && (sizeof(((calib_t *)0)->field) == 4U)), \
+	  kind, scale, unit, what }
+
+#define Q16 65536.0
+#define Q12 4096.0
+#define Q15 32768.0
+#define Q24 16777216.0
+#define Q30 1073741824.0
+
+static const key_desc_t key_table[] = {
+	K("mass_kg", mass_q16, KIND_Q, Q16, "kg",
+	  "moving mass of pad and caliper m"),
+	K("omega0_radps", omega0_q12, KIND_Q, Q12, "rad/s",
+	  "natural angular frequency w0"),
+	K("damping", damping_q30, KIND_Q, Q30, "-",
+	  "damping ratio D"),
+	K("mu_inf", mu_inf_q30, KIND_Q, Q30, "-",
+	  "friction coefficient at high sliding speed"),
+	K("delta_mu", delta_mu_q30, KIND_Q, Q30, "-",
+	  "mu_0 - mu_inf (mu_inf + delta_mu >= 0)"),
+	K("slope_spm", slope_q24, KIND_Q, Q24, "s/m",
+	  "friction slope a"),
+	K("criterion", criterion, KIND_CRITERION, 1.0, "",
+	  "exact (I1(s)/s, default) or cubic (the paper's)"),
+	K("pad_radius_m", pad_radius_um, KIND_SCALED, 1e6, "m",
+	  "effective pad radius r_p (resolution 1 um)"),
+	K("wheel_radius_m", wheel_radius_um, KIND_SCALED, 1e6, "m",
+	  "rolling radius r_w (resolution 1 um)"),
+	K("bitrate_kbps", bitrate_kbps, KIND_INT, 1.0, "kbit/s",
+	  "CAN bit rate (the ECU's controller; SocketCAN ignores it)"),
+	K("disc_speed_id", disc_speed_id, KIND_HEX, 1.0, "",
+	  "DiscSpeed identifier (11 bit)"),
+	K("pad_force_id", pad_force_id, KIND_HEX, 1.0, "",
+	  "PadForce identifier"),
+	K("status_id", status_id, KIND_HEX, 1.0, "",
+	  "SquealStatus identifier"),
+	K("detail_id", detail_id, KIND_HEX, 1.0, "",
+	  "SquealDetail identifier"),
+	K("diag_id", diag_id, KIND_HEX, 1.0, "",
+	  "SquealDiag identifier"),
+	K("detail2_id", detail2_id, KIND_HEX, 1.0, "",
+	  "SquealDetail2 identifier"),
+	K("e2e_check_inputs", e2e_check_inputs, KIND_BOOL, 1.0, "",
+	  "check the inputs' E2E CRC and counter (yes/no)"),
+	K("e2e_max_delta_counter", e2e_max_delta_counter, KIND_INT, 1.0, "",
+	  "E2E P01 MaxDeltaCounterInit"),
+	K("input_period_ms", input_period_ms, KIND_INT, 1.0, "ms",
+	  "expected input period"),
+	K("status_period_ms", status_period_ms, KIND_INT, 1.0, "ms",
+	  "SquealStatus period"),
+	K("detail_period_ms", detail_period_ms, KIND_INT, 1.0, "ms",
+	  "SquealDetail/SquealDetail2 period"),
+	K("diag_period_ms", diag_period_ms, KIND_INT, 1.0, "ms",
+	  "SquealDiag period"),
+	K("stale_cycles", stale_cycles, KIND_INT, 1.0, "periods",
+	  "missed input periods before an input is stale"),
+	K("speed_max_radps", speed_max_raw, KIND_SCALED, 100.0, "rad/s",
+	  "plausible disc speed maximum (resolution 0.01 rad/s)"),
+	K("speed_step_max_radps", speed_step_max_raw, KIND_SCALED, 100.0,
+	  "rad/s", "plausible disc speed change between frames"),
+	K("force_max_n", force_max_raw, KIND_SCALED, 2.0, "N",
+	  "plausible pad force maximum (resolution 0.5 N)"),
+	K("force_step_max_n", force_step_max_raw, KIND_SCALED, 2.0, "N",
+	  "plausible pad force change between frames"),
+	K("lowpass_alpha", lowpass_alpha_q15, KIND_Q, Q15, "-",
+	  "first-order input filter weight of a new value (1 = off)"),
+	K("v0_min_mps", v0_min_umps, KIND_SCALED, 1e6, "m/s",
+	  "not sliding below this disc surface speed (resolution 1 um/s)"),
+	K("force_min_n", force_min_mn, KIND_SCALED, 1e3, "N",
+	  "not sliding below this pad force (resolution 1 mN)"),
+	K("debounce_count", debounce_count, KIND_INT, 1.0, "",
+	  "agreeing classifications before a state change"),
+	K("hyst_lnq", hyst_lnq_micro, KIND_SCALED, 1e6, "-",
+	  "Hopf hysteresis band in |ln 2Q| (resolution 1e-6)"),
+	K("hyst_rho", hyst_rho_ppm, KIND_SCALED, 1e6, "-",
+	  "stable-border hysteresis band in |rho - 1| (resolution 1e-6)"),
+	K("rho_warn", rho_warn_ppm, KIND_SCALED, 1e6, "-",
+	  "bistable with basin ratio below this -> warning level 2"),
+	K("watchdog_ms", watchdog_ms, KIND_INT, 1.0, "ms",
+	  "watchdog timeout"),
+	K("input_bus", input_bus, KIND_INT, 1.0, "",
+	  "bus the inputs come from (0 = CAN1 / --iface, 1 = CAN2 / --out-iface)"),
+	K("output_bus", output_bus, KIND_INT, 1.0, "",
+	  "bus the Squeal* frames go out on"),
+	K("input_listen_only", input_listen_only, KIND_BOOL, 1.0, "",
+	  "input bus listen-only: nothing sent on it, no ACK (yes/no)"),
+	/* uncertainty (issue 12, docs/uncertainty.md): 0 <= sd <= |param|
+	 * (mu_inf's <= 1.5), |corr| <= 1; all 0: crisp classes as before */
+	K("mass_kg_sd", sd.mass_sd_q16, KIND_Q, Q16, "kg",
+	  "standard deviation of mass_kg"),
+	K("omega0_radps_sd", sd.omega0_sd_q12, KIND_Q, Q12, "rad/s",
+	  "standard deviation of omega0_radps"),
+	K("damping_sd", sd.damping_sd_q30, KIND_Q, Q30, "-",
+	  "standard deviation of damping"),
+	K("mu_inf_sd", sd.mu_inf_sd_q30, KIND_Q, Q30, "-",
+	  "standard deviation of mu_inf (carried; enters no border)"),
+	K("delta_mu_sd", sd.delta_mu_sd_q30, KIND_Q, Q30, "-",
+	  "standard deviation of delta_mu"),
+	K("slope_spm_sd", sd.slope_sd_q24, KIND_Q, Q24, "s/m",
+	  "standard deviation of slope_spm"),
+	K("slope_delta_mu_corr", sd.slope_delta_mu_corr_q30, KIND_Q, Q30, "-",
+	  "correlation of slope_spm and delta_mu estimates"),
+	K("uncertain_k_sigma", uncertain_k_q16, KIND_Q, Q16, "sigma",
+	  "within k sigma of a border: the more severe neighbouring level (0 = off)"),
+};
+
+#define KEY_COUNT (sizeof(key_table) / sizeof(key_table[0]))
+_Static_assert(KEY_COUNT == CALIB_KEY_COUNT, "one key per calib_t field");
+
+size_t calib_key_count(void)
+{
+	return KEY_COUNT;
+}
+
+const char *calib_key_name(size_t i)
+{
+	return (i < KEY_COUNT) ? key_table[i].key : NULL;
+}
+
+static int64_t field_get(const calib_t *cal, const key_desc_t *k)
+{
+	const uint8_t *p = (const uint8_t *)cal + k->offset;
+	uint8_t u8;
+	uint16_t u16;
+	uint32_t u32;
+	int32_t i32;
+
+	switch (k->size) {
+	case 1U:
+		memcpy(&u8, p, 1U);
+		return u8;
+	case 2U:
+		memcpy(&u16, p, 2U);
+		return u16;
+	default:
+		if (k->is_signed != 0U) {
+			memcpy(&i32, p, 4U);
+			return i32;
+		}
+		memcpy(&u32, p, 4U);
+		return u32;
+	}
+}
+
+/* v is within the key's range, which fits the field */
+static void field_set(calib_t *cal, const key_desc_t *k, int64_t v)
+{
+	uint8_t *p = (uint8_t *)cal + k->offset;
+	uint8_t u8 = (uint8_t)v;
+	uint16_t u16 = (uint16_t)v;
+	uint32_t u32 = (uint32_t)v;
+	int32_t i32 = (int32_t)v;
+
+	switch (k->size) {
+	case 1U:
+		memcpy(p, &u8, 1U);
+		break;
+	case 2U:
+		memcpy(p, &u16, 2U);
+		break;
+	default:
+		if (k->is_signed != 0U) {
+			memcpy(p, &i32, 4U);
+		} else {
+			memcpy(p, &u32, 4U);
+		}
+		break;
+	}
+}
+
+static double physical(const key_desc_t *k, int64_t raw)
+{
+	return (double)raw / k->scale;
+}
+
+/* Does text parse back (as convert_value does) to exactly raw? */
+static bool reads_back(const key_desc_t *k, const char *text, int64_t raw)
+{
+	const double v = strtod(text, NULL) * k->scale;
+	const int64_t iv = (int64_t)llround(v);
+
+	if (iv != raw) {
+		return false;
+	}
+	return (k->kind != KIND_SCALED) ||
+	       (fabs(v - (double)iv) <= 1e-6 * fmax(1.0, fabs(v)));
+}
+
+/* Shortest %g text of a stored value that parses back to the same value. */
+static void format_value(const key_desc_t *k, int64_t raw, char *buf, size_t len)
+{
+	int prec;
+
+	switch (k->kind) {
+	case KIND_CRITERION:
+		snprintf(buf, len, "%s", raw == (int64_t)SQUEAL_CRITERION_CUBIC ?
+			 "cubic" : "exact");
+		return;
+	case KIND_BOOL:
+		snprintf(buf, len, "%s", raw != 0 ? "yes" : "no");
+		return;
+	case KIND_HEX:
+		snprintf(buf, len, "0x%03llX", (unsigned long long)raw);
+		return;
+	case KIND_INT:
+		snprintf(buf, len, "%lld", (long long)raw);
+		return;
+	default:
+		break;
+	}
+	/* plain decimals first (5000, 0.023), exponent form for the tiny */
+	for (prec = 0; prec <= 9; prec++) {
+		snprintf(buf, len, "%.*f", prec, physical(k, raw));
+		if (reads_back(k, buf, raw)) {
+			return;
+		}
+	}
+	for (prec = 1; prec <= 17; prec++) {
+		snprintf(buf, len, "%.*g", prec, physical(k, raw));
+		if (reads_back(k, buf, raw)) {
+			return;
+		}
+	}
+	snprintf(buf, len, "%.17g", physical(k, raw));
+}
+
+void calib_errf(char *err, size_t errlen, const char *fmt, ...)
+{
+	va_list ap;
+
+	if ((err == NULL) || (errlen == 0U)) {
+		return;
+	}
+	va_start(ap, fmt);
+	vsnprintf(err, errlen, fmt, ap);
+	va_end(ap);
+}
+
+static const key_desc_t *find_key(const char *name)
+{
+	size_t i;
+
+	for (i = 0; i < KEY_COUNT; i++) {
+		if (strcmp(key_table[i].key, name) == 0) {
+			return &key_table[i];
+		}
+	}
+	return NULL;
+}
+
+/* The stored range of a key: calib.c's table is the one source. A key
+ * whose field calib.c does not know is a programming error: empty range. */
+static void key_range(const key_desc_t *k, int64_t *min, int64_t *max)
+{
+	if (calib_field_range(k->offset, min, max) != SQ_OK) {
+		*min = 1;
+		*max = 0;
+	}
+}
+
+static void range_text(const key_desc_t *k, char *buf, size_t len)
+{
+	char lo[40];
+	char hi[40];
+
+	int64_t min;
+	int64_t max;
+
+	key_range(k, &min, &max);
+	format_value(k, min, lo, sizeof(lo));
+	format_value(k, max, hi, sizeof(hi));
+	snprintf(buf, len, "%s .. %s%s%s", lo, hi,
+		 (k->unit[0] != '\0' && strcmp(k->unit, "-") != 0) ? " " : "",
+		 strcmp(k->unit, "-") != 0 ? k->unit : "");
+}
+
+/* Convert one value; 0 or -1 with err written (without the FILE:LINE). */
+static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
+			 char *err, size_t errlen)
+{
+	char range[100];
+	double v;
+	int64_t iv;
+	int64_t min;
+	int64_t max;
+
+	key_range(k, &min, &max);
+	range_text(k, range, sizeof(range));
+	switch (k->kind) {
+	case KIND_CRITERION:
+		if (strcmp(text, "exact") == 0) {
+			*raw = (int64_t)SQUEAL_CRITERION_EXACT;
+		} else if (strcmp(text, "cubic") == 0) {
+			*raw = (int64_t)SQUEAL_CRITERION_CUBIC;
+		} else {
+			calib_errf(err, errlen, "%s must be 'exact' or 'cubic', got '%s'",
+				k->key, text);
+			return -1;
+		}
+		return 0;
+	case KIND_BOOL:
+		if ((strcmp(text, "1") == 0) || (strcasecmp(text, "yes") == 0) ||
+		    (strcasecmp(text, "true") == 0) || (strcasecmp(text, "on") == 0)) {
+			*raw = 1;
+		} else if ((strcmp(text, "0") == 0) || (strcasecmp(text, "no") == 0) ||
+			   (strcasecmp(text, "false") == 0) ||
+			   (strcasecmp(text, "off") == 0)) {
+			*raw = 0;
+		} else {
+			calib_errf(err, errlen, "%s must be yes/no (or 1/0), got '%s'",
+				k->key, text);
+			return -1;
+		}
+		return 0;
+	case KIND_INT:
+	case KIND_HEX:
+		if (!num_text_int(text, &iv)) {
+			calib_errf(err, errlen, "%s needs an integer (decimal or 0x hex), got '%s'",
+				k->key, text);
+			return -1;
+		}
+		break;
+	default:
+		if (!num_text_real(text, &v)) {
+			calib_errf(err, errlen, "%s needs a number, got '%s'", k->key, text);
+			return -1;
+		}
+		v *= k->scale;
+		if (!(v >= (double)min - 0.5) || !(v <= (double)max + 0.5)) {
+			calib_errf(err, errlen, "%s = %s is out of range (%s)", k->key,
+				text, range);
+			return -1;
+		}
+		iv = (int64_t)llround(v);
+		if ((k->kind == KIND_SCALED) &&
+		    (fabs(v - (double)iv) > 1e-6 * fmax(1.0, fabs(v)))) {
+			char step[40];
+
+			format_value(k, 1, step, sizeof(step));
+			calib_errf(err, errlen, "%s = %s is not a whole multiple of its resolution %s%s%s",
+				k->key, text, step,
+				strcmp(k->unit, "-") != 0 ? " " : "",
+				strcmp(k->unit, "-") != 0 ? k->unit : "");
+			return -1;
+		}
+		break;
+	}
+	if ((iv < min) || (iv > max)) {
+		calib_errf(err, errlen, "%s = %s is out of range (%s)", k->key, text, range);
+		return -1;
+	}
+	*raw = iv;
+	return 0;
+}
+
+/* A flat key by name (the corner sections read theirs with the flat rules). */
+static int flat_key_set(const char *key, const char *value, calib_t *cal, char *msg,
+			size_t msglen)
+{
+	const key_desc_t *k = find_key(key);
+	int64_t raw = 0;
+
+	if (k == NULL) {
+		calib_errf(msg, msglen, "unknown key '%s'", key);
+		return -1;
+	}
+	if (convert_value(k, value, &raw, msg, msglen) != 0) {
+		return -1;
+	}
+	field_set(cal, k, raw);
+	return 0;
+}
+
+static void flat_key_format(const char *key, const calib_t *cal, char *buf, size_t len)
+{
+	const key_desc_t *k = find_key(key);
+
+	if (k == NULL) {
+		snprintf(buf, len, "?");
+		return;
+	}
+	format_value(k, field_get(cal, k), buf, len);
+}
+
+/* The flat key_table that describe the legacy DiscSpeed/PadForce inputs: a file
+ * with [corner] sections configures its inputs there instead. */
+static bool legacy_input_key(const char *key)
+{
+	static const char *const legacy[] = { "disc_speed_id", "pad_force_id",
+		"e2e_check_inputs", "input_period_ms", "speed_max_radps",
+		"speed_step_max_radps", "force_max_n", "force_step_max_n" };
+	size_t i;
+
+	for (i = 0; i < sizeof(legacy) / sizeof(legacy[0]); i++) {
+		if (strcmp(key, legacy[i]) == 0) {
+			return true;
+		}
+	}
+	return false;
+}
+int calib_key_find(const char *name)
+{
+	const key_desc_t *k = find_key(name);
+
+	return (k != NULL) ? (int)(k - key_table) : -1;
+}
+
+bool calib_key_legacy_input(size_t i)
+{
+	return (i < KEY_COUNT) && legacy_input_key(key_table[i].key);
+}
+
+int calib_key_set(size_t i, const char *value, calib_t *cal, char *msg, size_t msglen)
+{
+	int64_t raw = 0;
+
+	HAL_REQUIRE(i < KEY_COUNT);
+	if (convert_value(&key_table[i], value, &raw, msg, msglen) != 0) {
+		return -1;
+	}
+	field_set(cal, &key_table[i], raw);
+	return 0;
+}
+
+void calib_key_format(size_t i, const calib_t *cal, char *buf, size_t len)
+{
+	HAL_REQUIRE(i < KEY_COUNT);
+	format_value(&key_table[i], field_get(cal, &key_table[i]), buf, len);
+}
+
+void calib_key_comment(size_t i, const calib_t *def, char *buf, size_t len)
+{
+	char dval[48];
+	char range[100];
+
+	HAL_REQUIRE(i < KEY_COUNT);
+	format_value(&key_table[i], field_get(def, &key_table[i]), dval, sizeof(dval));
+	range_text(&key_table[i], range, sizeof(range));
+	snprintf(buf, len, "%s; default %s; range %s", key_table[i].what, dval, range);
 }
 
 /* ---- numbers ---------------------------------------------------------------- */
@@ -211,7 +680,7 @@ static bool valid_name(const char *n)
 	return true;
 }
 
-static int pos_of(const char *n)
+int calib_corner_pos(const char *n)
 {
 	int i;
 
@@ -220,35 +689,6 @@ static int pos_of(const char *n)
 			return i;
 		}
 	}
-	return -1;
-}
-
-int calib_text_brake(const calib_t *cal, const char *pos_name, calib_corner_t *brake,
-		     char *msg, size_t msglen)
-{
-	int pos;
-	uint32_t k;
-
-	if (pos_name == NULL) {
-		calib_corner_defaults(cal, 0U, brake);
-		return 0;
-	}
-	pos = pos_of(pos_name);
-	if (pos < 0) {
-		calib_text_errf(msg, msglen, "unknown corner '%s' (FL, FR, RL or RR)", pos_name);
-		return -1;
-	}
-	for (k = 0U; k < cal->n_corners; k++) {
-		if (cal->corners[k].pos == (uint8_t)pos) {
-			*brake = cal->corners[k];
-			return 0;
-		}
-	}
-	if ((cal->n_corners == 0U) && (pos == 0)) {
-		calib_corner_defaults(cal, 0U, brake); /* the legacy form's one corner */
-		return 0;
-	}
-	calib_text_errf(msg, msglen, "the calibration has no [corner %s]", pos_names[pos]);
 	return -1;
 }
 
@@ -264,29 +704,29 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 
 	n = sscanf(text, "[%15s %63[^] \t] ]%7s", kind, name, extra);
 	if ((n != 2) || (text[strlen(text) - 1U] != ']')) {
-		calib_text_errf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
+		calib_errf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
 		return -1;
 	}
 	if ((strcmp(kind, "input") != 0) && (strcmp(kind, "corner") != 0)) {
-		calib_text_errf(msg, msglen, "unknown section '%s' (input or corner)", kind);
+		calib_errf(msg, msglen, "unknown section '%s' (input or corner)", kind);
 		return -1;
 	}
 	if (s->count >= CALIB_SECTIONS_MAX) {
-		calib_text_errf(msg, msglen, "too many sections");
+		calib_errf(msg, msglen, "too many sections");
 		return -1;
 	}
 	if (strcmp(kind, "input") == 0) {
 		if (!valid_name(name)) {
-			calib_text_errf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
+			calib_errf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
 			return -1;
 		}
 		if (s->inputs >= CALIB_MAX_INPUTS) {
-			calib_text_errf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
+			calib_errf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
 			return -1;
 		}
 	} else {
-		if (pos_of(name) < 0) {
-			calib_text_errf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
+		if (calib_corner_pos(name) < 0) {
+			calib_errf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
 			return -1;
 		}
 	}
@@ -295,7 +735,7 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 
 		if ((o->is_corner == (strcmp(kind, "corner") == 0)) &&
 		    (strcasecmp(o->name, name) == 0)) {
-			calib_text_errf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
+			calib_errf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
 			return -1;
 		}
 	}
@@ -303,7 +743,7 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 	memset(sec, 0, sizeof(*sec));
 	sec->is_corner = strcmp(kind, "corner") == 0;
 	{
-		/* valid_name()/pos_of() bounded the length */
+		/* valid_name()/calib_corner_pos() bounded the length */
 		const size_t len = strnlen(name, sizeof(sec->name) - 1U);
 
 		memcpy(sec->name, name, len);
@@ -327,14 +767,14 @@ int calib_sections_key(calib_sections_t *s, const char *key, const char *value,
 
 	for (i = 0; i < sec->nkv; i++) {
 		if (strcmp(sec->kv[i].key, key) == 0) {
-			calib_text_errf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
+			calib_errf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
 			     sec->kv[i].line);
 			return -1;
 		}
 	}
 	if ((sec->nkv >= CALIB_SECTION_KEYS_MAX) || (strlen(key) >= sizeof(sec->kv[0].key)) ||
 	    (strlen(value) >= sizeof(sec->kv[0].value))) {
-		calib_text_errf(msg, msglen, "key or value too long, or too many keys in the section");
+		calib_errf(msg, msglen, "key or value too long, or too many keys in the section");
 		return -1;
 	}
 	snprintf(sec->kv[sec->nkv].key, sizeof(sec->kv[0].key), "%s", key);
@@ -376,7 +816,7 @@ static int kv_err(const ctx_t *c, const calib_section_kv_t *kv, const char *fmt,
 	va_start(ap, fmt);
 	vsnprintf(m, sizeof(m), fmt, ap);
 	va_end(ap);
-	calib_text_errf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
+	calib_errf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
 	     c->sec->is_corner ? "corner" : "input", c->sec->name, m);
 	return -1;
 }
@@ -393,7 +833,7 @@ static int get_int(const ctx_t *c, const char *key, int64_t lo, int64_t hi, bool
 	if (kv == NULL) {
 		return required ? kv_err(c, NULL, "%s is required", key) : 0;
 	}
-	if (!calib_text_parse_int(kv->value, out)) {
+	if (!num_text_int(kv->value, out)) {
 		return kv_err(c, kv, "%s needs an integer (decimal or 0x hex), got '%s'", key,
 			      kv->value);
 	}
@@ -510,7 +950,7 @@ static int get_dil(const ctx_t *c, calib_input_t *in)
 	for (tok = strtok_r(buf, " \t,", &save); tok != NULL; tok = strtok_r(NULL, " \t,", &save)) {
 		int64_t v;
 
-		if ((n >= CALIB_DATA_ID_LIST_LEN) || !calib_text_parse_int(tok, &v) || (v < 0) || (v > 255)) {
+		if ((n >= CALIB_DATA_ID_LIST_LEN) || !num_text_int(tok, &v) || (v < 0) || (v > 255)) {
 			return kv_err(c, kv, "data_id_list: 16 byte values 0..255 separated by blanks or commas");
 		}
 		in->data_id_list[n] = (uint8_t)v;
@@ -543,6 +983,12 @@ static const char *const corner_keys[] = {
 	"pad_radius_m", "wheel_radius_m", "status_id", "detail_id", "detail2_id", "diag_id",
 	SD_KEYS, NULL
 };
+
+/* The flat keys a corner section may give (its own brake, geometry and
+ * output identifiers), each read and written with the flat key's rules. */
+static const char *const corner_flat_keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
+	"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
+	"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 
 static int unknown_keys(const ctx_t *c, const char *const *known)
 {
@@ -882,15 +1328,12 @@ static int ppm_key(const ctx_t *c, const char *key, uint32_t max_ppm, uint32_t *
 static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t *flat,
 			calib_corner_t *corner)
 {
-	static const char *const flat_keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
-		"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
-		"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 	const calib_section_kv_t *kv;
 	calib_t tmp = *flat;
 	char msg[200];
 	size_t i;
 	int idx;
-	const int pos = pos_of(c->sec->name);
+	const int pos = calib_corner_pos(c->sec->name);
 
 	if (unknown_keys(c, corner_keys) != 0) {
 		return -1;
@@ -899,9 +1342,9 @@ static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t
 	 * keys, each read with the flat key's own rules */
 	calib_corner_defaults(flat, (uint8_t)pos, corner);
 	calib_flat_from_corner(corner, &tmp);
-	for (i = 0; flat_keys[i] != NULL; i++) {
-		kv = kv_of(c->sec, flat_keys[i]);
-		if ((kv != NULL) && (calib_text_flat_key(kv->key, kv->value, &tmp, msg, sizeof(msg)) != 0)) {
+	for (i = 0; corner_flat_keys[i] != NULL; i++) {
+		kv = kv_of(c->sec, corner_flat_keys[i]);
+		if ((kv != NULL) && (flat_key_set(kv->key, kv->value, &tmp, msg, sizeof(msg)) != 0)) {
 			return kv_err(c, kv, "%s", msg);
 		}
 	}
@@ -995,12 +1438,12 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 	}
 	out.n_inputs = (uint8_t)ni;
 	if (s->corners == 0U) {
-		calib_text_errf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
+		calib_errf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
 		     s->sec[0].line);
 		return -1;
 	}
 	if (legacy_line != 0U) {
-		calib_text_errf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
+		calib_errf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
 		     file, legacy_line, legacy_key);
 		return -1;
 	}
@@ -1150,9 +1593,6 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 	for (i = 0; i < cal->n_corners; i++) {
 		const calib_corner_t *c = &cal->corners[i];
 		calib_t tmp = *cal;
-		static const char *const keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
-			"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
-			"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 		size_t k;
 
 		calib_flat_from_corner(c, &tmp);
@@ -1170,12 +1610,17 @@ int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names
 			c->efficiency_ppm / 1000000U, c->efficiency_ppm % 1000000U,
 			c->axle_factor_ppm / 1000000U, c->axle_factor_ppm % 1000000U,
 			c->friction_faces);
-		for (k = 0; keys[k] != NULL; k++) {
+		for (k = 0; corner_flat_keys[k] != NULL; k++) {
 			char b[48];
 
-			calib_text_flat_format(keys[k], &tmp, b, sizeof(b));
-			fprintf(f, "%s = %s\n", keys[k], b);
+			flat_key_format(corner_flat_keys[k], &tmp, b, sizeof(b));
+			fprintf(f, "%s = %s\n", corner_flat_keys[k], b);
 		}
 	}
 	return ferror(f) ? SQ_EIO : SQ_OK;
+}
+
+const char *calib_corner_pos_name(unsigned int pos)
+{
+	return (pos < CALIB_MAX_CORNERS) ? pos_names[pos] : "?";
 }

@@ -1,15 +1,21 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * calib_sections: the `[input NAME]` and `[corner POS]` sections of a
- * calibration text file (the input map, /work/specs contract in
- * docs/calib-input-map.md), read by calib_text.c:
+ * calib_sections: what the keys of a calibration text file mean, below the
+ * file reading of calib_text.c (which calls this module; nothing here calls
+ * back up):
  *
- *   calib_sections_header()  a `[...]` line starts a section
+ *   calib_key_*()            the flat `key = value` keys, one table row per
+ *                            calib_t field: conversion, range, formatting
+ *   calib_sections_header()  a `[...]` line starts an `[input NAME]` or
+ *                            `[corner POS]` section (the input map,
+ *                            docs/calib-input-map.md)
  *   calib_sections_key()     a `key = value` line inside a section
  *   calib_sections_finish()  after the last line: defaults, names resolved,
  *                            every input and corner checked (calib_map.c),
  *                            cal->inputs / corners written
- * Every error is one line `FILE:LINE: message`; the whole file is refused.
+ *   calib_sections_write()   the sections of a calibration as text
+ * Messages come without FILE:LINE (calib_text adds the line it read), except
+ * calib_sections_finish's, which name the line of the key responsible.
  */
 #ifndef CALIB_SECTIONS_H
 #define CALIB_SECTIONS_H
@@ -58,6 +64,28 @@ typedef struct {
 	char signal[CALIB_MAX_INPUTS][CALIB_SIGNAL_NAME_LEN];
 	char input_iface[CALIB_IFACE_LEN];
 } calib_names_t;
+
+/* One line of error text into err (nothing when errlen is 0). */
+void calib_errf(char *err, size_t errlen, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+
+/* ---- the flat keys: index 0 .. CALIB_KEY_COUNT - 1 (one per calib_t field) ---- */
+#define CALIB_KEY_COUNT 46U
+size_t calib_key_count(void);
+const char *calib_key_name(size_t i);   /* NULL past the end */
+int calib_key_find(const char *name);   /* its index, or -1: no such key */
+/* a key of the legacy DiscSpeed/PadForce inputs (refused with [corner]s) */
+bool calib_key_legacy_input(size_t i);
+/* Convert value with key i's rules into cal: 0, or -1 with msg. */
+int calib_key_set(size_t i, const char *value, calib_t *cal, char *msg, size_t msglen);
+/* Key i's value in cal: the shortest text that reads back exactly. */
+void calib_key_format(size_t i, const calib_t *cal, char *buf, size_t len);
+/* "what it is; default X; range A .. B unit" (def: the defaults). */
+void calib_key_comment(size_t i, const calib_t *def, char *buf, size_t len);
+
+/* A corner position by name ("FL".."RR", any case): 0..3, or -1. */
+int calib_corner_pos(const char *name);
+const char *calib_corner_pos_name(unsigned int pos);
 
 /* `input_iface` values: 1..15 of A-Z a-z 0-9 _ . - */
 bool calib_iface_name_valid(const char *name);
