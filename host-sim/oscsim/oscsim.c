@@ -14,6 +14,12 @@
 #define DNAN ((double)NAN)
 #define DINF ((double)INFINITY)
 
+/* An enum's name from its table ("?" outside it). */
+static const char *name_of(const char *const *names, size_t n, unsigned int i)
+{
+	return (i < n) ? names[i] : "?";
+}
+
 int oscsim_params_check(const oscsim_params_t *p)
 {
 	if (p == NULL) {
@@ -676,6 +682,28 @@ static void cycle_clear(oscsim_cycle_t *out)
 	out->v_reach = DNAN;
 }
 
+/* The search's end: the cycle reaches the stick line (from r on). */
+static int cycle_at_stick(oscsim_cycle_t *out, double r, double v_reach)
+{
+	out->kind = OSCSIM_CYCLE_AT_STICK;
+	out->v_reach = v_reach;
+	out->r = r;
+	return SQ_OK;
+}
+
+/* The search's end: a closed sliding cycle, its shape from one revolution. */
+static int cycle_found(oscsim_cycle_t *out, double r, const revolution_t *rev)
+{
+	out->kind = OSCSIM_CYCLE_FOUND;
+	out->r = r;
+	out->u_min = rev->u_min;
+	out->v_max = rev->v_max;
+	out->v_min = rev->v_min;
+	out->period = rev->period;
+	out->v_reach = rev->v_max;
+	return SQ_OK;
+}
+
 /* Evaluate g(r) = B(r) - r (B the backward return map). */
 typedef struct {
 	const oscsim_slide_t *sl;
@@ -835,10 +863,7 @@ int oscsim_cycle_find(double damping, double ln_q, double s,
 		}
 	}
 	if (!hi_outside) {
-		out->kind = OSCSIM_CYCLE_AT_STICK;
-		out->v_reach = v_reach;
-		out->r = r_lo;
-		return SQ_OK;
+		return cycle_at_stick(out, r_lo, v_reach);
 	}
 	/* one more revolution on the cycle for its shape */
 	r = 0.5 * (r_lo + r_hi);
@@ -848,19 +873,9 @@ int oscsim_cycle_find(double damping, double ln_q, double s,
 	}
 	if (hit) {
 		/* the cycle grazes the stick line within the root tolerance */
-		out->kind = OSCSIM_CYCLE_AT_STICK;
-		out->v_reach = v_reach;
-		out->r = r_lo;
-		return SQ_OK;
+		return cycle_at_stick(out, r_lo, v_reach);
 	}
-	out->kind = OSCSIM_CYCLE_FOUND;
-	out->r = r;
-	out->u_min = rev.u_min;
-	out->v_max = rev.v_max;
-	out->v_min = rev.v_min;
-	out->period = rev.period;
-	out->v_reach = rev.v_max;
-	return SQ_OK;
+	return cycle_found(out, r, &rev);
 }
 
 int oscsim_cycle_backward_plain(double damping, double ln_q, double s,
@@ -899,20 +914,10 @@ int oscsim_cycle_backward_plain(double damping, double ln_q, double s,
 			return rc;
 		}
 		if (rev.hit_stick) {
-			out->kind = OSCSIM_CYCLE_AT_STICK;
-			out->v_reach = rev.v_max;
-			out->r = r;
-			return SQ_OK;
+			return cycle_at_stick(out, r, rev.v_max);
 		}
 		if (fabs(rev.r_next - r) <= opts->r_tol * r) {
-			out->kind = OSCSIM_CYCLE_FOUND;
-			out->r = rev.r_next;
-			out->u_min = rev.u_min;
-			out->v_max = rev.v_max;
-			out->v_min = rev.v_min;
-			out->period = rev.period;
-			out->v_reach = rev.v_max;
-			return SQ_OK;
+			return cycle_found(out, rev.r_next, &rev);
 		}
 		r = rev.r_next;
 	}
@@ -1038,16 +1043,9 @@ int oscsim_linear_growth(double damping, double ln_q, double *ratio)
 
 const char *oscsim_mode_name(oscsim_mode_t mode)
 {
-	switch (mode) {
-	case OSCSIM_SLIP_POS:
-		return "slip";
-	case OSCSIM_SLIP_NEG:
-		return "slip_neg";
-	case OSCSIM_STICK:
-		return "stick";
-	default:
-		return "?";
-	}
+	static const char *const names[] = { "slip", "slip_neg", "stick" };
+
+	return name_of(names, sizeof(names) / sizeof(names[0]), (unsigned int)mode);
 }
 
 double oscsim_steady_x(const oscsim_params_t *p)
@@ -1318,18 +1316,9 @@ int oscsim_simulate(const oscsim_params_t *p, double x0_m, double xd0_mps,
 
 const char *oscsim_truth_name(oscsim_truth_class_t c)
 {
-	switch (c) {
-	case OSCSIM_TRUTH_STABLE:
-		return "stable";
-	case OSCSIM_TRUTH_BISTABLE:
-		return "bistable";
-	case OSCSIM_TRUTH_UNSTABLE:
-		return "unstable";
-	case OSCSIM_TRUTH_NOT_SLIDING:
-		return "not_sliding";
-	default:
-		return "?";
-	}
+	static const char *const names[] = { "stable", "bistable", "unstable", "not_sliding" };
+
+	return name_of(names, sizeof(names) / sizeof(names[0]), (unsigned int)c);
 }
 
 int oscsim_truth(const oscsim_params_t *p, const oscsim_cycle_opts_t *opts,
@@ -1393,16 +1382,9 @@ int oscsim_truth(const oscsim_params_t *p, const oscsim_cycle_opts_t *opts,
 
 const char *oscsim_basin_name(oscsim_basin_outcome_t o)
 {
-	switch (o) {
-	case OSCSIM_BASIN_DECAYED:
-		return "decayed";
-	case OSCSIM_BASIN_CAPTURED:
-		return "captured";
-	case OSCSIM_BASIN_UNDECIDED:
-		return "undecided";
-	default:
-		return "?";
-	}
+	static const char *const names[] = { "undecided", "decayed", "captured" };
+
+	return name_of(names, sizeof(names) / sizeof(names[0]), (unsigned int)o);
 }
 
 int oscsim_basin(const oscsim_params_t *p, double r_cycle, double factor,
