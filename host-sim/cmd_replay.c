@@ -1266,12 +1266,7 @@ static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
 		json_begin_object(w);
 		json_kv_string(w, "corner", pos_names[c->corner.pos & 3U]);
 		json_kv_string(w, "final_state", rs_state_name(msg_squeal_state_slot(c->state)));
-		json_key(w, "state_time_s");
-		json_begin_object(w);
-		for (s = 0U; s < N_STATES; s++) {
-			json_kv_seconds(w, rs_state_name(s), cs->state_us[s]);
-		}
-		json_end_object(w);
+		rs_json_state_times(w, "state_time_s", cs->state_us);
 		json_key(w, "state_share");
 		json_begin_object(w);
 		for (s = 0U; s < N_STATES; s++) {
@@ -1375,12 +1370,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_end_object(w);
 	json_buses(w, r, a);
 	json_kv_u64(w, "gaps_skipped", r->gaps);
-	json_key(w, "state_time_s");
-	json_begin_object(w);
-	for (i = 0U; i < N_STATES; i++) {
-		json_kv_seconds(w, rs_state_name(i), r->state_us[i]);
-	}
-	json_end_object(w);
+	rs_json_state_times(w, "state_time_s", r->state_us);
 	json_key(w, "warnings_raised");
 	json_begin_object(w);
 	for (i = 1U; i < N_LEVELS; i++) {
