@@ -18,6 +18,7 @@
 
 #include "calib_map.h"
 #include "num_text.h"
+#include "text_errf.h"
 #include "input_conv.h"
 #include "sq_contract.h"
 #include "sq_status.h"
@@ -288,18 +289,6 @@ static void format_value(const key_desc_t *k, int64_t raw, char *buf, size_t len
 	snprintf(buf, len, "%.17g", physical(k, raw));
 }
 
-void calib_errf(char *err, size_t errlen, const char *fmt, ...)
-{
-	va_list ap;
-
-	if ((err == NULL) || (errlen == 0U)) {
-		return;
-	}
-	va_start(ap, fmt);
-	vsnprintf(err, errlen, fmt, ap);
-	va_end(ap);
-}
-
 static const key_desc_t *find_key(const char *name)
 {
 	size_t i;
@@ -357,7 +346,7 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 		} else if (strcmp(text, "cubic") == 0) {
 			*raw = (int64_t)SQUEAL_CRITERION_CUBIC;
 		} else {
-			calib_errf(err, errlen, "%s must be 'exact' or 'cubic', got '%s'",
+			text_errf(err, errlen, "%s must be 'exact' or 'cubic', got '%s'",
 				k->key, text);
 			return -1;
 		}
@@ -371,7 +360,7 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 			   (strcasecmp(text, "off") == 0)) {
 			*raw = 0;
 		} else {
-			calib_errf(err, errlen, "%s must be yes/no (or 1/0), got '%s'",
+			text_errf(err, errlen, "%s must be yes/no (or 1/0), got '%s'",
 				k->key, text);
 			return -1;
 		}
@@ -379,19 +368,19 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 	case KIND_INT:
 	case KIND_HEX:
 		if (!num_text_int(text, &iv)) {
-			calib_errf(err, errlen, "%s needs an integer (decimal or 0x hex), got '%s'",
+			text_errf(err, errlen, "%s needs an integer (decimal or 0x hex), got '%s'",
 				k->key, text);
 			return -1;
 		}
 		break;
 	default:
 		if (!num_text_real(text, &v)) {
-			calib_errf(err, errlen, "%s needs a number, got '%s'", k->key, text);
+			text_errf(err, errlen, "%s needs a number, got '%s'", k->key, text);
 			return -1;
 		}
 		v *= k->scale;
 		if (!(v >= (double)min - 0.5) || !(v <= (double)max + 0.5)) {
-			calib_errf(err, errlen, "%s = %s is out of range (%s)", k->key,
+			text_errf(err, errlen, "%s = %s is out of range (%s)", k->key,
 				text, range);
 			return -1;
 		}
@@ -401,7 +390,7 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 			char step[40];
 
 			format_value(k, 1, step, sizeof(step));
-			calib_errf(err, errlen, "%s = %s is not a whole multiple of its resolution %s%s%s",
+			text_errf(err, errlen, "%s = %s is not a whole multiple of its resolution %s%s%s",
 				k->key, text, step,
 				strcmp(k->unit, "-") != 0 ? " " : "",
 				strcmp(k->unit, "-") != 0 ? k->unit : "");
@@ -410,7 +399,7 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 		break;
 	}
 	if ((iv < min) || (iv > max)) {
-		calib_errf(err, errlen, "%s = %s is out of range (%s)", k->key, text, range);
+		text_errf(err, errlen, "%s = %s is out of range (%s)", k->key, text, range);
 		return -1;
 	}
 	*raw = iv;
@@ -425,7 +414,7 @@ static int flat_key_set(const char *key, const char *value, calib_t *cal, char *
 	int64_t raw = 0;
 
 	if (k == NULL) {
-		calib_errf(msg, msglen, "unknown key '%s'", key);
+		text_errf(msg, msglen, "unknown key '%s'", key);
 		return -1;
 	}
 	if (convert_value(k, value, &raw, msg, msglen) != 0) {
@@ -704,29 +693,29 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 
 	n = sscanf(text, "[%15s %63[^] \t] ]%7s", kind, name, extra);
 	if ((n != 2) || (text[strlen(text) - 1U] != ']')) {
-		calib_errf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
+		text_errf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
 		return -1;
 	}
 	if ((strcmp(kind, "input") != 0) && (strcmp(kind, "corner") != 0)) {
-		calib_errf(msg, msglen, "unknown section '%s' (input or corner)", kind);
+		text_errf(msg, msglen, "unknown section '%s' (input or corner)", kind);
 		return -1;
 	}
 	if (s->count >= CALIB_SECTIONS_MAX) {
-		calib_errf(msg, msglen, "too many sections");
+		text_errf(msg, msglen, "too many sections");
 		return -1;
 	}
 	if (strcmp(kind, "input") == 0) {
 		if (!valid_name(name)) {
-			calib_errf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
+			text_errf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
 			return -1;
 		}
 		if (s->inputs >= CALIB_MAX_INPUTS) {
-			calib_errf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
+			text_errf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
 			return -1;
 		}
 	} else {
 		if (calib_corner_pos(name) < 0) {
-			calib_errf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
+			text_errf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
 			return -1;
 		}
 	}
@@ -735,7 +724,7 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 
 		if ((o->is_corner == (strcmp(kind, "corner") == 0)) &&
 		    (strcasecmp(o->name, name) == 0)) {
-			calib_errf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
+			text_errf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
 			return -1;
 		}
 	}
@@ -767,14 +756,14 @@ int calib_sections_key(calib_sections_t *s, const char *key, const char *value,
 
 	for (i = 0; i < sec->nkv; i++) {
 		if (strcmp(sec->kv[i].key, key) == 0) {
-			calib_errf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
+			text_errf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
 			     sec->kv[i].line);
 			return -1;
 		}
 	}
 	if ((sec->nkv >= CALIB_SECTION_KEYS_MAX) || (strlen(key) >= sizeof(sec->kv[0].key)) ||
 	    (strlen(value) >= sizeof(sec->kv[0].value))) {
-		calib_errf(msg, msglen, "key or value too long, or too many keys in the section");
+		text_errf(msg, msglen, "key or value too long, or too many keys in the section");
 		return -1;
 	}
 	snprintf(sec->kv[sec->nkv].key, sizeof(sec->kv[0].key), "%s", key);
@@ -816,7 +805,7 @@ static int kv_err(const ctx_t *c, const calib_section_kv_t *kv, const char *fmt,
 	va_start(ap, fmt);
 	vsnprintf(m, sizeof(m), fmt, ap);
 	va_end(ap);
-	calib_errf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
+	text_errf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
 	     c->sec->is_corner ? "corner" : "input", c->sec->name, m);
 	return -1;
 }
@@ -1438,12 +1427,12 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 	}
 	out.n_inputs = (uint8_t)ni;
 	if (s->corners == 0U) {
-		calib_errf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
+		text_errf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
 		     s->sec[0].line);
 		return -1;
 	}
 	if (legacy_line != 0U) {
-		calib_errf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
+		text_errf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
 		     file, legacy_line, legacy_key);
 		return -1;
 	}

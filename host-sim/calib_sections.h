@@ -65,10 +65,6 @@ typedef struct {
 	char input_iface[CALIB_IFACE_LEN];
 } calib_names_t;
 
-/* One line of error text into err (nothing when errlen is 0). */
-void calib_errf(char *err, size_t errlen, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
 /* ---- the flat keys: index 0 .. CALIB_KEY_COUNT - 1 (one per calib_t field) ---- */
 #define CALIB_KEY_COUNT 46U
 size_t calib_key_count(void);

@@ -16,6 +16,7 @@
 
 #include "calib_map.h"
 #include "sq_status.h"
+#include "text_errf.h"
 
 #define LINE_MAX_LEN 512
 
@@ -41,7 +42,7 @@ int calib_text_brake(const calib_t *cal, const char *pos_name, calib_corner_t *b
 	}
 	pos = calib_corner_pos(pos_name);
 	if (pos < 0) {
-		calib_errf(msg, msglen, "unknown corner '%s' (FL, FR, RL or RR)", pos_name);
+		text_errf(msg, msglen, "unknown corner '%s' (FL, FR, RL or RR)", pos_name);
 		return -1;
 	}
 	for (k = 0U; k < cal->n_corners; k++) {
@@ -54,7 +55,7 @@ int calib_text_brake(const calib_t *cal, const char *pos_name, calib_corner_t *b
 		calib_corner_defaults(cal, 0U, brake); /* the legacy form's one corner */
 		return 0;
 	}
-	calib_errf(msg, msglen, "the calibration has no [corner %s]", calib_corner_pos_name((unsigned int)pos));
+	text_errf(msg, msglen, "the calibration has no [corner %s]", calib_corner_pos_name((unsigned int)pos));
 	return -1;
 }
 
@@ -95,7 +96,7 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 	char iface[CALIB_IFACE_LEN] = "";
 
 	if ((f == NULL) || (out == NULL)) {
-		calib_errf(err, errlen, "calib_text_parse: NULL argument");
+		text_errf(err, errlen, "calib_text_parse: NULL argument");
 		return SQ_EINVAL;
 	}
 	if (name == NULL) {
@@ -117,7 +118,7 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 
 		lineno++;
 		if ((strchr(line, '\n') == NULL) && !feof(f)) {
-			calib_errf(err, errlen, "%s:%u: line longer than %d characters",
+			text_errf(err, errlen, "%s:%u: line longer than %d characters",
 				name, lineno, LINE_MAX_LEN - 2);
 			return SQ_EBADMSG;
 		}
@@ -131,14 +132,14 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 		}
 		if (*key == '[') {
 			if (calib_sections_header(&sections, key, lineno, msg, sizeof(msg)) != 0) {
-				calib_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
+				text_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
 				return SQ_EBADMSG;
 			}
 			continue;
 		}
 		eq = strchr(key, '=');
 		if (eq == NULL) {
-			calib_errf(err, errlen, "%s:%u: expected 'key = value', got '%s'",
+			text_errf(err, errlen, "%s:%u: expected 'key = value', got '%s'",
 				name, lineno, key);
 			return SQ_EBADMSG;
 		}
@@ -146,17 +147,17 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 		value = trim(eq + 1);
 		key = trim(key);
 		if (*key == '\0') {
-			calib_errf(err, errlen, "%s:%u: missing key before '='", name, lineno);
+			text_errf(err, errlen, "%s:%u: missing key before '='", name, lineno);
 			return SQ_EBADMSG;
 		}
 		if (calib_sections_open(&sections)) {
 			/* a key of the current [input]/[corner] section */
 			if (*value == '\0') {
-				calib_errf(err, errlen, "%s:%u: %s has no value", name, lineno, key);
+				text_errf(err, errlen, "%s:%u: %s has no value", name, lineno, key);
 				return SQ_EBADMSG;
 			}
 			if (calib_sections_key(&sections, key, value, lineno, msg, sizeof(msg)) != 0) {
-				calib_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
+				text_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
 				return SQ_EBADMSG;
 			}
 			continue;
@@ -164,13 +165,13 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 		if (strcmp(key, "input_iface") == 0) {
 			/* host only: where the inputs come from (not in the block) */
 			if (iface_line != 0U) {
-				calib_errf(err, errlen, "%s:%u: duplicate key 'input_iface' (first set on line %u)",
+				text_errf(err, errlen, "%s:%u: duplicate key 'input_iface' (first set on line %u)",
 					name, lineno, iface_line);
 				return SQ_EBADMSG;
 			}
 			iface_line = lineno;
 			if (!calib_iface_name_valid(value)) {
-				calib_errf(err, errlen, "%s:%u: input_iface = '%s': 1..15 of A-Z a-z 0-9 _ . -",
+				text_errf(err, errlen, "%s:%u: input_iface = '%s': 1..15 of A-Z a-z 0-9 _ . -",
 					name, lineno, value);
 				return SQ_EBADMSG;
 			}
@@ -179,13 +180,13 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 		}
 		k = calib_key_find(key);
 		if (k < 0) {
-			calib_errf(err, errlen, "%s:%u: unknown key '%s' (docs/calib-example.txt lists them)",
+			text_errf(err, errlen, "%s:%u: unknown key '%s' (docs/calib-example.txt lists them)",
 				name, lineno, key);
 			return SQ_EBADMSG;
 		}
 		idx = (size_t)k;
 		if (seen_line[idx] != 0U) {
-			calib_errf(err, errlen, "%s:%u: duplicate key '%s' (first set on line %u)",
+			text_errf(err, errlen, "%s:%u: duplicate key '%s' (first set on line %u)",
 				name, lineno, key, seen_line[idx]);
 			return SQ_EBADMSG;
 		}
@@ -195,21 +196,21 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 			legacy_key = calib_key_name(idx);
 		}
 		if (*value == '\0') {
-			calib_errf(err, errlen, "%s:%u: %s has no value", name, lineno, key);
+			text_errf(err, errlen, "%s:%u: %s has no value", name, lineno, key);
 			return SQ_EBADMSG;
 		}
 		if (strpbrk(value, " \t") != NULL) {
-			calib_errf(err, errlen, "%s:%u: %s: one value expected, got '%s'",
+			text_errf(err, errlen, "%s:%u: %s: one value expected, got '%s'",
 				name, lineno, key, value);
 			return SQ_EBADMSG;
 		}
 		if (calib_key_set(idx, value, &cal, msg, sizeof(msg)) != 0) {
-			calib_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
+			text_errf(err, errlen, "%s:%u: %s", name, lineno, msg);
 			return SQ_EBADMSG;
 		}
 	}
 	if (ferror(f)) {
-		calib_errf(err, errlen, "%s: read error", name);
+		text_errf(err, errlen, "%s: read error", name);
 		return SQ_EIO;
 	}
 	if (calib_sections_finish(&sections, name, legacy_line, legacy_key, &cal, names, err,
@@ -225,23 +226,23 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 			const unsigned int dl = seen_line[(size_t)dk];
 
 			if (dl != 0U) {
-				calib_errf(err, errlen, "%s:%u: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
+				text_errf(err, errlen, "%s:%u: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
 					name, dl);
 			} else {
-				calib_errf(err, errlen, "%s: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
+				text_errf(err, errlen, "%s: mu_inf + delta_mu must not be negative (mu_0 >= 0)",
 					name);
 			}
 		} else if (calib_sd_validate(&cal) != SQ_OK) {
-			calib_errf(err, errlen, "%s: a standard deviation must be in 0 .. |its parameter| (mu_inf_sd <= 1.5), a brake's own or a corner's",
+			text_errf(err, errlen, "%s: a standard deviation must be in 0 .. |its parameter| (mu_inf_sd <= 1.5), a brake's own or a corner's",
 				name);
 		} else if (calib_check(&cal) == CALIB_ERR_BITRATE) {
-			calib_errf(err, errlen, "%s:%u: %s", name, seen_line[(size_t)bk],
+			text_errf(err, errlen, "%s:%u: %s", name, seen_line[(size_t)bk],
 				calib_error_name(CALIB_ERR_BITRATE));
 		} else if (calib_map_check(&cal, &me) != SQ_OK) {
-			calib_errf(err, errlen, "%s: the inputs do not set up: %s", name,
+			text_errf(err, errlen, "%s: the inputs do not set up: %s", name,
 				(me.why != NULL) ? me.why : "invalid input map");
 		} else {
-			calib_errf(err, errlen, "%s: the six CAN identifiers (disc_speed_id, pad_force_id, status_id, detail_id, diag_id, detail2_id) must all differ",
+			text_errf(err, errlen, "%s: the six CAN identifiers (disc_speed_id, pad_force_id, status_id, detail_id, diag_id, detail2_id) must all differ",
 				name);
 		}
 		return SQ_EBADMSG;
@@ -265,12 +266,12 @@ int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, ch
 	int rc;
 
 	if ((path == NULL) || (out == NULL)) {
-		calib_errf(err, errlen, "calib_text_load: NULL argument");
+		text_errf(err, errlen, "calib_text_load: NULL argument");
 		return SQ_EINVAL;
 	}
 	f = fopen(path, "r");
 	if (f == NULL) {
-		calib_errf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+		text_errf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
 		return SQ_ENOENT;
 	}
 	rc = calib_text_parse_map(f, path, out, names, err, errlen);

@@ -13,31 +13,44 @@
  * before the description moves to the next line. */
 #define HELP_COLUMN_MAX 24U
 
+/* "squeal-sim CMD: [--opt: ]message" on stderr; CLI_USAGE. */
+static cli_result_t vreport(const cli_spec_t *spec, const cli_opt_t *o, const char *fmt, va_list ap)
+	__attribute__((format(printf, 3, 0)));
+
+static cli_result_t vreport(const cli_spec_t *spec, const cli_opt_t *o, const char *fmt, va_list ap)
+{
+	fprintf(stderr, "squeal-sim %s: ", spec->cmd);
+	if (o != NULL) {
+		fprintf(stderr, "--%s: ", o->name);
+	}
+	vfprintf(stderr, fmt, ap);
+	fputc('\n', stderr);
+	return CLI_USAGE;
+}
+
 static cli_result_t opt_error(const cli_spec_t *spec, const cli_opt_t *o, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 
 static cli_result_t opt_error(const cli_spec_t *spec, const cli_opt_t *o, const char *fmt, ...)
 {
 	va_list ap;
+	cli_result_t r;
 
-	fprintf(stderr, "squeal-sim %s: --%s: ", spec->cmd, o->name);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	r = vreport(spec, o, fmt, ap);
 	va_end(ap);
-	fputc('\n', stderr);
-	return CLI_USAGE;
+	return r;
 }
 
 cli_result_t cli_usage_error(const cli_spec_t *spec, const char *fmt, ...)
 {
 	va_list ap;
+	cli_result_t r;
 
-	fprintf(stderr, "squeal-sim %s: ", spec->cmd);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	r = vreport(spec, NULL, fmt, ap);
 	va_end(ap);
-	fputc('\n', stderr);
-	return CLI_USAGE;
+	return r;
 }
 
 int cli_exit_status(cli_result_t r)
