@@ -5,6 +5,7 @@
 #include "oscsim.h"
 
 #include <float.h>
+#include <stdbool.h>
 #include <math.h>
 #include <string.h>
 
@@ -682,6 +683,34 @@ static void cycle_clear(oscsim_cycle_t *out)
 	out->v_reach = DNAN;
 }
 
+/* cycle_begin's answer when Q <= 1/2: no cycle, out says so. */
+#define CYCLE_NONE 1
+
+/* The start of both cycle searches: out cleared, the options (the defaults
+ * for NULL, in *def), the sliding equations. SQ_OK to search; CYCLE_NONE;
+ * SQ_EINVAL for bad arguments (args_ok: the caller's own). */
+static int cycle_begin(double damping, double ln_q, double s, bool args_ok,
+		       const oscsim_cycle_opts_t **opts, oscsim_cycle_opts_t *def,
+		       oscsim_slide_t *sl, oscsim_cycle_t *out)
+{
+	if (out == NULL) {
+		return SQ_EINVAL;
+	}
+	cycle_clear(out);
+	if (*opts == NULL) {
+		oscsim_cycle_default_opts(def);
+		*opts = def;
+	}
+	if ((slide_setup(damping, ln_q, sl) != SQ_OK) || !args_ok || isnan(s) || !(s > 0.0)) {
+		return SQ_EINVAL;
+	}
+	if (ln_q <= LN_HALF) {
+		out->kind = OSCSIM_CYCLE_NONE;
+		return CYCLE_NONE;
+	}
+	return SQ_OK;
+}
+
 /* The search's end: the cycle reaches the stick line (from r on). */
 static int cycle_at_stick(oscsim_cycle_t *out, double r, double v_reach)
 {
@@ -757,21 +786,9 @@ int oscsim_cycle_find(double damping, double ln_q, double s,
 	double g;
 	uint32_t guard;
 
-	if (out == NULL) {
-		return SQ_EINVAL;
-	}
-	cycle_clear(out);
-	if (opts == NULL) {
-		oscsim_cycle_default_opts(&def);
-		opts = &def;
-	}
-	rc = slide_setup(damping, ln_q, &sl);
-	if (rc != SQ_OK || isnan(s) || !(s > 0.0)) {
-		return SQ_EINVAL;
-	}
-	if (ln_q <= LN_HALF) {
-		out->kind = OSCSIM_CYCLE_NONE;
-		return SQ_OK;
+	rc = cycle_begin(damping, ln_q, s, true, &opts, &def, &sl, out);
+	if (rc != SQ_OK) {
+		return (rc == CYCLE_NONE) ? SQ_OK : rc;
 	}
 	se.sl = &sl;
 	se.s = s;
@@ -890,21 +907,9 @@ int oscsim_cycle_backward_plain(double damping, double ln_q, double s,
 	uint32_t i;
 	int rc;
 
-	if (out == NULL) {
-		return SQ_EINVAL;
-	}
-	cycle_clear(out);
-	if (opts == NULL) {
-		oscsim_cycle_default_opts(&def);
-		opts = &def;
-	}
-	rc = slide_setup(damping, ln_q, &sl);
-	if (rc != SQ_OK || !(r_start > 0.0) || isnan(s) || !(s > 0.0)) {
-		return SQ_EINVAL;
-	}
-	if (ln_q <= LN_HALF) {
-		out->kind = OSCSIM_CYCLE_NONE;
-		return SQ_OK;
+	rc = cycle_begin(damping, ln_q, s, r_start > 0.0, &opts, &def, &sl, out);
+	if (rc != SQ_OK) {
+		return (rc == CYCLE_NONE) ? SQ_OK : rc;
 	}
 	for (i = 0; i < max_revs; i++) {
 		rc = revolve(&sl, s, r, opts, -1, &rev);
