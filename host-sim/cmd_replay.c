@@ -997,15 +997,34 @@ static uint64_t corner_time_us(const corner_stats_t *cs)
 	return total;
 }
 
+/* What the text and the JSON summary show of corner k. */
+typedef struct {
+	const corner_stats_t *cs;
+	const input_counters_t *cnt[2]; /* speed, force */
+	uint64_t total_us;              /* corner_time_us */
+} corner_view_t;
+
+static const monitor_t *corner_view(const replay_t *r, uint32_t k, corner_view_t *v)
+{
+	const monitor_t *c = squeal_app_corner(k);
+
+	v->cs = &r->cs[k];
+	v->cnt[0] = &c->speed.count;
+	v->cnt[1] = &c->force.count;
+	v->total_us = corner_time_us(v->cs);
+	return c;
+}
+
 /* One corner: final state, share of time per state, each input's frames
  * used and rejected by the input stage's reasons, the time in FAULT by
  * reason. */
 static void corner_summary(FILE *o, const replay_t *r, uint32_t k)
 {
-	const monitor_t *c = squeal_app_corner(k);
-	const corner_stats_t *cs = &r->cs[k];
-	const input_counters_t *cnt[2] = { &c->speed.count, &c->force.count };
-	const uint64_t total = corner_time_us(cs);
+	corner_view_t v;
+	const monitor_t *c = corner_view(r, k, &v);
+	const corner_stats_t *cs = v.cs;
+	const input_counters_t *const *cnt = v.cnt;
+	const uint64_t total = v.total_us;
 	char label[96];
 	unsigned s;
 	unsigned j;
@@ -1246,6 +1265,36 @@ static void json_buses(json_writer_t *w, const replay_t *r, const replay_args_t 
 	json_end_object(w);
 }
 
+/* One input of a corner in "inputs_by_corner" (j: 0 speed, 1 force). */
+static void json_corner_input(json_writer_t *w, const replay_t *r, uint32_t k, unsigned j,
+			      const corner_view_t *v)
+{
+	const input_counters_t *cnt = v->cnt[j];
+	char label[96];
+	unsigned q;
+
+	input_label(r, k, j, label, sizeof(label));
+	json_key(w, qty_names[j]);
+	json_begin_object(w);
+	json_kv_string(w, "label", label);
+	json_kv_u64(w, "frames", cnt->frames);
+	json_kv_u64(w, "used", cnt->used);
+	json_key(w, "rejected");
+	json_begin_object(w);
+	for (q = 1U; q < (unsigned)INPUT_RX_REASON_COUNT; q++) {
+		json_kv_u64(w, input_rx_reason_name((input_rx_reason_t)q), cnt->verdict[q]);
+	}
+	json_end_object(w);
+	json_kv_u64(w, "stale_events", cnt->stale_events);
+	json_key(w, "fault_time_s");
+	json_begin_object(w);
+	for (q = 0U; q < N_FAULT_BITS; q++) {
+		json_kv_seconds(w, fault_bit_names[q], v->cs->fault_us[j][q]);
+	}
+	json_end_object(w);
+	json_end_object(w);
+}
+
 /* "inputs_by_corner": the text summary's corner blocks. */
 static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
 {
@@ -1254,50 +1303,26 @@ static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
 	json_key(w, "inputs_by_corner");
 	json_begin_array(w);
 	for (k = 0U; r->started && (k < squeal_app_corner_count()) && (k < CALIB_MAX_CORNERS); k++) {
-		const monitor_t *c = squeal_app_corner(k);
-		const corner_stats_t *cs = &r->cs[k];
-		const input_counters_t *cnt[2] = { &c->speed.count, &c->force.count };
-		const uint64_t total = corner_time_us(cs);
-		char label[96];
+		corner_view_t v;
+		const monitor_t *c = corner_view(r, k, &v);
 		unsigned s;
-		unsigned j;
-		unsigned q;
 
 		json_begin_object(w);
 		json_kv_string(w, "corner", pos_names[c->corner.pos & 3U]);
 		json_kv_string(w, "final_state", rs_state_name(msg_squeal_state_slot(c->state)));
-		rs_json_state_times(w, "state_time_s", cs->state_us);
+		rs_json_state_times(w, "state_time_s", v.cs->state_us);
 		json_key(w, "state_share");
 		json_begin_object(w);
 		for (s = 0U; s < N_STATES; s++) {
 			json_key(w, rs_state_name(s));
-			json_fixed(w, (total == 0U) ? 0 :
-				   (int64_t)(((cs->state_us[s] * 1000000U) + (total / 2U)) / total), 6U);
+			json_fixed(w, (v.total_us == 0U) ? 0 :
+				   (int64_t)(((v.cs->state_us[s] * 1000000U) + (v.total_us / 2U)) /
+					     v.total_us), 6U);
 		}
 		json_end_object(w);
-		for (j = 0U; j < 2U; j++) {
-			input_label(r, k, j, label, sizeof(label));
-			json_key(w, qty_names[j]);
-			json_begin_object(w);
-			json_kv_string(w, "label", label);
-			json_kv_u64(w, "frames", cnt[j]->frames);
-			json_kv_u64(w, "used", cnt[j]->used);
-			json_key(w, "rejected");
-			json_begin_object(w);
-			for (q = 1U; q < (unsigned)INPUT_RX_REASON_COUNT; q++) {
-				json_kv_u64(w, input_rx_reason_name((input_rx_reason_t)q), cnt[j]->verdict[q]);
-			}
-			json_end_object(w);
-			json_kv_u64(w, "stale_events", cnt[j]->stale_events);
-			json_key(w, "fault_time_s");
-			json_begin_object(w);
-			for (q = 0U; q < N_FAULT_BITS; q++) {
-				json_kv_seconds(w, fault_bit_names[q], cs->fault_us[j][q]);
-			}
-			json_end_object(w);
-			json_end_object(w);
-		}
-		json_kv_seconds(w, "fault_without_input_fault_s", cs->fault_other_us);
+		json_corner_input(w, r, k, 0U, &v);
+		json_corner_input(w, r, k, 1U, &v);
+		json_kv_seconds(w, "fault_without_input_fault_s", v.cs->fault_other_us);
 		json_end_object(w);
 	}
 	json_end_array(w);
