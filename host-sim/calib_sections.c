@@ -924,6 +924,52 @@ static int get_signal(const ctx_t *c, const char *prefix, bool required, can_sig
 	return 0;
 }
 
+/* A selector (prefix "mux_" or "mux2_"): its signal and value, all four or
+ * none, and the inclusive end of its range (default: the value). value_sig:
+ * the value signal the selector must not overlap (NULL: not checked here). */
+static int get_selector(const ctx_t *c, const char *prefix, const can_signal_t *value_sig,
+			can_signal_t *sig, uint8_t flag, uint8_t *flags, uint32_t *value,
+			uint32_t *value_max)
+{
+	char key[32];
+	char key_max[32];
+	bool present = false;
+	int64_t v = 0;
+
+	(void)snprintf(key, sizeof(key), "%svalue", prefix);
+	(void)snprintf(key_max, sizeof(key_max), "%svalue_max", prefix);
+	if (get_signal(c, prefix, false, sig, &present) != 0) {
+		return -1;
+	}
+	if (present != (kv_of(c->sec, key) != NULL)) {
+		return kv_err(c, NULL, "%sstart_bit, %slength, %sbyte_order and %svalue: all four or none",
+			      prefix, prefix, prefix, prefix);
+	}
+	if (present) {
+		*flags |= flag;
+		if (get_int(c, key, 0, UINT32_MAX, true, &v, NULL) != 0) {
+			return -1;
+		}
+		*value = (uint32_t)v;
+		*value_max = (uint32_t)v;
+		if ((value_sig != NULL) && can_signal_overlap(sig, value_sig)) {
+			return kv_err(c, kv_of(c->sec, "mux_start_bit"),
+				      "the mux selector overlaps the value signal");
+		}
+	}
+	if (get_int(c, key_max, 0, UINT32_MAX, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (present) {
+		if ((*flags & flag) == 0U) {
+			return kv_err(c, kv_of(c->sec, key_max), "%s without the %s* selector", key_max,
+				      prefix);
+		}
+		*value_max = (uint32_t)v;
+	}
+	return 0;
+}
+
 static int get_dil(const ctx_t *c, calib_input_t *in)
 {
 	const calib_section_kv_t *kv = kv_of(c->sec, "data_id_list");
@@ -1098,60 +1144,12 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 			      kv->value);
 	}
 	in->unit = (uint8_t)unit;
-	/* multiplexer: all four or none */
-	if (get_signal(c, "mux_", false, &in->mux, &present) != 0) {
+	/* multiplexer, and a second selector condition */
+	if ((get_selector(c, "mux_", &in->sig, &in->mux, CALIB_IN_MUX, &in->flags, &in->mux_value,
+			  &in->mux_value_max) != 0) ||
+	    (get_selector(c, "mux2_", NULL, &in->mux2, CALIB_IN_MUX2, &in->flags, &in->mux2_value,
+			  &in->mux2_value_max) != 0)) {
 		return -1;
-	}
-	if (present != (kv_of(c->sec, "mux_value") != NULL)) {
-		return kv_err(c, NULL, "mux_start_bit, mux_length, mux_byte_order and mux_value: all four or none");
-	}
-	if (present) {
-		in->flags |= CALIB_IN_MUX;
-		if (get_int(c, "mux_value", 0, UINT32_MAX, true, &v, NULL) != 0) {
-			return -1;
-		}
-		in->mux_value = (uint32_t)v;
-		in->mux_value_max = (uint32_t)v;
-		if (can_signal_overlap(&in->mux, &in->sig)) {
-			return kv_err(c, kv_of(c->sec, "mux_start_bit"),
-				      "the mux selector overlaps the value signal");
-		}
-	}
-	/* the inclusive end of the selector's range (default: mux_value) */
-	if (get_int(c, "mux_value_max", 0, UINT32_MAX, false, &v, &present) != 0) {
-		return -1;
-	}
-	if (present) {
-		if ((in->flags & CALIB_IN_MUX) == 0U) {
-			return kv_err(c, kv_of(c->sec, "mux_value_max"),
-				      "mux_value_max without the mux_* selector");
-		}
-		in->mux_value_max = (uint32_t)v;
-	}
-	/* a second selector condition: all four or none */
-	if (get_signal(c, "mux2_", false, &in->mux2, &present) != 0) {
-		return -1;
-	}
-	if (present != (kv_of(c->sec, "mux2_value") != NULL)) {
-		return kv_err(c, NULL, "mux2_start_bit, mux2_length, mux2_byte_order and mux2_value: all four or none");
-	}
-	if (present) {
-		in->flags |= CALIB_IN_MUX2;
-		if (get_int(c, "mux2_value", 0, UINT32_MAX, true, &v, NULL) != 0) {
-			return -1;
-		}
-		in->mux2_value = (uint32_t)v;
-		in->mux2_value_max = (uint32_t)v;
-	}
-	if (get_int(c, "mux2_value_max", 0, UINT32_MAX, false, &v, &present) != 0) {
-		return -1;
-	}
-	if (present) {
-		if ((in->flags & CALIB_IN_MUX2) == 0U) {
-			return kv_err(c, kv_of(c->sec, "mux2_value_max"),
-				      "mux2_value_max without the mux2_* selector");
-		}
-		in->mux2_value_max = (uint32_t)v;
 	}
 	kv = kv_of(c->sec, "signal");
 	if (kv != NULL) {

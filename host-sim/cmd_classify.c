@@ -141,13 +141,14 @@ static int load_brake(classify_args_t *a, squeal_params_t *params, squeal_param_
 	return 0;
 }
 
-/* Print a field as a JSON number, or null where the model gives none. */
-static void json_field(const char *key, bool present, double value, bool last)
+/* A field as a JSON number, or null where the model gives none (never the
+ * last field of the object: a comma follows). */
+static void json_field(const char *key, bool present, double value)
 {
 	if (present && isfinite(value)) {
-		printf("  \"%s\": %.9g%s\n", key, value, last ? "" : ",");
+		printf("  \"%s\": %.9g,\n", key, value);
 	} else {
-		printf("  \"%s\": null%s\n", key, last ? "" : ",");
+		printf("  \"%s\": null,\n", key);
 	}
 }
 
@@ -188,10 +189,37 @@ static double margin_of(const squeal_sigma_result_t *sig, bool have_sig)
 	return sim_num_to_double(sig->margin_sigma, SQUEAL_Q_MARGIN);
 }
 
+/* The model's numbers, null where it gives none. */
+static void json_model_fields(const squeal_result_t *r, const result_d_t *d, double margin)
+{
+	const bool lnq = has(r, SQUEAL_HAS_LNQ, 0U);
+	const struct {
+		const char *key;
+		bool present;
+		double value;
+	} fields[] = {
+		{ "q", lnq, exp(d->ln_q) },
+		{ "ln_q", lnq, d->ln_q },
+		{ "hopf_v0_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0), d->hopf_v0_mps },
+		{ "hopf_margin_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0), d->hopf_margin_mps },
+		{ "hopf_force_n", has(r, SQUEAL_HAS_HOPF_FORCE, SQUEAL_SAT_HOPF_FORCE), d->hopf_force_n },
+		{ "cycle_x", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_CYCLE_X), d->cycle_x },
+		{ "lc_amplitude_m", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_AMPLITUDE), d->lc_amplitude_m },
+		{ "trigger_velocity_mps", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_TRIGGER),
+		  d->trigger_velocity_mps },
+		{ "basin_ratio", has(r, SQUEAL_HAS_BASIN, SQUEAL_SAT_BASIN), d->basin_ratio },
+		{ "border_margin_sigma", !isnan(margin), margin },
+	};
+	size_t i;
+
+	for (i = 0U; i < sizeof(fields) / sizeof(fields[0]); i++) {
+		json_field(fields[i].key, fields[i].present, fields[i].value);
+	}
+}
+
 static void print_json(const classify_args_t *a, const squeal_result_t *r, double margin)
 {
 	result_d_t d;
-	const bool lnq = has(r, SQUEAL_HAS_LNQ, 0U);
 
 	result_to_double(r, &d);
 	printf("{\n");
@@ -202,23 +230,7 @@ static void print_json(const classify_args_t *a, const squeal_result_t *r, doubl
 	printf("  \"v0_mps\": %.9g,\n", a->v0_mps);
 	printf("  \"force_n\": %.9g,\n", a->force_n);
 	printf("  \"vehicle_kmh\": %.9g,\n", a->v0_mps * a->wheel_over_pad * 3.6);
-	json_field("q", lnq, exp(d.ln_q), false);
-	json_field("ln_q", lnq, d.ln_q, false);
-	json_field("hopf_v0_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0),
-		   d.hopf_v0_mps, false);
-	json_field("hopf_margin_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0),
-		   d.hopf_margin_mps, false);
-	json_field("hopf_force_n", has(r, SQUEAL_HAS_HOPF_FORCE, SQUEAL_SAT_HOPF_FORCE),
-		   d.hopf_force_n, false);
-	json_field("cycle_x", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_CYCLE_X),
-		   d.cycle_x, false);
-	json_field("lc_amplitude_m", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_AMPLITUDE),
-		   d.lc_amplitude_m, false);
-	json_field("trigger_velocity_mps", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_TRIGGER),
-		   d.trigger_velocity_mps, false);
-	json_field("basin_ratio", has(r, SQUEAL_HAS_BASIN, SQUEAL_SAT_BASIN),
-		   d.basin_ratio, false);
-	json_field("border_margin_sigma", !isnan(margin), margin, false);
+	json_model_fields(r, &d, margin);
 	printf("  \"saturated\": %s\n", ((r->flags & 0xff00U) != 0U) ? "true" : "false");
 	printf("}\n");
 }

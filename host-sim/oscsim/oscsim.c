@@ -674,13 +674,9 @@ int oscsim_cycle_return_map(double damping, double ln_q, double s, double r,
 
 static void cycle_clear(oscsim_cycle_t *out)
 {
-	memset(out, 0, sizeof(*out));
-	out->r = DNAN;
-	out->u_min = DNAN;
-	out->v_max = DNAN;
-	out->v_min = DNAN;
-	out->period = DNAN;
-	out->v_reach = DNAN;
+	/* every field unknown (NaN) or zero until a search fills it */
+	*out = (oscsim_cycle_t){ .r = DNAN, .u_min = DNAN, .v_max = DNAN, .v_min = DNAN,
+				 .period = DNAN, .v_reach = DNAN };
 }
 
 /* cycle_begin's answer when Q <= 1/2: no cycle, out says so. */
