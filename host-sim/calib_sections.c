@@ -37,7 +37,35 @@ bool calib_sections_open(const calib_sections_t *s)
 	return s->count > 0U;
 }
 
-/* ---- the flat key_table ---------------------------------------------------------- */
+/* The words of a yes/no and of a byte order value (any case). */
+typedef struct {
+	const char *name;
+	uint8_t value;
+} choice_t;
+
+static const choice_t bool_choices[] = {
+	{ "1", 1U }, { "yes", 1U }, { "true", 1U }, { "on", 1U },
+	{ "0", 0U }, { "no", 0U }, { "false", 0U }, { "off", 0U }, { NULL, 0U }
+};
+static const choice_t order_choices[] = {
+	{ "intel", (uint8_t)CAN_SIGNAL_INTEL }, { "motorola", (uint8_t)CAN_SIGNAL_MOTOROLA },
+	{ NULL, 0U }
+};
+
+static bool parse_choice(const choice_t *choices, const char *t, uint8_t *out)
+{
+	size_t i;
+
+	for (i = 0U; choices[i].name != NULL; i++) {
+		if (strcasecmp(t, choices[i].name) == 0) {
+			*out = choices[i].value;
+			return true;
+		}
+	}
+	return false;
+}
+
+/* ---- the flat keys ------------------------------------------------------------ */
 
 typedef enum {
 	KIND_Q,       /* value * scale, rounded to nearest (Q-format fields)   */
@@ -333,6 +361,7 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 {
 	char range[100];
 	double v;
+	uint8_t b = 0U;
 	int64_t iv;
 	int64_t min;
 	int64_t max;
@@ -352,13 +381,8 @@ static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
 		}
 		return 0;
 	case KIND_BOOL:
-		if ((strcmp(text, "1") == 0) || (strcasecmp(text, "yes") == 0) ||
-		    (strcasecmp(text, "true") == 0) || (strcasecmp(text, "on") == 0)) {
-			*raw = 1;
-		} else if ((strcmp(text, "0") == 0) || (strcasecmp(text, "no") == 0) ||
-			   (strcasecmp(text, "false") == 0) ||
-			   (strcasecmp(text, "off") == 0)) {
-			*raw = 0;
+		if (parse_choice(bool_choices, text, &b)) {
+			*raw = b;
 		} else {
 			text_errf(err, errlen, "%s must be yes/no (or 1/0), got '%s'",
 				k->key, text);
@@ -609,32 +633,6 @@ double calib_dec_value(calib_dec_t d)
 	return (double)d.mant * pow(10.0, d.exp);
 }
 
-static bool parse_bool(const char *t, uint8_t *out)
-{
-	if ((strcmp(t, "1") == 0) || (strcasecmp(t, "yes") == 0) || (strcasecmp(t, "true") == 0)) {
-		*out = 1U;
-		return true;
-	}
-	if ((strcmp(t, "0") == 0) || (strcasecmp(t, "no") == 0) || (strcasecmp(t, "false") == 0)) {
-		*out = 0U;
-		return true;
-	}
-	return false;
-}
-
-static bool parse_order(const char *t, uint8_t *out)
-{
-	if (strcasecmp(t, "intel") == 0) {
-		*out = (uint8_t)CAN_SIGNAL_INTEL;
-		return true;
-	}
-	if (strcasecmp(t, "motorola") == 0) {
-		*out = (uint8_t)CAN_SIGNAL_MOTOROLA;
-		return true;
-	}
-	return false;
-}
-
 /* ---- lines --------------------------------------------------------------------- */
 
 bool calib_iface_name_valid(const char *n)
@@ -846,28 +844,25 @@ static int get_u8(const ctx_t *c, const char *key, int64_t lo, int64_t hi, bool 
 	return 0;
 }
 
-static int get_bool(const ctx_t *c, const char *key, uint8_t *out, bool *present)
+/* A key whose value is one of choices (what: them in words, for the messages). */
+static int get_choice(const ctx_t *c, const char *key, const choice_t *choices, const char *what,
+		      bool required, uint8_t *out, bool *present)
 {
 	const calib_section_kv_t *kv = kv_of(c->sec, key);
 
 	*present = kv != NULL;
-	if ((kv != NULL) && !parse_bool(kv->value, out)) {
-		return kv_err(c, kv, "%s must be yes or no, got '%s'", key, kv->value);
+	if (kv == NULL) {
+		return required ? kv_err(c, NULL, "%s is required (%s)", key, what) : 0;
+	}
+	if (!parse_choice(choices, kv->value, out)) {
+		return kv_err(c, kv, "%s must be %s, got '%s'", key, what, kv->value);
 	}
 	return 0;
 }
 
-static int get_order(const ctx_t *c, const char *key, bool required, uint8_t *out)
+static int get_bool(const ctx_t *c, const char *key, uint8_t *out, bool *present)
 {
-	const calib_section_kv_t *kv = kv_of(c->sec, key);
-
-	if (kv == NULL) {
-		return required ? kv_err(c, NULL, "%s is required (intel or motorola)", key) : 0;
-	}
-	if (!parse_order(kv->value, out)) {
-		return kv_err(c, kv, "%s must be intel or motorola, got '%s'", key, kv->value);
-	}
-	return 0;
+	return get_choice(c, key, bool_choices, "yes or no", false, out, present);
 }
 
 static int get_dec(const ctx_t *c, const char *key, bool required, calib_dec_t *out)
@@ -893,6 +888,7 @@ static int get_signal(const ctx_t *c, const char *prefix, bool required, can_sig
 	int64_t v = 0;
 	bool p1 = false;
 	bool p2 = false;
+	bool p3 = false;
 
 	snprintf(k1, sizeof(k1), "%sstart_bit", prefix);
 	snprintf(k2, sizeof(k2), "%slength", prefix);
@@ -909,11 +905,11 @@ static int get_signal(const ctx_t *c, const char *prefix, bool required, can_sig
 		return kv_err(c, kv_of(c->sec, k2), "%s = %" PRId64 ": zero length or over 32 bits",
 			      k2, v);
 	}
-	if (get_order(c, k3, required, &sig->byte_order) != 0) {
+	if (get_choice(c, k3, order_choices, "intel or motorola", required, &sig->byte_order, &p3) != 0) {
 		return -1;
 	}
-	*present = p1 || p2 || (kv_of(c->sec, k3) != NULL);
-	if (*present && !(p1 && p2 && (kv_of(c->sec, k3) != NULL))) {
+	*present = p1 || p2 || p3;
+	if (*present && !(p1 && p2 && p3)) {
 		return kv_err(c, NULL, "%sstart_bit, %slength and %sbyte_order go together",
 			      prefix, prefix, prefix);
 	}
