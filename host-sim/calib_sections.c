@@ -459,7 +459,7 @@ static void flat_key_format(const char *key, const calib_t *cal, char *buf, size
 	format_value(k, field_get(cal, k), buf, len);
 }
 
-/* The flat key_table that describe the legacy DiscSpeed/PadForce inputs: a file
+/* The flat keys that describe the legacy DiscSpeed/PadForce inputs: a file
  * with [corner] sections configures its inputs there instead. */
 static bool legacy_input_key(const char *key)
 {

@@ -575,26 +575,16 @@ static int revolve(const oscsim_slide_t *sl, double s, double r,
 	dp.h_max = 0.5;
 	/* the section u' = 0: its half u > 0 ends the revolution, the half
 	 * u < 0 gives u_min */
-	ev[0].fn = ev_velocity;
-	ev[0].ctx = NULL;
-	ev[0].dir = 0; /* both halves; the sign of u tells them apart */
+	/* both halves; the sign of u tells them apart */
+	ev[0] = (oscsim_event_t){ .fn = ev_velocity, .ctx = NULL, .dir = 0 };
 	/* extremes of u' (u'' = 0), both kinds */
-	ev[1].fn = ev_accel;
-	ev[1].ctx = (void *)sl;
-	ev[1].dir = 0;
+	ev[1] = (oscsim_event_t){ .fn = ev_accel, .ctx = (void *)sl, .dir = 0 };
 	/* the stick line u' = s */
-	ev[2].fn = ev_stick;
-	ev[2].ctx = &s;
-	ev[2].dir = 1;
+	ev[2] = (oscsim_event_t){ .fn = ev_stick, .ctx = &s, .dir = 1 };
 	memset(&w, 0, sizeof(w));
 	w.ev = ev;
 	w.n_ev = isfinite(s) ? 3U : 2U;
-	out->u_min = 0.0;
-	out->v_max = 0.0;
-	out->v_min = 0.0;
-	out->hit_stick = 0;
-	out->r_next = DNAN;
-	out->period = 0.0;
+	*out = (revolution_t){ .r_next = DNAN }; /* the extremes start at 0 */
 	for (guard = 0; guard < 64U; guard++) {
 		rc = oscsim_dp5_advance(&dp, (double)dir * t_lim, &w);
 		if (rc < 0) {
@@ -1008,15 +998,11 @@ int oscsim_linear_growth(double damping, double ln_q, double *ratio)
 	}
 	dp.h_max = 0.5;
 	/* forward, the half u > 0 of the section is crossed with u' falling */
-	ev[0].fn = ev_velocity;
-	ev[0].ctx = NULL;
-	ev[0].dir = 0;
+	ev[0] = (oscsim_event_t){ .fn = ev_velocity, .ctx = NULL, .dir = 0 };
 	/* with strong negative damping (kappa > 2 + 2D) there is no
 	 * oscillation left to count revolutions by: leaving the ball
 	 * of radius 1000 r0 is growth */
-	ev[1].fn = ev_escape;
-	ev[1].ctx = &escape;
-	ev[1].dir = 1;
+	ev[1] = (oscsim_event_t){ .fn = ev_escape, .ctx = &escape, .dir = 1 };
 	memset(&w, 0, sizeof(w));
 	w.ev = ev;
 	w.n_ev = 2;
