@@ -20,27 +20,14 @@ Prints "RESULT: N passed, M failed". Run from the repository root.
 import glob
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BINARIES = {
-    "float": os.path.join(ROOT, "build", "host", "squeal-sim"),
-    "fixed": os.path.join(ROOT, "build", "host-fixed", "squeal-sim"),
-}
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                                "support"))
+from sim_cli import ROOT, Results, run  # noqa: E402
 
-passed = 0
-failed = 0
-
-
-def result(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL  " + what)
+result = Results()
 
 
 def strip_comments(text):
@@ -72,12 +59,6 @@ def option_tables():
             above = [t for t in tables if t[0] < m.start() and t[1] == opts]
             found[cmd] = [] if opts == "NULL" else above[-1][2]
     return found
-
-
-def run(argv, cwd):
-    p = subprocess.run(argv, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                       universal_newlines=True, timeout=60)
-    return p.returncode, p.stdout, p.stderr
 
 
 def check_build(build, sim, commands, tables):
@@ -125,13 +106,8 @@ def main():
     result(len(commands) >= 9, "squeal_sim.c's command table read (%d commands)" % len(commands))
     result(sum(len(v) for v in tables.values()) >= 60,
            "option tables read (%d options)" % sum(len(v) for v in tables.values()))
-    for build, sim in BINARIES.items():
-        if not os.access(sim, os.X_OK):
-            result(False, "%s missing (run make)" % sim)
-            continue
-        check_build(build, sim, commands, tables)
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 0 if failed == 0 else 1
+    result.each_build(lambda build, sim: check_build(build, sim, commands, tables))
+    return result.finish()
 
 
 if __name__ == "__main__":

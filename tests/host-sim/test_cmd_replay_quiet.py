@@ -19,36 +19,16 @@ Prints "RESULT: N passed, M failed". Run from the repository root.
 import json
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BINARIES = {
-    "float": os.path.join(ROOT, "build", "host", "squeal-sim"),
-    "fixed": os.path.join(ROOT, "build", "host-fixed", "squeal-sim"),
-}
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                                "support"))
+from sim_cli import ROOT, Results, run  # noqa: E402
+
+result = Results()
 NOTE = re.compile(r"^\S+:\d+: ")
 FRAME = re.compile(r"^\(\d+\.\d{6}\) \S+ [0-9A-F]{3}#[0-9A-F]*$")
-
-passed = 0
-failed = 0
-
-
-def result(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL  " + what)
-
-
-def run(argv):
-    p = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                       universal_newlines=True, timeout=300)
-    return p.returncode, p.stdout, p.stderr
-
 
 def shifted(line, dt_s):
     """A candump -L line with its timestamp moved by dt_s seconds."""
@@ -106,13 +86,8 @@ def check_build(build, sim):
 
 
 def main():
-    for build, sim in BINARIES.items():
-        if not os.access(sim, os.X_OK):
-            result(False, "%s missing (run make)" % sim)
-            continue
-        check_build(build, sim)
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 0 if failed == 0 else 1
+    result.each_build(check_build)
+    return result.finish()
 
 
 if __name__ == "__main__":
