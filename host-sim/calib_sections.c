@@ -94,6 +94,10 @@ typedef struct {
 	  (uint8_t)(((kind) == KIND_Q) && (sizeof(((calib_t *)0)->field) == 4U)), \
 	  kind, scale, unit, what }
 
+/* the standard deviation of a model parameter: key KEY_sd, a Q-format field */
+#define K_SD(param, field, scale, unit) \
+	K(param "_sd", field, KIND_Q, scale, unit, "standard deviation of " param)
+
 #define Q16 65536.0
 #define Q12 4096.0
 #define Q15 32768.0
@@ -179,18 +183,13 @@ static const key_desc_t key_table[] = {
 	  "input bus listen-only: nothing sent on it, no ACK (yes/no)"),
 	/* uncertainty (issue 12, docs/uncertainty.md): 0 <= sd <= |param|
 	 * (mu_inf's <= 1.5), |corr| <= 1; all 0: crisp classes as before */
-	K("mass_kg_sd", sd.mass_sd_q16, KIND_Q, Q16, "kg",
-	  "standard deviation of mass_kg"),
-	K("omega0_radps_sd", sd.omega0_sd_q12, KIND_Q, Q12, "rad/s",
-	  "standard deviation of omega0_radps"),
-	K("damping_sd", sd.damping_sd_q30, KIND_Q, Q30, "-",
-	  "standard deviation of damping"),
+	K_SD("mass_kg", sd.mass_sd_q16, Q16, "kg"),
+	K_SD("omega0_radps", sd.omega0_sd_q12, Q12, "rad/s"),
+	K_SD("damping", sd.damping_sd_q30, Q30, "-"),
 	K("mu_inf_sd", sd.mu_inf_sd_q30, KIND_Q, Q30, "-",
 	  "standard deviation of mu_inf (carried; enters no border)"),
-	K("delta_mu_sd", sd.delta_mu_sd_q30, KIND_Q, Q30, "-",
-	  "standard deviation of delta_mu"),
-	K("slope_spm_sd", sd.slope_sd_q24, KIND_Q, Q24, "s/m",
-	  "standard deviation of slope_spm"),
+	K_SD("delta_mu", sd.delta_mu_sd_q30, Q30, "-"),
+	K_SD("slope_spm", sd.slope_sd_q24, Q24, "s/m"),
 	K("slope_delta_mu_corr", sd.slope_delta_mu_corr_q30, KIND_Q, Q30, "-",
 	  "correlation of slope_spm and delta_mu estimates"),
 	K("uncertain_k_sigma", uncertain_k_q16, KIND_Q, Q16, "sigma",
@@ -920,6 +919,31 @@ static int get_signal(const ctx_t *c, const char *prefix, bool required, can_sig
 	return 0;
 }
 
+/* A "not available" code of the value signal (key na_raw or na_raw2, its
+ * flag set when given): a signed signal's code may be written as a number
+ * (-32768, as a VAL_ table writes it) or as its raw bits (0x8000). */
+static int get_na(const ctx_t *c, const char *key, uint8_t flag, calib_input_t *in, uint32_t *raw)
+{
+	int64_t v = 0;
+	bool present = false;
+
+	if (get_int(c, key, INT32_MIN, UINT32_MAX, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (!present) {
+		return 0;
+	}
+	if ((v < 0) && ((in->sig.is_signed == 0U) ||
+			(v < -((int64_t)1 << (in->sig.length - 1U))))) {
+		return kv_err(c, kv_of(c->sec, key),
+			      "%s = %" PRId64 " is not a value of this %s %u-bit signal", key, v,
+			      (in->sig.is_signed != 0U) ? "signed" : "unsigned", (unsigned)in->sig.length);
+	}
+	in->flags |= flag;
+	*raw = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
+	return 0;
+}
+
 /* A selector (prefix "mux_" or "mux2_"): its signal and value, all four or
  * none, and the inclusive end of its range (default: the value). value_sig:
  * the value signal the selector must not overlap (NULL: not checked here). */
@@ -1161,37 +1185,9 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 				      CALIB_SIGNAL_NAME_LEN - 1U);
 		}
 	}
-	/* a signed signal's code may be written as a number (-32768, as a
-	 * VAL_ table writes it) or as its raw bits (0x8000) */
-	if (get_int(c, "na_raw", INT32_MIN, UINT32_MAX, false, &v, &present) != 0) {
+	if ((get_na(c, "na_raw", CALIB_IN_NA, in, &in->na_raw) != 0) ||
+	    (get_na(c, "na_raw2", CALIB_IN_NA2, in, &in->na_raw2) != 0)) {
 		return -1;
-	}
-	if (present) {
-		if ((v < 0) && ((in->sig.is_signed == 0U) ||
-				(v < -((int64_t)1 << (in->sig.length - 1U))))) {
-			return kv_err(c, kv_of(c->sec, "na_raw"),
-				      "na_raw = %" PRId64 " is not a value of this %s %u-bit signal", v,
-				      (in->sig.is_signed != 0U) ? "signed" : "unsigned",
-				      (unsigned)in->sig.length);
-		}
-		in->flags |= CALIB_IN_NA;
-		in->na_raw = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
-	}
-	/* a signed signal's code may be written as a number (-32768, as a
-	 * VAL_ table writes it) or as its raw bits (0x8000) */
-	if (get_int(c, "na_raw2", INT32_MIN, UINT32_MAX, false, &v, &present) != 0) {
-		return -1;
-	}
-	if (present) {
-		if ((v < 0) && ((in->sig.is_signed == 0U) ||
-				(v < -((int64_t)1 << (in->sig.length - 1U))))) {
-			return kv_err(c, kv_of(c->sec, "na_raw2"),
-				      "na_raw2 = %" PRId64 " is not a value of this %s %u-bit signal", v,
-				      (in->sig.is_signed != 0U) ? "signed" : "unsigned",
-				      (unsigned)in->sig.length);
-		}
-		in->flags |= CALIB_IN_NA2;
-		in->na_raw2 = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
 	}
 	if (get_int(c, "qualifier_bit", 0, 63, false, &v, &present) != 0) {
 		return -1;

@@ -13,44 +13,19 @@
  * before the description moves to the next line. */
 #define HELP_COLUMN_MAX 24U
 
-/* "squeal-sim CMD: [--opt: ]message" on stderr; CLI_USAGE. */
-static cli_result_t vreport(const cli_spec_t *spec, const cli_opt_t *o, const char *fmt, va_list ap)
-	__attribute__((format(printf, 3, 0)));
-
-static cli_result_t vreport(const cli_spec_t *spec, const cli_opt_t *o, const char *fmt, va_list ap)
+cli_result_t cli_error(const cli_spec_t *spec, const char *opt, const char *fmt, ...)
 {
+	va_list ap;
+
 	fprintf(stderr, "squeal-sim %s: ", spec->cmd);
-	if (o != NULL) {
-		fprintf(stderr, "--%s: ", o->name);
+	if (opt != NULL) {
+		fprintf(stderr, "--%s: ", opt);
 	}
+	va_start(ap, fmt);
 	vfprintf(stderr, fmt, ap);
+	va_end(ap);
 	fputc('\n', stderr);
 	return CLI_USAGE;
-}
-
-static cli_result_t opt_error(const cli_spec_t *spec, const cli_opt_t *o, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
-static cli_result_t opt_error(const cli_spec_t *spec, const cli_opt_t *o, const char *fmt, ...)
-{
-	va_list ap;
-	cli_result_t r;
-
-	va_start(ap, fmt);
-	r = vreport(spec, o, fmt, ap);
-	va_end(ap);
-	return r;
-}
-
-cli_result_t cli_usage_error(const cli_spec_t *spec, const char *fmt, ...)
-{
-	va_list ap;
-	cli_result_t r;
-
-	va_start(ap, fmt);
-	r = vreport(spec, NULL, fmt, ap);
-	va_end(ap);
-	return r;
 }
 
 int cli_exit_status(cli_result_t r)
@@ -65,7 +40,7 @@ static cli_result_t set_whole(const cli_spec_t *spec, const cli_opt_t *o, const 
 	int64_t v = 0;
 
 	if (!num_text_int(text, &v) || ((double)v < o->lo) || ((double)v > o->hi)) {
-		return opt_error(spec, o, "needs a whole number in %.0f..%.0f, got '%s'", o->lo, o->hi,
+		return cli_error(spec, o->name, "needs a whole number in %.0f..%.0f, got '%s'", o->lo, o->hi,
 				 text);
 	}
 	*out = (uint64_t)v;
@@ -78,10 +53,10 @@ static cli_result_t set_real(const cli_spec_t *spec, const cli_opt_t *o, const c
 	const bool lo_open = (o->flags & CLI_LO_OPEN) != 0U;
 
 	if (!num_text_real(text, &v)) {
-		return opt_error(spec, o, "needs a number, got '%s'", text);
+		return cli_error(spec, o->name, "needs a number, got '%s'", text);
 	}
 	if ((v < o->lo) || (v > o->hi) || (lo_open && (v <= o->lo))) {
-		return opt_error(spec, o, "needs a number in %s%g, %g], got '%s'", lo_open ? "(" : "[",
+		return cli_error(spec, o->name, "needs a number in %s%g, %g], got '%s'", lo_open ? "(" : "[",
 				 o->lo, o->hi, text);
 	}
 	*(double *)o->dest = v;
@@ -105,7 +80,7 @@ static cli_result_t set_choice(const cli_spec_t *spec, const cli_opt_t *o, const
 			len = sizeof(list) - 1U;
 		}
 	}
-	return opt_error(spec, o, "is %s, got '%s'", list, text);
+	return cli_error(spec, o->name, "is %s, got '%s'", list, text);
 }
 
 /* Store one option's value (text is NULL for a flag). */
@@ -124,7 +99,7 @@ static cli_result_t set_value(const cli_spec_t *spec, const cli_opt_t *o, const 
 	case CLI_NAME:
 		if ((text[0] == '\0') || ((double)strlen(text) > o->hi) ||
 		    (strpbrk(text, " \t\n") != NULL)) {
-			return opt_error(spec, o, "needs 1..%.0f characters without blanks, got '%s'",
+			return cli_error(spec, o->name, "needs 1..%.0f characters without blanks, got '%s'",
 					 o->hi, text);
 		}
 		*(const char **)o->dest = text;
@@ -212,12 +187,12 @@ static cli_result_t take_option(const cli_spec_t *spec, int argc, char **argv, i
 			     &ambiguous);
 	}
 	if (o == NULL) {
-		return cli_usage_error(spec, "%s option '%s' (see --help)",
+		return cli_error(spec, NULL, "%s option '%s' (see --help)",
 				       ambiguous ? "ambiguous" : "unknown", w);
 	}
 	if (o->kind == CLI_FLAG) {
 		if (eq != NULL) {
-			return opt_error(spec, o, "takes no value, got '%s'", w);
+			return cli_error(spec, o->name, "takes no value, got '%s'", w);
 		}
 		return set_value(spec, o, NULL);
 	}
@@ -227,7 +202,7 @@ static cli_result_t take_option(const cli_spec_t *spec, int argc, char **argv, i
 		*i += 1;
 		value = argv[*i];
 	} else {
-		return opt_error(spec, o, "needs a value (%s)", (o->meta != NULL) ? o->meta : "see --help");
+		return cli_error(spec, o->name, "needs a value (%s)", (o->meta != NULL) ? o->meta : "see --help");
 	}
 	return set_value(spec, o, value);
 }
@@ -253,7 +228,7 @@ cli_result_t cli_parse(const cli_spec_t *spec, int argc, char **argv, const char
 		}
 		if (options_done || (w[0] != '-') || (w[1] == '\0')) {
 			if (n >= spec->max_pos) {
-				return cli_usage_error(spec, "unexpected argument '%s'", w);
+				return cli_error(spec, NULL, "unexpected argument '%s'", w);
 			}
 			pos[n++] = w;
 			continue;
@@ -264,7 +239,7 @@ cli_result_t cli_parse(const cli_spec_t *spec, int argc, char **argv, const char
 		}
 	}
 	if (n < spec->min_pos) {
-		return cli_usage_error(spec, "missing argument (see --help)");
+		return cli_error(spec, NULL, "missing argument (see --help)");
 	}
 	if (n_pos != NULL) {
 		*n_pos = n;

@@ -84,6 +84,8 @@ typedef struct {
 } cli_spec_t;
 
 #define CLI_COUNT(table) (sizeof(table) / sizeof((table)[0]))
+/* a spec's option table (a spec without one leaves both out) */
+#define CLI_SPEC_OPTS(table) .opts = (table), .n_opts = CLI_COUNT(table)
 
 typedef enum {
 	CLI_OK = 0,    /* parsed: run the command                         */
@@ -106,10 +108,12 @@ int cli_exit_status(cli_result_t r);
 /* The help text of spec on f. */
 void cli_help(const cli_spec_t *spec, FILE *f);
 
-/* One usage error of a command, for the checks the table cannot express
- * (options that need each other): "squeal-sim CMD: message" on stderr.
- * Returns CLI_USAGE. */
-cli_result_t cli_usage_error(const cli_spec_t *spec, const char *fmt, ...)
-	__attribute__((format(printf, 2, 3)));
+/* One usage error of a command: "squeal-sim CMD: --opt: message" on stderr
+ * (opt NULL: "squeal-sim CMD: message"). Returns CLI_USAGE.
+ * cli_usage_error(spec, fmt, ...): for the checks the table cannot express
+ * (options that need each other). */
+cli_result_t cli_error(const cli_spec_t *spec, const char *opt, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+#define cli_usage_error(spec, ...) cli_error((spec), NULL, __VA_ARGS__)
 
 #endif /* CLI_ARGS_H */

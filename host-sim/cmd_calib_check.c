@@ -56,8 +56,6 @@ int cmd_calib_check(int argc, char **argv)
 			       "                                   (LINE of the key responsible, left\n"
 			       "                                   out for whole-file problems).",
 		.closing = "Exit 2: bad usage.",
-		.opts = NULL,
-		.n_opts = 0U,
 		.min_pos = 1U,
 		.max_pos = 1U,
 	};

@@ -73,6 +73,7 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 	};
 	const cli_spec_t spec = {
 		.cmd = "classify",
+		CLI_SPEC_OPTS(opts),
 		.synopsis = "squeal-sim classify --v0 MPS --force N [--slope A] [--damping D]\n"
 			    "         [--omega0 W] [--mass M] [--mu-inf X] [--delta-mu Y]\n"
 			    "         [--criterion exact|cubic] [--json]\n"
@@ -84,8 +85,6 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 			   "Exit status: 0 classified, 1 input outside the model's domain\n"
 			   "(state \"invalid\") or a --calib file that does not load and set up\n"
 			   "(one line FILE:LINE: reason), 2 bad usage.",
-		.opts = opts,
-		.n_opts = CLI_COUNT(opts),
 	};
 	cli_result_t r;
 	size_t i;
@@ -372,8 +371,6 @@ int cmd_sweep(int argc, char **argv)
 		.synopsis = "squeal-sim sweep",
 		.description = "Prints the stability of the default brake over disc speed 0..3 m/s and\n"
 			       "pad force 2..30 kN, for both criteria.",
-		.opts = NULL,
-		.n_opts = 0U,
 	};
 	const cli_result_t cr = cli_parse(&spec, argc, argv, NULL, NULL);
 

@@ -608,6 +608,7 @@ int cmd_decode(int argc, char **argv)
 	};
 	const cli_spec_t spec = {
 		.cmd = "decode",
+		CLI_SPEC_OPTS(opts),
 		.synopsis = "squeal-sim decode [LOG|-] [--bus NAME] [--csv] [--calib FILE [--inputs-csv]]\n"
 			    "       squeal-sim decode --iface IF [--csv] [--calib FILE [--inputs-csv]]",
 		.description = "Prints every frame of the monitor's messages and inputs (squeal.dbc) as\n"
@@ -617,8 +618,6 @@ int cmd_decode(int argc, char **argv)
 			       "SIGINT/SIGTERM.",
 		.closing = "Malformed log lines are reported on stderr as LOG:LINE: message.\n"
 			   "Exit status: 0 done, 1 input error, 2 bad usage.",
-		.opts = opts,
-		.n_opts = CLI_COUNT(opts),
 		.min_pos = 0U,
 		.max_pos = 1U,
 	};

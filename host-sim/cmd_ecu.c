@@ -73,6 +73,7 @@ static int ecu_parse(int argc, char **argv, ecu_args_t *a)
 	};
 	const cli_spec_t spec = {
 		.cmd = "ecu",
+		CLI_SPEC_OPTS(opts),
 		.synopsis = "squeal-sim ecu --iface IF [--out-iface IF2] [--listen-only]\n"
 			    "         [--calib FILE] [--duration S] [--rcvbuf BYTES] [--verbose]",
 		.description = "Runs the monitor firmware on a SocketCAN interface (vcan0, can0, ...) in\n"
@@ -82,8 +83,6 @@ static int ecu_parse(int argc, char **argv, ecu_args_t *a)
 		.closing = "Exit status: 0 stopped by a signal or --duration, 1 interface or\n"
 			   "calibration error, 2 bad usage. Watchdog expiries (a stalled loop) are\n"
 			   "reported on stderr and counted in the summary.",
-		.opts = opts,
-		.n_opts = CLI_COUNT(opts),
 	};
 	cli_result_t r;
 

@@ -145,6 +145,7 @@ static int plant_parse(int argc, char **argv, plant_args_t *a)
 	};
 	const cli_spec_t spec = {
 		.cmd = "plant",
+		CLI_SPEC_OPTS(opts),
 		.synopsis = "squeal-sim plant (--iface IF | --log FILE|-) --scenario NAME|FILE\n"
 			    "         [--v0 MPS --force N] [--duration S] [--rate-hz N] [--calib FILE]\n"
 			    "         [--drop P] [--delay MS] [--corrupt-crc P] [--freeze-counter AFTER_S]\n"
@@ -165,8 +166,6 @@ static int plant_parse(int argc, char **argv, plant_args_t *a)
 			       "          comments (see scenarios/)",
 		.closing = "Exit status: 0 done (or stopped by SIGINT/SIGTERM), 1 interface or\n"
 			   "file error, 2 bad usage.",
-		.opts = opts,
-		.n_opts = CLI_COUNT(opts),
 	};
 	cli_result_t r;
 	bool point;

@@ -257,6 +257,7 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 	};
 	const cli_spec_t spec = {
 		.cmd = "replay",
+		CLI_SPEC_OPTS(opts),
 		.synopsis = "squeal-sim replay LOG|- [--calib FILE] [--bus NAME]\n"
 			    "         [--iface-out NAME] [--tail-ms MS] [--max-gap S] [--rss]\n"
 			    "         [--summary-json FILE|-] [--no-output] [--quiet]",
@@ -272,8 +273,6 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 		.closing = "CAN FD and XL frames are counted as unsupported (classic controller).\n"
 			   "Exit status: 0 done (also with malformed lines), 1 input/calibration\n"
 			   "error or no CAN frame in the log, 2 bad usage.",
-		.opts = opts,
-		.n_opts = CLI_COUNT(opts),
 		.min_pos = 1U,
 		.max_pos = 1U,
 	};

@@ -113,6 +113,7 @@ static int parse_sim_args(int argc, char **argv, sim_args_t *a)
 	};
 	const cli_spec_t spec = {
 		.cmd = "simulate",
+		CLI_SPEC_OPTS(opts),
 		.synopsis = "squeal-sim simulate [--v0 MPS] [--force N] [--slope A] [--damping D]\n"
 			    "         [--omega0 W] [--mass M] [--mu-inf X] [--delta-mu Y]\n"
 			    "         [--t-end S] [--dt S] [--dx M | --x0 M] [--xd0 MPS] [--rtol R]\n"
@@ -124,8 +125,6 @@ static int parse_sim_args(int argc, char **argv, sim_args_t *a)
 			       "t-end seconds, CSV kind,t_s,x_m,v_mps,mode on stdout, kind 'sample'\n"
 			       "every dt and 'switch' at each change of mode (slip, slip_neg, stick).",
 		.closing = "Exit status: 0 done, 1 the simulation failed or found no cycle, 2 bad usage.",
-		.opts = opts,
-		.n_opts = CLI_COUNT(opts),
 	};
 	cli_result_t r;
 	int m;
@@ -361,6 +360,7 @@ int oscsim_cmd_map(int argc, char **argv)
 	};
 	const cli_spec_t spec = {
 		.cmd = "map",
+		CLI_SPEC_OPTS(opts),
 		.synopsis = "squeal-sim map [--brake NAME|all] [--grid N] [--na N] [--nv N]\n"
 			    "         [--a-max A] [--v-max V] [--margin M] [--no-linear] [--csv FILE|-]\n"
 			    "         [--basin K] [--check] [--list]",
@@ -369,8 +369,6 @@ int oscsim_cmd_map(int argc, char **argv)
 			       "model with the exact and the cubic criterion, and reports how they agree.",
 		.closing = "Exit status: 0 done, 1 a brake failed or --check found a disagreement,\n"
 			   "2 bad usage.",
-		.opts = opts,
-		.n_opts = CLI_COUNT(opts),
 	};
 	cli_result_t r;
 	size_t i;

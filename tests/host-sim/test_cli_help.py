@@ -9,8 +9,8 @@ tables of every subcommand), both numeric builds:
     directory as it was (no side effects);
   - every option the command's parser accepts is listed in that help with a
     description: the list of options is read from the option tables in
-    host-sim/ (the CLI_OPT_*("name", ...) rows of the table named by the
-    command's cli_spec_t), not written here by hand;
+    host-sim/ (the CLI_OPT_*("name", ...) rows of the table that the
+    command's cli_spec_t names with CLI_SPEC_OPTS), not written here by hand;
   - an option a table does not have is one line "squeal-sim CMD: ..." on
     stderr and exit 2;
   - `squeal-sim --version` prints the version written in
@@ -55,9 +55,10 @@ def option_tables():
         for m in re.finditer(r"cli_spec_t\s+spec\s*=\s*\{(.*?)\n\s*\};", text, re.S):
             body = m.group(1)
             cmd = re.search(r'\.cmd\s*=\s*"([a-z-]+)"', body).group(1)
-            opts = re.search(r"\.opts\s*=\s*(\w+)", body).group(1)
-            above = [t for t in tables if t[0] < m.start() and t[1] == opts]
-            found[cmd] = [] if opts == "NULL" else above[-1][2]
+            opts = re.search(r"CLI_SPEC_OPTS\((\w+)\)", body)
+            above = [t for t in tables if opts is not None and t[0] < m.start() and
+                     t[1] == opts.group(1)]
+            found[cmd] = above[-1][2] if above else []
     return found
 
 
