@@ -13,7 +13,6 @@
  *   calib_sections_finish()  after the last line: defaults, names resolved,
  *                            every input and corner checked (calib_map.c),
  *                            cal->inputs / corners written
- *   calib_sections_write()   the sections of a calibration as text
  * Messages come without FILE:LINE (calib_text adds the line it read), except
  * calib_sections_finish's, which name the line of the key responsible.
  */
@@ -107,10 +106,10 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 			  unsigned int legacy_line, const char *legacy_key,
 			  calib_t *cal, calib_names_t *names, char *err, size_t errlen);
 
-/* Write the input and corner sections of cal (nothing for the legacy
- * form); inputs are named in0..in7 unless names is given (which also
- * gives their `signal` lines). */
-int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names);
+/* The flat keys a [corner] may give (its own brake, geometry and output
+ * identifiers), NULL-terminated; a protection's name (none, p01, ...). */
+extern const char *const calib_corner_flat_keys[];
+const char *calib_prot_name(unsigned int prot);
 
 /* decimal text <-> calib_dec_t, exactly: up to 17 significant digits,
  * plain or exponent notation as Python's repr(float) writes them

@@ -1,20 +1,24 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * calib_text: calibration text files <-> calib_t. See calib_text.h for the
- * format. This file reads the lines (comments, `[section]` headers,
- * `key = value`) and names FILE:LINE in every message; what a key means is
- * calib_sections.c's (the flat keys' table and the sections).
+ * format. This file is the file: it reads the lines (comments, `[section]`
+ * headers, `key = value`), names FILE:LINE in every message, and writes a
+ * calibration back as a file; what a key means is calib_sections.c's (the
+ * flat keys' table and the sections), which this file calls and which calls
+ * nothing here.
  */
 #include "calib_text.h"
 
 #include <ctype.h>
 #include <errno.h>
+#include <inttypes.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "calib_map.h"
+#include "input_conv.h"
 #include "sq_status.h"
 #include "text_errf.h"
 
@@ -279,6 +283,134 @@ int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, ch
 	return rc;
 }
 
+static void put_dec(FILE *f, const char *key, calib_dec_t d)
+{
+	char b[64];
+
+	calib_dec_format(d, b, sizeof(b));
+	fprintf(f, "%s = %s\n", key, b);
+}
+
+static void put_sig(FILE *f, const char *prefix, const can_signal_t *s)
+{
+	fprintf(f, "%sstart_bit = %u\n%slength = %u\n%sbyte_order = %s\n", prefix, s->start_bit,
+		prefix, s->length, prefix, s->byte_order != 0U ? "motorola" : "intel");
+}
+
+/* The input and corner sections of cal (nothing for the legacy form); the
+ * inputs are named in0..in7 unless names gives their names (and their
+ * `signal` lines). */
+static int write_sections(FILE *f, const calib_t *cal, const calib_names_t *names)
+{
+	unsigned int i;
+	char nm[CALIB_MAX_INPUTS][CALIB_SECTION_NAME_LEN];
+
+	if (cal->n_corners == 0U) {
+		return SQ_OK;
+	}
+	for (i = 0; i < cal->n_inputs; i++) {
+		const calib_input_t *in = &cal->inputs[i];
+		unsigned int j;
+
+		if (names != NULL) {
+			snprintf(nm[i], sizeof(nm[i]), "%s", names->input[i]);
+		} else {
+			snprintf(nm[i], sizeof(nm[i]), "in%u", i);
+		}
+		fprintf(f, "\n[input %s]\nid = 0x%" PRIX32 "\n", nm[i], in->id);
+		if ((in->flags & CALIB_IN_EXTENDED) != 0U) {
+			fprintf(f, "extended = yes\n");
+		}
+		fprintf(f, "min_dlc = %u\n", in->min_dlc);
+		if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
+			fprintf(f, "exact_dlc = yes\n");
+		}
+		put_sig(f, "", &in->sig);
+		fprintf(f, "signed = %s\n", in->sig.is_signed != 0U ? "yes" : "no");
+		put_dec(f, "factor", in->factor);
+		put_dec(f, "offset", in->offset);
+		fprintf(f, "unit = %s\n", input_unit_name((input_unit_t)in->unit));
+		if ((names != NULL) && (names->signal[i][0] != '\0')) {
+			fprintf(f, "signal = %s\n", names->signal[i]);
+		}
+		if ((in->flags & CALIB_IN_MUX) != 0U) {
+			put_sig(f, "mux_", &in->mux);
+			fprintf(f, "mux_value = %" PRIu32 "\n", in->mux_value);
+			if (in->mux_value_max != in->mux_value) {
+				fprintf(f, "mux_value_max = %" PRIu32 "\n", in->mux_value_max);
+			}
+		}
+		if ((in->flags & CALIB_IN_MUX2) != 0U) {
+			put_sig(f, "mux2_", &in->mux2);
+			fprintf(f, "mux2_value = %" PRIu32 "\n", in->mux2_value);
+			if (in->mux2_value_max != in->mux2_value) {
+				fprintf(f, "mux2_value_max = %" PRIu32 "\n", in->mux2_value_max);
+			}
+		}
+		if ((in->flags & CALIB_IN_NA) != 0U) {
+			fprintf(f, "na_raw = 0x%" PRIX32 "\n", in->na_raw);
+		}
+		if ((in->flags & CALIB_IN_NA2) != 0U) {
+			fprintf(f, "na_raw2 = 0x%" PRIX32 "\n", in->na_raw2);
+		}
+		if ((in->flags & CALIB_IN_QUALIFIER) != 0U) {
+			fprintf(f, "qualifier_bit = %u\nqualifier_invalid = %u\n", in->qualifier_bit,
+				in->qualifier_invalid);
+		}
+		fprintf(f, "protection = %s\n", calib_prot_name(in->protection));
+		if (in->protection == (uint8_t)CALIB_PROT_P01) {
+			fprintf(f, "data_id = 0x%04X\n", in->data_id);
+		}
+		if (in->protection == (uint8_t)CALIB_PROT_P02) {
+			fprintf(f, "data_id_list =");
+			for (j = 0; j < CALIB_DATA_ID_LIST_LEN; j++) {
+				fprintf(f, " 0x%02X", in->data_id_list[j]);
+			}
+			fprintf(f, "\n");
+		}
+		if (in->protection == (uint8_t)CALIB_PROT_COUNTER) {
+			put_sig(f, "counter_", &in->counter);
+			fprintf(f, "counter_modulus = %u\n", in->counter_modulus);
+		}
+		if (in->protection != (uint8_t)CALIB_PROT_NONE) {
+			fprintf(f, "max_delta_counter = %u\n", in->max_delta_counter);
+		}
+		fprintf(f, "period_ms = %u\nstale_cycles = %u\n", in->period_ms, in->stale_cycles);
+		put_dec(f, "max", in->max);
+		put_dec(f, "min", in->min);
+		put_dec(f, "step_max", in->step_max);
+	}
+	for (i = 0; i < cal->n_corners; i++) {
+		const calib_corner_t *c = &cal->corners[i];
+		calib_t tmp = *cal;
+		size_t k;
+
+		calib_flat_from_corner(c, &tmp);
+		fprintf(f, "\n[corner %s]\nspeed = %s\nforce = %s\n", calib_corner_pos_name(c->pos),
+			nm[c->speed_input], nm[c->force_input]);
+		if (c->piston_area_cmm2 != 0U) {
+			fprintf(f, "piston_area_mm2 = %u.%02u\n", c->piston_area_cmm2 / 100U,
+				c->piston_area_cmm2 % 100U);
+		}
+		if (c->torque_share_ppm != 1000000U) {
+			fprintf(f, "torque_share = %u.%06u\n", c->torque_share_ppm / 1000000U,
+				c->torque_share_ppm % 1000000U);
+		}
+		fprintf(f, "efficiency = %u.%06u\naxle_factor = %u.%06u\nfriction_faces = %u\n",
+			c->efficiency_ppm / 1000000U, c->efficiency_ppm % 1000000U,
+			c->axle_factor_ppm / 1000000U, c->axle_factor_ppm % 1000000U,
+			c->friction_faces);
+		for (k = 0; calib_corner_flat_keys[k] != NULL; k++) {
+			char b[48];
+
+			calib_key_format((size_t)calib_key_find(calib_corner_flat_keys[k]), &tmp, b,
+					 sizeof(b));
+			fprintf(f, "%s = %s\n", calib_corner_flat_keys[k], b);
+		}
+	}
+	return ferror(f) ? SQ_EIO : SQ_OK;
+}
+
 int calib_text_write(FILE *f, const calib_t *cal)
 {
 	return calib_text_write_map(f, cal, NULL);
@@ -314,7 +446,7 @@ int calib_text_write_map(FILE *f, const calib_t *cal, const calib_names_t *names
 		snprintf(line, sizeof(line), "input_iface = %s", names->input_iface);
 		fprintf(f, "%-34s # the log/SocketCAN interface of the inputs (host only)\n", line);
 	}
-	if (calib_sections_write(f, cal, names) != SQ_OK) {
+	if (write_sections(f, cal, names) != SQ_OK) {
 		return SQ_EIO;
 	}
 	fflush(f);
