@@ -17,9 +17,12 @@
 #include <strings.h>
 
 #include "calib_map.h"
-#include "calib_text.h"
+#include "num_text.h"
+#include "text_errf.h"
 #include "input_conv.h"
+#include "sq_contract.h"
 #include "sq_status.h"
+#include "squeal_model.h"
 
 static const char *const pos_names[CALIB_MAX_CORNERS] = { "FL", "FR", "RL", "RR" };
 static const char *const prot_names[CALIB_PROT_COUNT] = { "none", "p01", "p02", "counter", "p05" };
@@ -32,6 +35,473 @@ void calib_sections_init(calib_sections_t *s)
 bool calib_sections_open(const calib_sections_t *s)
 {
 	return s->count > 0U;
+}
+
+/* The words of a yes/no and of a byte order value (any case). */
+typedef struct {
+	const char *name;
+	uint8_t value;
+} choice_t;
+
+static const choice_t bool_choices[] = {
+	{ "1", 1U }, { "yes", 1U }, { "true", 1U }, { "on", 1U },
+	{ "0", 0U }, { "no", 0U }, { "false", 0U }, { "off", 0U }, { NULL, 0U }
+};
+static const choice_t order_choices[] = {
+	{ "intel", (uint8_t)CAN_SIGNAL_INTEL }, { "motorola", (uint8_t)CAN_SIGNAL_MOTOROLA },
+	{ NULL, 0U }
+};
+
+static bool parse_choice(const choice_t *choices, const char *t, uint8_t *out)
+{
+	size_t i;
+
+	for (i = 0U; choices[i].name != NULL; i++) {
+		if (strcasecmp(t, choices[i].name) == 0) {
+			*out = choices[i].value;
+			return true;
+		}
+	}
+	return false;
+}
+
+/* ---- the flat keys ------------------------------------------------------------ */
+
+typedef enum {
+	KIND_Q,       /* value * scale, rounded to nearest (Q-format fields)   */
+	KIND_SCALED,  /* value * scale must be a whole number                  */
+	KIND_INT,     /* integer, decimal or 0x hex                            */
+	KIND_HEX,     /* integer, written as hex (CAN identifiers)             */
+	KIND_CRITERION, /* exact | cubic                                       */
+	KIND_BOOL     /* 0/1, no/yes, false/true, off/on                       */
+} key_kind_t;
+
+typedef struct {
+	const char *key;
+	uint16_t offset;
+	uint8_t size;      /* bytes in calib_t: 1, 2, 4 */
+	uint8_t is_signed; /* the int32_t Q-format model fields */
+	key_kind_t kind;
+	double scale;      /* stored = physical * scale (KIND_Q, KIND_SCALED) */
+	const char *unit;
+	const char *what;
+} key_desc_t;
+
+/* The valid range of each key is calib.c's (calib_field_range()). */
+#define K(key, field, kind, scale, unit, what) \
+	{ key, (uint16_t)offsetof(calib_t, field), \
+	  (uint8_t)sizeof(((calib_t *)0)->field), \
+	  (uint8_t)(((kind) == KIND_Q) && (sizeof(((calib_t *)0)->field) == 4U)), \
+	  kind, scale, unit, what }
+
+/* the standard deviation of a model parameter: key KEY_sd, a Q-format field */
+#define K_SD(param, field, scale, unit) \
+	K(param "_sd", field, KIND_Q, scale, unit, "standard deviation of " param)
+
+#define Q16 65536.0
+#define Q12 4096.0
+#define Q15 32768.0
+#define Q24 16777216.0
+#define Q30 1073741824.0
+
+static const key_desc_t key_table[] = {
+	K("mass_kg", mass_q16, KIND_Q, Q16, "kg",
+	  "moving mass of pad and caliper m"),
+	K("omega0_radps", omega0_q12, KIND_Q, Q12, "rad/s",
+	  "natural angular frequency w0"),
+	K("damping", damping_q30, KIND_Q, Q30, "-",
+	  "damping ratio D"),
+	K("mu_inf", mu_inf_q30, KIND_Q, Q30, "-",
+	  "friction coefficient at high sliding speed"),
+	K("delta_mu", delta_mu_q30, KIND_Q, Q30, "-",
+	  "mu_0 - mu_inf (mu_inf + delta_mu >= 0)"),
+	K("slope_spm", slope_q24, KIND_Q, Q24, "s/m",
+	  "friction slope a"),
+	K("criterion", criterion, KIND_CRITERION, 1.0, "",
+	  "exact (I1(s)/s, default) or cubic (the paper's)"),
+	K("pad_radius_m", pad_radius_um, KIND_SCALED, 1e6, "m",
+	  "effective pad radius r_p (resolution 1 um)"),
+	K("wheel_radius_m", wheel_radius_um, KIND_SCALED, 1e6, "m",
+	  "rolling radius r_w (resolution 1 um)"),
+	K("bitrate_kbps", bitrate_kbps, KIND_INT, 1.0, "kbit/s",
+	  "CAN bit rate (the ECU's controller; SocketCAN ignores it)"),
+	K("disc_speed_id", disc_speed_id, KIND_HEX, 1.0, "",
+	  "DiscSpeed identifier (11 bit)"),
+	K("pad_force_id", pad_force_id, KIND_HEX, 1.0, "",
+	  "PadForce identifier"),
+	K("status_id", status_id, KIND_HEX, 1.0, "",
+	  "SquealStatus identifier"),
+	K("detail_id", detail_id, KIND_HEX, 1.0, "",
+	  "SquealDetail identifier"),
+	K("diag_id", diag_id, KIND_HEX, 1.0, "",
+	  "SquealDiag identifier"),
+	K("detail2_id", detail2_id, KIND_HEX, 1.0, "",
+	  "SquealDetail2 identifier"),
+	K("e2e_check_inputs", e2e_check_inputs, KIND_BOOL, 1.0, "",
+	  "check the inputs' E2E CRC and counter (yes/no)"),
+	K("e2e_max_delta_counter", e2e_max_delta_counter, KIND_INT, 1.0, "",
+	  "E2E P01 MaxDeltaCounterInit"),
+	K("input_period_ms", input_period_ms, KIND_INT, 1.0, "ms",
+	  "expected input period"),
+	K("status_period_ms", status_period_ms, KIND_INT, 1.0, "ms",
+	  "SquealStatus period"),
+	K("detail_period_ms", detail_period_ms, KIND_INT, 1.0, "ms",
+	  "SquealDetail/SquealDetail2 period"),
+	K("diag_period_ms", diag_period_ms, KIND_INT, 1.0, "ms",
+	  "SquealDiag period"),
+	K("stale_cycles", stale_cycles, KIND_INT, 1.0, "periods",
+	  "missed input periods before an input is stale"),
+	K("speed_max_radps", speed_max_raw, KIND_SCALED, 100.0, "rad/s",
+	  "plausible disc speed maximum (resolution 0.01 rad/s)"),
+	K("speed_step_max_radps", speed_step_max_raw, KIND_SCALED, 100.0,
+	  "rad/s", "plausible disc speed change between frames"),
+	K("force_max_n", force_max_raw, KIND_SCALED, 2.0, "N",
+	  "plausible pad force maximum (resolution 0.5 N)"),
+	K("force_step_max_n", force_step_max_raw, KIND_SCALED, 2.0, "N",
+	  "plausible pad force change between frames"),
+	K("lowpass_alpha", lowpass_alpha_q15, KIND_Q, Q15, "-",
+	  "first-order input filter weight of a new value (1 = off)"),
+	K("v0_min_mps", v0_min_umps, KIND_SCALED, 1e6, "m/s",
+	  "not sliding below this disc surface speed (resolution 1 um/s)"),
+	K("force_min_n", force_min_mn, KIND_SCALED, 1e3, "N",
+	  "not sliding below this pad force (resolution 1 mN)"),
+	K("debounce_count", debounce_count, KIND_INT, 1.0, "",
+	  "agreeing classifications before a state change"),
+	K("hyst_lnq", hyst_lnq_micro, KIND_SCALED, 1e6, "-",
+	  "Hopf hysteresis band in |ln 2Q| (resolution 1e-6)"),
+	K("hyst_rho", hyst_rho_ppm, KIND_SCALED, 1e6, "-",
+	  "stable-border hysteresis band in |rho - 1| (resolution 1e-6)"),
+	K("rho_warn", rho_warn_ppm, KIND_SCALED, 1e6, "-",
+	  "bistable with basin ratio below this -> warning level 2"),
+	K("watchdog_ms", watchdog_ms, KIND_INT, 1.0, "ms",
+	  "watchdog timeout"),
+	K("input_bus", input_bus, KIND_INT, 1.0, "",
+	  "bus the inputs come from (0 = CAN1 / --iface, 1 = CAN2 / --out-iface)"),
+	K("output_bus", output_bus, KIND_INT, 1.0, "",
+	  "bus the Squeal* frames go out on"),
+	K("input_listen_only", input_listen_only, KIND_BOOL, 1.0, "",
+	  "input bus listen-only: nothing sent on it, no ACK (yes/no)"),
+	/* uncertainty (issue 12, docs/uncertainty.md): 0 <= sd <= |param|
+	 * (mu_inf's <= 1.5), |corr| <= 1; all 0: crisp classes as before */
+	K_SD("mass_kg", sd.mass_sd_q16, Q16, "kg"),
+	K_SD("omega0_radps", sd.omega0_sd_q12, Q12, "rad/s"),
+	K_SD("damping", sd.damping_sd_q30, Q30, "-"),
+	K("mu_inf_sd", sd.mu_inf_sd_q30, KIND_Q, Q30, "-",
+	  "standard deviation of mu_inf (carried; enters no border)"),
+	K_SD("delta_mu", sd.delta_mu_sd_q30, Q30, "-"),
+	K_SD("slope_spm", sd.slope_sd_q24, Q24, "s/m"),
+	K("slope_delta_mu_corr", sd.slope_delta_mu_corr_q30, KIND_Q, Q30, "-",
+	  "correlation of slope_spm and delta_mu estimates"),
+	K("uncertain_k_sigma", uncertain_k_q16, KIND_Q, Q16, "sigma",
+	  "within k sigma of a border: the more severe neighbouring level (0 = off)"),
+};
+
+#define KEY_COUNT (sizeof(key_table) / sizeof(key_table[0]))
+_Static_assert(KEY_COUNT == CALIB_KEY_COUNT, "one key per calib_t field");
+
+size_t calib_key_count(void)
+{
+	return KEY_COUNT;
+}
+
+const char *calib_key_name(size_t i)
+{
+	return (i < KEY_COUNT) ? key_table[i].key : NULL;
+}
+
+static int64_t field_get(const calib_t *cal, const key_desc_t *k)
+{
+	const uint8_t *p = (const uint8_t *)cal + k->offset;
+	uint8_t u8;
+	uint16_t u16;
+	uint32_t u32;
+	int32_t i32;
+
+	switch (k->size) {
+	case 1U:
+		memcpy(&u8, p, 1U);
+		return u8;
+	case 2U:
+		memcpy(&u16, p, 2U);
+		return u16;
+	default:
+		if (k->is_signed != 0U) {
+			memcpy(&i32, p, 4U);
+			return i32;
+		}
+		memcpy(&u32, p, 4U);
+		return u32;
+	}
+}
+
+/* v is within the key's range, which fits the field */
+static void field_set(calib_t *cal, const key_desc_t *k, int64_t v)
+{
+	uint8_t *p = (uint8_t *)cal + k->offset;
+	uint8_t u8 = (uint8_t)v;
+	uint16_t u16 = (uint16_t)v;
+	uint32_t u32 = (uint32_t)v;
+	int32_t i32 = (int32_t)v;
+
+	switch (k->size) {
+	case 1U:
+		memcpy(p, &u8, 1U);
+		break;
+	case 2U:
+		memcpy(p, &u16, 2U);
+		break;
+	default:
+		if (k->is_signed != 0U) {
+			memcpy(p, &i32, 4U);
+		} else {
+			memcpy(p, &u32, 4U);
+		}
+		break;
+	}
+}
+
+static double physical(const key_desc_t *k, int64_t raw)
+{
+	return (double)raw / k->scale;
+}
+
+/* Does text parse back (as convert_value does) to exactly raw? */
+static bool reads_back(const key_desc_t *k, const char *text, int64_t raw)
+{
+	const double v = strtod(text, NULL) * k->scale;
+	const int64_t iv = (int64_t)llround(v);
+
+	if (iv != raw) {
+		return false;
+	}
+	return (k->kind != KIND_SCALED) ||
+	       (fabs(v - (double)iv) <= 1e-6 * fmax(1.0, fabs(v)));
+}
+
+/* Shortest %g text of a stored value that parses back to the same value. */
+static void format_value(const key_desc_t *k, int64_t raw, char *buf, size_t len)
+{
+	int prec;
+
+	switch (k->kind) {
+	case KIND_CRITERION:
+		snprintf(buf, len, "%s", raw == (int64_t)SQUEAL_CRITERION_CUBIC ?
+			 "cubic" : "exact");
+		return;
+	case KIND_BOOL:
+		snprintf(buf, len, "%s", raw != 0 ? "yes" : "no");
+		return;
+	case KIND_HEX:
+		snprintf(buf, len, "0x%03llX", (unsigned long long)raw);
+		return;
+	case KIND_INT:
+		snprintf(buf, len, "%lld", (long long)raw);
+		return;
+	default:
+		break;
+	}
+	/* plain decimals first (5000, 0.023), exponent form for the tiny */
+	for (prec = 0; prec <= 9; prec++) {
+		snprintf(buf, len, "%.*f", prec, physical(k, raw));
+		if (reads_back(k, buf, raw)) {
+			return;
+		}
+	}
+	for (prec = 1; prec <= 17; prec++) {
+		snprintf(buf, len, "%.*g", prec, physical(k, raw));
+		if (reads_back(k, buf, raw)) {
+			return;
+		}
+	}
+	snprintf(buf, len, "%.17g", physical(k, raw));
+}
+
+static const key_desc_t *find_key(const char *name)
+{
+	size_t i;
+
+	for (i = 0; i < KEY_COUNT; i++) {
+		if (strcmp(key_table[i].key, name) == 0) {
+			return &key_table[i];
+		}
+	}
+	return NULL;
+}
+
+/* The stored range of a key: calib.c's table is the one source. A key
+ * whose field calib.c does not know is a programming error: empty range. */
+static void key_range(const key_desc_t *k, int64_t *min, int64_t *max)
+{
+	if (calib_field_range(k->offset, min, max) != SQ_OK) {
+		*min = 1;
+		*max = 0;
+	}
+}
+
+static void range_text(const key_desc_t *k, char *buf, size_t len)
+{
+	char lo[40];
+	char hi[40];
+
+	int64_t min;
+	int64_t max;
+
+	key_range(k, &min, &max);
+	format_value(k, min, lo, sizeof(lo));
+	format_value(k, max, hi, sizeof(hi));
+	snprintf(buf, len, "%s .. %s%s%s", lo, hi,
+		 (k->unit[0] != '\0' && strcmp(k->unit, "-") != 0) ? " " : "",
+		 strcmp(k->unit, "-") != 0 ? k->unit : "");
+}
+
+/* Convert one value; 0 or -1 with err written (without the FILE:LINE). */
+static int convert_value(const key_desc_t *k, const char *text, int64_t *raw,
+			 char *err, size_t errlen)
+{
+	char range[100];
+	double v;
+	uint8_t b = 0U;
+	int64_t iv;
+	int64_t min;
+	int64_t max;
+
+	key_range(k, &min, &max);
+	range_text(k, range, sizeof(range));
+	switch (k->kind) {
+	case KIND_CRITERION:
+		if (strcmp(text, "exact") == 0) {
+			*raw = (int64_t)SQUEAL_CRITERION_EXACT;
+		} else if (strcmp(text, "cubic") == 0) {
+			*raw = (int64_t)SQUEAL_CRITERION_CUBIC;
+		} else {
+			text_errf(err, errlen, "%s must be 'exact' or 'cubic', got '%s'",
+				k->key, text);
+			return -1;
+		}
+		return 0;
+	case KIND_BOOL:
+		if (parse_choice(bool_choices, text, &b)) {
+			*raw = b;
+		} else {
+			text_errf(err, errlen, "%s must be yes/no (or 1/0), got '%s'",
+				k->key, text);
+			return -1;
+		}
+		return 0;
+	case KIND_INT:
+	case KIND_HEX:
+		if (!num_text_int(text, &iv)) {
+			text_errf(err, errlen, "%s needs an integer (decimal or 0x hex), got '%s'",
+				k->key, text);
+			return -1;
+		}
+		break;
+	default:
+		if (!num_text_real(text, &v)) {
+			text_errf(err, errlen, "%s needs a number, got '%s'", k->key, text);
+			return -1;
+		}
+		v *= k->scale;
+		if (!(v >= (double)min - 0.5) || !(v <= (double)max + 0.5)) {
+			text_errf(err, errlen, "%s = %s is out of range (%s)", k->key,
+				text, range);
+			return -1;
+		}
+		iv = (int64_t)llround(v);
+		if ((k->kind == KIND_SCALED) &&
+		    (fabs(v - (double)iv) > 1e-6 * fmax(1.0, fabs(v)))) {
+			char step[40];
+
+			format_value(k, 1, step, sizeof(step));
+			text_errf(err, errlen, "%s = %s is not a whole multiple of its resolution %s%s%s",
+				k->key, text, step,
+				strcmp(k->unit, "-") != 0 ? " " : "",
+				strcmp(k->unit, "-") != 0 ? k->unit : "");
+			return -1;
+		}
+		break;
+	}
+	if ((iv < min) || (iv > max)) {
+		text_errf(err, errlen, "%s = %s is out of range (%s)", k->key, text, range);
+		return -1;
+	}
+	*raw = iv;
+	return 0;
+}
+
+/* A flat key by name (the corner sections read theirs with the flat rules). */
+static int flat_key_set(const char *key, const char *value, calib_t *cal, char *msg,
+			size_t msglen)
+{
+	const key_desc_t *k = find_key(key);
+	int64_t raw = 0;
+
+	if (k == NULL) {
+		text_errf(msg, msglen, "unknown key '%s'", key);
+		return -1;
+	}
+	if (convert_value(k, value, &raw, msg, msglen) != 0) {
+		return -1;
+	}
+	field_set(cal, k, raw);
+	return 0;
+}
+
+/* The flat keys that describe the legacy DiscSpeed/PadForce inputs: a file
+ * with [corner] sections configures its inputs there instead. */
+static bool legacy_input_key(const char *key)
+{
+	static const char *const legacy[] = { "disc_speed_id", "pad_force_id",
+		"e2e_check_inputs", "input_period_ms", "speed_max_radps",
+		"speed_step_max_radps", "force_max_n", "force_step_max_n" };
+	size_t i;
+
+	for (i = 0; i < sizeof(legacy) / sizeof(legacy[0]); i++) {
+		if (strcmp(key, legacy[i]) == 0) {
+			return true;
+		}
+	}
+	return false;
+}
+int calib_key_find(const char *name)
+{
+	const key_desc_t *k = find_key(name);
+
+	return (k != NULL) ? (int)(k - key_table) : -1;
+}
+
+bool calib_key_legacy_input(size_t i)
+{
+	return (i < KEY_COUNT) && legacy_input_key(key_table[i].key);
+}
+
+int calib_key_set(size_t i, const char *value, calib_t *cal, char *msg, size_t msglen)
+{
+	int64_t raw = 0;
+
+	HAL_REQUIRE(i < KEY_COUNT);
+	if (convert_value(&key_table[i], value, &raw, msg, msglen) != 0) {
+		return -1;
+	}
+	field_set(cal, &key_table[i], raw);
+	return 0;
+}
+
+void calib_key_format(size_t i, const calib_t *cal, char *buf, size_t len)
+{
+	HAL_REQUIRE(i < KEY_COUNT);
+	format_value(&key_table[i], field_get(cal, &key_table[i]), buf, len);
+}
+
+void calib_key_comment(size_t i, const calib_t *def, char *buf, size_t len)
+{
+	char dval[48];
+	char range[100];
+
+	HAL_REQUIRE(i < KEY_COUNT);
+	format_value(&key_table[i], field_get(def, &key_table[i]), dval, sizeof(dval));
+	range_text(&key_table[i], range, sizeof(range));
+	snprintf(buf, len, "%s; default %s; range %s", key_table[i].what, dval, range);
 }
 
 /* ---- numbers ---------------------------------------------------------------- */
@@ -151,32 +621,6 @@ double calib_dec_value(calib_dec_t d)
 	return (double)d.mant * pow(10.0, d.exp);
 }
 
-static bool parse_bool(const char *t, uint8_t *out)
-{
-	if ((strcmp(t, "1") == 0) || (strcasecmp(t, "yes") == 0) || (strcasecmp(t, "true") == 0)) {
-		*out = 1U;
-		return true;
-	}
-	if ((strcmp(t, "0") == 0) || (strcasecmp(t, "no") == 0) || (strcasecmp(t, "false") == 0)) {
-		*out = 0U;
-		return true;
-	}
-	return false;
-}
-
-static bool parse_order(const char *t, uint8_t *out)
-{
-	if (strcasecmp(t, "intel") == 0) {
-		*out = (uint8_t)CAN_SIGNAL_INTEL;
-		return true;
-	}
-	if (strcasecmp(t, "motorola") == 0) {
-		*out = (uint8_t)CAN_SIGNAL_MOTOROLA;
-		return true;
-	}
-	return false;
-}
-
 /* ---- lines --------------------------------------------------------------------- */
 
 bool calib_iface_name_valid(const char *n)
@@ -211,7 +655,7 @@ static bool valid_name(const char *n)
 	return true;
 }
 
-static int pos_of(const char *n)
+int calib_corner_pos(const char *n)
 {
 	int i;
 
@@ -220,35 +664,6 @@ static int pos_of(const char *n)
 			return i;
 		}
 	}
-	return -1;
-}
-
-int calib_text_brake(const calib_t *cal, const char *pos_name, calib_corner_t *brake,
-		     char *msg, size_t msglen)
-{
-	int pos;
-	uint32_t k;
-
-	if (pos_name == NULL) {
-		calib_corner_defaults(cal, 0U, brake);
-		return 0;
-	}
-	pos = pos_of(pos_name);
-	if (pos < 0) {
-		calib_text_errf(msg, msglen, "unknown corner '%s' (FL, FR, RL or RR)", pos_name);
-		return -1;
-	}
-	for (k = 0U; k < cal->n_corners; k++) {
-		if (cal->corners[k].pos == (uint8_t)pos) {
-			*brake = cal->corners[k];
-			return 0;
-		}
-	}
-	if ((cal->n_corners == 0U) && (pos == 0)) {
-		calib_corner_defaults(cal, 0U, brake); /* the legacy form's one corner */
-		return 0;
-	}
-	calib_text_errf(msg, msglen, "the calibration has no [corner %s]", pos_names[pos]);
 	return -1;
 }
 
@@ -264,29 +679,29 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 
 	n = sscanf(text, "[%15s %63[^] \t] ]%7s", kind, name, extra);
 	if ((n != 2) || (text[strlen(text) - 1U] != ']')) {
-		calib_text_errf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
+		text_errf(msg, msglen, "expected '[input NAME]' or '[corner POS]', got '%s'", text);
 		return -1;
 	}
 	if ((strcmp(kind, "input") != 0) && (strcmp(kind, "corner") != 0)) {
-		calib_text_errf(msg, msglen, "unknown section '%s' (input or corner)", kind);
+		text_errf(msg, msglen, "unknown section '%s' (input or corner)", kind);
 		return -1;
 	}
 	if (s->count >= CALIB_SECTIONS_MAX) {
-		calib_text_errf(msg, msglen, "too many sections");
+		text_errf(msg, msglen, "too many sections");
 		return -1;
 	}
 	if (strcmp(kind, "input") == 0) {
 		if (!valid_name(name)) {
-			calib_text_errf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
+			text_errf(msg, msglen, "input name '%s': 1..15 of A-Z a-z 0-9 _", name);
 			return -1;
 		}
 		if (s->inputs >= CALIB_MAX_INPUTS) {
-			calib_text_errf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
+			text_errf(msg, msglen, "more than %u inputs", CALIB_MAX_INPUTS);
 			return -1;
 		}
 	} else {
-		if (pos_of(name) < 0) {
-			calib_text_errf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
+		if (calib_corner_pos(name) < 0) {
+			text_errf(msg, msglen, "corner '%s': FL, FR, RL or RR", name);
 			return -1;
 		}
 	}
@@ -295,7 +710,7 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 
 		if ((o->is_corner == (strcmp(kind, "corner") == 0)) &&
 		    (strcasecmp(o->name, name) == 0)) {
-			calib_text_errf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
+			text_errf(msg, msglen, "duplicate %s '%s' (first on line %u)", kind, name, o->line);
 			return -1;
 		}
 	}
@@ -303,7 +718,7 @@ int calib_sections_header(calib_sections_t *s, const char *text, unsigned int li
 	memset(sec, 0, sizeof(*sec));
 	sec->is_corner = strcmp(kind, "corner") == 0;
 	{
-		/* valid_name()/pos_of() bounded the length */
+		/* valid_name()/calib_corner_pos() bounded the length */
 		const size_t len = strnlen(name, sizeof(sec->name) - 1U);
 
 		memcpy(sec->name, name, len);
@@ -327,14 +742,14 @@ int calib_sections_key(calib_sections_t *s, const char *key, const char *value,
 
 	for (i = 0; i < sec->nkv; i++) {
 		if (strcmp(sec->kv[i].key, key) == 0) {
-			calib_text_errf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
+			text_errf(msg, msglen, "duplicate key '%s' (first set on line %u)", key,
 			     sec->kv[i].line);
 			return -1;
 		}
 	}
 	if ((sec->nkv >= CALIB_SECTION_KEYS_MAX) || (strlen(key) >= sizeof(sec->kv[0].key)) ||
 	    (strlen(value) >= sizeof(sec->kv[0].value))) {
-		calib_text_errf(msg, msglen, "key or value too long, or too many keys in the section");
+		text_errf(msg, msglen, "key or value too long, or too many keys in the section");
 		return -1;
 	}
 	snprintf(sec->kv[sec->nkv].key, sizeof(sec->kv[0].key), "%s", key);
@@ -376,7 +791,7 @@ static int kv_err(const ctx_t *c, const calib_section_kv_t *kv, const char *fmt,
 	va_start(ap, fmt);
 	vsnprintf(m, sizeof(m), fmt, ap);
 	va_end(ap);
-	calib_text_errf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
+	text_errf(c->err, c->errlen, "%s:%u: [%s %s] %s", c->file, kv != NULL ? kv->line : c->sec->line,
 	     c->sec->is_corner ? "corner" : "input", c->sec->name, m);
 	return -1;
 }
@@ -393,7 +808,7 @@ static int get_int(const ctx_t *c, const char *key, int64_t lo, int64_t hi, bool
 	if (kv == NULL) {
 		return required ? kv_err(c, NULL, "%s is required", key) : 0;
 	}
-	if (!calib_text_parse_int(kv->value, out)) {
+	if (!num_text_int(kv->value, out)) {
 		return kv_err(c, kv, "%s needs an integer (decimal or 0x hex), got '%s'", key,
 			      kv->value);
 	}
@@ -417,28 +832,25 @@ static int get_u8(const ctx_t *c, const char *key, int64_t lo, int64_t hi, bool 
 	return 0;
 }
 
-static int get_bool(const ctx_t *c, const char *key, uint8_t *out, bool *present)
+/* A key whose value is one of choices (what: them in words, for the messages). */
+static int get_choice(const ctx_t *c, const char *key, const choice_t *choices, const char *what,
+		      bool required, uint8_t *out, bool *present)
 {
 	const calib_section_kv_t *kv = kv_of(c->sec, key);
 
 	*present = kv != NULL;
-	if ((kv != NULL) && !parse_bool(kv->value, out)) {
-		return kv_err(c, kv, "%s must be yes or no, got '%s'", key, kv->value);
+	if (kv == NULL) {
+		return required ? kv_err(c, NULL, "%s is required (%s)", key, what) : 0;
+	}
+	if (!parse_choice(choices, kv->value, out)) {
+		return kv_err(c, kv, "%s must be %s, got '%s'", key, what, kv->value);
 	}
 	return 0;
 }
 
-static int get_order(const ctx_t *c, const char *key, bool required, uint8_t *out)
+static int get_bool(const ctx_t *c, const char *key, uint8_t *out, bool *present)
 {
-	const calib_section_kv_t *kv = kv_of(c->sec, key);
-
-	if (kv == NULL) {
-		return required ? kv_err(c, NULL, "%s is required (intel or motorola)", key) : 0;
-	}
-	if (!parse_order(kv->value, out)) {
-		return kv_err(c, kv, "%s must be intel or motorola, got '%s'", key, kv->value);
-	}
-	return 0;
+	return get_choice(c, key, bool_choices, "yes or no", false, out, present);
 }
 
 static int get_dec(const ctx_t *c, const char *key, bool required, calib_dec_t *out)
@@ -464,6 +876,7 @@ static int get_signal(const ctx_t *c, const char *prefix, bool required, can_sig
 	int64_t v = 0;
 	bool p1 = false;
 	bool p2 = false;
+	bool p3 = false;
 
 	snprintf(k1, sizeof(k1), "%sstart_bit", prefix);
 	snprintf(k2, sizeof(k2), "%slength", prefix);
@@ -480,17 +893,88 @@ static int get_signal(const ctx_t *c, const char *prefix, bool required, can_sig
 		return kv_err(c, kv_of(c->sec, k2), "%s = %" PRId64 ": zero length or over 32 bits",
 			      k2, v);
 	}
-	if (get_order(c, k3, required, &sig->byte_order) != 0) {
+	if (get_choice(c, k3, order_choices, "intel or motorola", required, &sig->byte_order, &p3) != 0) {
 		return -1;
 	}
-	*present = p1 || p2 || (kv_of(c->sec, k3) != NULL);
-	if (*present && !(p1 && p2 && (kv_of(c->sec, k3) != NULL))) {
+	*present = p1 || p2 || p3;
+	if (*present && !(p1 && p2 && p3)) {
 		return kv_err(c, NULL, "%sstart_bit, %slength and %sbyte_order go together",
 			      prefix, prefix, prefix);
 	}
 	if (*present && !can_signal_valid(sig)) {
 		return kv_err(c, kv_of(c->sec, k1), "%s signal runs beyond the 512 bits of an FD frame",
 			      prefix[0] != '\0' ? prefix : "value");
+	}
+	return 0;
+}
+
+/* A "not available" code of the value signal (key na_raw or na_raw2, its
+ * flag set when given): a signed signal's code may be written as a number
+ * (-32768, as a VAL_ table writes it) or as its raw bits (0x8000). */
+static int get_na(const ctx_t *c, const char *key, uint8_t flag, calib_input_t *in, uint32_t *raw)
+{
+	int64_t v = 0;
+	bool present = false;
+
+	if (get_int(c, key, INT32_MIN, UINT32_MAX, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (!present) {
+		return 0;
+	}
+	if ((v < 0) && ((in->sig.is_signed == 0U) ||
+			(v < -((int64_t)1 << (in->sig.length - 1U))))) {
+		return kv_err(c, kv_of(c->sec, key),
+			      "%s = %" PRId64 " is not a value of this %s %u-bit signal", key, v,
+			      (in->sig.is_signed != 0U) ? "signed" : "unsigned", (unsigned)in->sig.length);
+	}
+	in->flags |= flag;
+	*raw = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
+	return 0;
+}
+
+/* A selector (prefix "mux_" or "mux2_"): its signal and value, all four or
+ * none, and the inclusive end of its range (default: the value). value_sig:
+ * the value signal the selector must not overlap (NULL: not checked here). */
+static int get_selector(const ctx_t *c, const char *prefix, const can_signal_t *value_sig,
+			can_signal_t *sig, uint8_t flag, uint8_t *flags, uint32_t *value,
+			uint32_t *value_max)
+{
+	char key[32];
+	char key_max[32];
+	bool present = false;
+	int64_t v = 0;
+
+	(void)snprintf(key, sizeof(key), "%svalue", prefix);
+	(void)snprintf(key_max, sizeof(key_max), "%svalue_max", prefix);
+	if (get_signal(c, prefix, false, sig, &present) != 0) {
+		return -1;
+	}
+	if (present != (kv_of(c->sec, key) != NULL)) {
+		return kv_err(c, NULL, "%sstart_bit, %slength, %sbyte_order and %svalue: all four or none",
+			      prefix, prefix, prefix, prefix);
+	}
+	if (present) {
+		*flags |= flag;
+		if (get_int(c, key, 0, UINT32_MAX, true, &v, NULL) != 0) {
+			return -1;
+		}
+		*value = (uint32_t)v;
+		*value_max = (uint32_t)v;
+		if ((value_sig != NULL) && can_signal_overlap(sig, value_sig)) {
+			return kv_err(c, kv_of(c->sec, "mux_start_bit"),
+				      "the mux selector overlaps the value signal");
+		}
+	}
+	if (get_int(c, key_max, 0, UINT32_MAX, false, &v, &present) != 0) {
+		return -1;
+	}
+	if (present) {
+		if ((*flags & flag) == 0U) {
+			return kv_err(c, kv_of(c->sec, key_max), "%s without the %s* selector", key_max,
+				      prefix);
+		}
+		*value_max = (uint32_t)v;
 	}
 	return 0;
 }
@@ -510,7 +994,7 @@ static int get_dil(const ctx_t *c, calib_input_t *in)
 	for (tok = strtok_r(buf, " \t,", &save); tok != NULL; tok = strtok_r(NULL, " \t,", &save)) {
 		int64_t v;
 
-		if ((n >= CALIB_DATA_ID_LIST_LEN) || !calib_text_parse_int(tok, &v) || (v < 0) || (v > 255)) {
+		if ((n >= CALIB_DATA_ID_LIST_LEN) || !num_text_int(tok, &v) || (v < 0) || (v > 255)) {
 			return kv_err(c, kv, "data_id_list: 16 byte values 0..255 separated by blanks or commas");
 		}
 		in->data_id_list[n] = (uint8_t)v;
@@ -543,6 +1027,12 @@ static const char *const corner_keys[] = {
 	"pad_radius_m", "wheel_radius_m", "status_id", "detail_id", "detail2_id", "diag_id",
 	SD_KEYS, NULL
 };
+
+/* The flat keys a corner section may give (its own brake, geometry and
+ * output identifiers), each read and written with the flat key's rules. */
+const char *const calib_corner_flat_keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
+	"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
+	"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 
 static int unknown_keys(const ctx_t *c, const char *const *known)
 {
@@ -666,60 +1156,12 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 			      kv->value);
 	}
 	in->unit = (uint8_t)unit;
-	/* multiplexer: all four or none */
-	if (get_signal(c, "mux_", false, &in->mux, &present) != 0) {
+	/* multiplexer, and a second selector condition */
+	if ((get_selector(c, "mux_", &in->sig, &in->mux, CALIB_IN_MUX, &in->flags, &in->mux_value,
+			  &in->mux_value_max) != 0) ||
+	    (get_selector(c, "mux2_", NULL, &in->mux2, CALIB_IN_MUX2, &in->flags, &in->mux2_value,
+			  &in->mux2_value_max) != 0)) {
 		return -1;
-	}
-	if (present != (kv_of(c->sec, "mux_value") != NULL)) {
-		return kv_err(c, NULL, "mux_start_bit, mux_length, mux_byte_order and mux_value: all four or none");
-	}
-	if (present) {
-		in->flags |= CALIB_IN_MUX;
-		if (get_int(c, "mux_value", 0, UINT32_MAX, true, &v, NULL) != 0) {
-			return -1;
-		}
-		in->mux_value = (uint32_t)v;
-		in->mux_value_max = (uint32_t)v;
-		if (can_signal_overlap(&in->mux, &in->sig)) {
-			return kv_err(c, kv_of(c->sec, "mux_start_bit"),
-				      "the mux selector overlaps the value signal");
-		}
-	}
-	/* the inclusive end of the selector's range (default: mux_value) */
-	if (get_int(c, "mux_value_max", 0, UINT32_MAX, false, &v, &present) != 0) {
-		return -1;
-	}
-	if (present) {
-		if ((in->flags & CALIB_IN_MUX) == 0U) {
-			return kv_err(c, kv_of(c->sec, "mux_value_max"),
-				      "mux_value_max without the mux_* selector");
-		}
-		in->mux_value_max = (uint32_t)v;
-	}
-	/* a second selector condition: all four or none */
-	if (get_signal(c, "mux2_", false, &in->mux2, &present) != 0) {
-		return -1;
-	}
-	if (present != (kv_of(c->sec, "mux2_value") != NULL)) {
-		return kv_err(c, NULL, "mux2_start_bit, mux2_length, mux2_byte_order and mux2_value: all four or none");
-	}
-	if (present) {
-		in->flags |= CALIB_IN_MUX2;
-		if (get_int(c, "mux2_value", 0, UINT32_MAX, true, &v, NULL) != 0) {
-			return -1;
-		}
-		in->mux2_value = (uint32_t)v;
-		in->mux2_value_max = (uint32_t)v;
-	}
-	if (get_int(c, "mux2_value_max", 0, UINT32_MAX, false, &v, &present) != 0) {
-		return -1;
-	}
-	if (present) {
-		if ((in->flags & CALIB_IN_MUX2) == 0U) {
-			return kv_err(c, kv_of(c->sec, "mux2_value_max"),
-				      "mux2_value_max without the mux2_* selector");
-		}
-		in->mux2_value_max = (uint32_t)v;
 	}
 	kv = kv_of(c->sec, "signal");
 	if (kv != NULL) {
@@ -735,37 +1177,9 @@ static int build_input(const ctx_t *c, calib_input_t *in)
 				      CALIB_SIGNAL_NAME_LEN - 1U);
 		}
 	}
-	/* a signed signal's code may be written as a number (-32768, as a
-	 * VAL_ table writes it) or as its raw bits (0x8000) */
-	if (get_int(c, "na_raw", INT32_MIN, UINT32_MAX, false, &v, &present) != 0) {
+	if ((get_na(c, "na_raw", CALIB_IN_NA, in, &in->na_raw) != 0) ||
+	    (get_na(c, "na_raw2", CALIB_IN_NA2, in, &in->na_raw2) != 0)) {
 		return -1;
-	}
-	if (present) {
-		if ((v < 0) && ((in->sig.is_signed == 0U) ||
-				(v < -((int64_t)1 << (in->sig.length - 1U))))) {
-			return kv_err(c, kv_of(c->sec, "na_raw"),
-				      "na_raw = %" PRId64 " is not a value of this %s %u-bit signal", v,
-				      (in->sig.is_signed != 0U) ? "signed" : "unsigned",
-				      (unsigned)in->sig.length);
-		}
-		in->flags |= CALIB_IN_NA;
-		in->na_raw = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
-	}
-	/* a signed signal's code may be written as a number (-32768, as a
-	 * VAL_ table writes it) or as its raw bits (0x8000) */
-	if (get_int(c, "na_raw2", INT32_MIN, UINT32_MAX, false, &v, &present) != 0) {
-		return -1;
-	}
-	if (present) {
-		if ((v < 0) && ((in->sig.is_signed == 0U) ||
-				(v < -((int64_t)1 << (in->sig.length - 1U))))) {
-			return kv_err(c, kv_of(c->sec, "na_raw2"),
-				      "na_raw2 = %" PRId64 " is not a value of this %s %u-bit signal", v,
-				      (in->sig.is_signed != 0U) ? "signed" : "unsigned",
-				      (unsigned)in->sig.length);
-		}
-		in->flags |= CALIB_IN_NA2;
-		in->na_raw2 = (v < 0) ? can_signal_raw_of(&in->sig, v) : (uint32_t)v;
 	}
 	if (get_int(c, "qualifier_bit", 0, (int64_t)CAN_SIGNAL_MAX_BITS - 1, false, &v, &present) != 0) {
 		return -1;
@@ -894,15 +1308,12 @@ static int ppm_key(const ctx_t *c, const char *key, uint32_t max_ppm, uint32_t *
 static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t *flat,
 			calib_corner_t *corner)
 {
-	static const char *const flat_keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
-		"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
-		"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
 	const calib_section_kv_t *kv;
 	calib_t tmp = *flat;
 	char msg[200];
 	size_t i;
 	int idx;
-	const int pos = pos_of(c->sec->name);
+	const int pos = calib_corner_pos(c->sec->name);
 
 	if (unknown_keys(c, corner_keys) != 0) {
 		return -1;
@@ -911,9 +1322,9 @@ static int build_corner(const ctx_t *c, const calib_sections_t *s, const calib_t
 	 * keys, each read with the flat key's own rules */
 	calib_corner_defaults(flat, (uint8_t)pos, corner);
 	calib_flat_from_corner(corner, &tmp);
-	for (i = 0; flat_keys[i] != NULL; i++) {
-		kv = kv_of(c->sec, flat_keys[i]);
-		if ((kv != NULL) && (calib_text_flat_key(kv->key, kv->value, &tmp, msg, sizeof(msg)) != 0)) {
+	for (i = 0; calib_corner_flat_keys[i] != NULL; i++) {
+		kv = kv_of(c->sec, calib_corner_flat_keys[i]);
+		if ((kv != NULL) && (flat_key_set(kv->key, kv->value, &tmp, msg, sizeof(msg)) != 0)) {
 			return kv_err(c, kv, "%s", msg);
 		}
 	}
@@ -1007,12 +1418,12 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 	}
 	out.n_inputs = (uint8_t)ni;
 	if (s->corners == 0U) {
-		calib_text_errf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
+		text_errf(err, errlen, "%s:%u: [input] sections but no [corner] uses them", file,
 		     s->sec[0].line);
 		return -1;
 	}
 	if (legacy_line != 0U) {
-		calib_text_errf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
+		text_errf(err, errlen, "%s:%u: legacy input key '%s' in a file with [corner] sections",
 		     file, legacy_line, legacy_key);
 		return -1;
 	}
@@ -1063,138 +1474,12 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 	return 0;
 }
 
-/* ---- writing --------------------------------------------------------------------- */
-
-static void put_dec(FILE *f, const char *key, calib_dec_t d)
+const char *calib_corner_pos_name(unsigned int pos)
 {
-	char b[64];
-
-	calib_dec_format(d, b, sizeof(b));
-	fprintf(f, "%s = %s\n", key, b);
+	return (pos < CALIB_MAX_CORNERS) ? pos_names[pos] : "?";
 }
 
-static void put_sig(FILE *f, const char *prefix, const can_signal_t *s)
+const char *calib_prot_name(unsigned int prot)
 {
-	fprintf(f, "%sstart_bit = %u\n%slength = %u\n%sbyte_order = %s\n", prefix, s->start_bit,
-		prefix, s->length, prefix, s->byte_order != 0U ? "motorola" : "intel");
-}
-
-int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names)
-{
-	unsigned int i;
-	char nm[CALIB_MAX_INPUTS][CALIB_SECTION_NAME_LEN];
-
-	if (cal->n_corners == 0U) {
-		return SQ_OK;
-	}
-	for (i = 0; i < cal->n_inputs; i++) {
-		const calib_input_t *in = &cal->inputs[i];
-		unsigned int j;
-
-		if (names != NULL) {
-			snprintf(nm[i], sizeof(nm[i]), "%s", names->input[i]);
-		} else {
-			snprintf(nm[i], sizeof(nm[i]), "in%u", i);
-		}
-		fprintf(f, "\n[input %s]\nid = 0x%" PRIX32 "\n", nm[i], in->id);
-		if ((in->flags & CALIB_IN_EXTENDED) != 0U) {
-			fprintf(f, "extended = yes\n");
-		}
-		if (in->fd != 0U) {
-			fprintf(f, "fd = yes\n");
-		}
-		fprintf(f, "min_dlc = %u\n", in->min_dlc);
-		if ((in->flags & CALIB_IN_DLC_EXACT) != 0U) {
-			fprintf(f, "exact_dlc = yes\n");
-		}
-		put_sig(f, "", &in->sig);
-		fprintf(f, "signed = %s\n", in->sig.is_signed != 0U ? "yes" : "no");
-		put_dec(f, "factor", in->factor);
-		put_dec(f, "offset", in->offset);
-		fprintf(f, "unit = %s\n", input_unit_name((input_unit_t)in->unit));
-		if ((names != NULL) && (names->signal[i][0] != '\0')) {
-			fprintf(f, "signal = %s\n", names->signal[i]);
-		}
-		if ((in->flags & CALIB_IN_MUX) != 0U) {
-			put_sig(f, "mux_", &in->mux);
-			fprintf(f, "mux_value = %" PRIu32 "\n", in->mux_value);
-			if (in->mux_value_max != in->mux_value) {
-				fprintf(f, "mux_value_max = %" PRIu32 "\n", in->mux_value_max);
-			}
-		}
-		if ((in->flags & CALIB_IN_MUX2) != 0U) {
-			put_sig(f, "mux2_", &in->mux2);
-			fprintf(f, "mux2_value = %" PRIu32 "\n", in->mux2_value);
-			if (in->mux2_value_max != in->mux2_value) {
-				fprintf(f, "mux2_value_max = %" PRIu32 "\n", in->mux2_value_max);
-			}
-		}
-		if ((in->flags & CALIB_IN_NA) != 0U) {
-			fprintf(f, "na_raw = 0x%" PRIX32 "\n", in->na_raw);
-		}
-		if ((in->flags & CALIB_IN_NA2) != 0U) {
-			fprintf(f, "na_raw2 = 0x%" PRIX32 "\n", in->na_raw2);
-		}
-		if ((in->flags & CALIB_IN_QUALIFIER) != 0U) {
-			fprintf(f, "qualifier_bit = %u\nqualifier_invalid = %u\n", in->qualifier_bit,
-				in->qualifier_invalid);
-		}
-		fprintf(f, "protection = %s\n", prot_names[in->protection]);
-		if ((in->protection == (uint8_t)CALIB_PROT_P01) ||
-		    (in->protection == (uint8_t)CALIB_PROT_P05)) {
-			fprintf(f, "data_id = 0x%04X\n", in->data_id);
-		}
-		if ((in->protection == (uint8_t)CALIB_PROT_P05) && (in->e2e_offset_byte != 0U)) {
-			fprintf(f, "e2e_offset_byte = %u\n", in->e2e_offset_byte);
-		}
-		if (in->protection == (uint8_t)CALIB_PROT_P02) {
-			fprintf(f, "data_id_list =");
-			for (j = 0; j < CALIB_DATA_ID_LIST_LEN; j++) {
-				fprintf(f, " 0x%02X", in->data_id_list[j]);
-			}
-			fprintf(f, "\n");
-		}
-		if (in->protection == (uint8_t)CALIB_PROT_COUNTER) {
-			put_sig(f, "counter_", &in->counter);
-			fprintf(f, "counter_modulus = %u\n", in->counter_modulus);
-		}
-		if (in->protection != (uint8_t)CALIB_PROT_NONE) {
-			fprintf(f, "max_delta_counter = %u\n", in->max_delta_counter);
-		}
-		fprintf(f, "period_ms = %u\nstale_cycles = %u\n", in->period_ms, in->stale_cycles);
-		put_dec(f, "max", in->max);
-		put_dec(f, "min", in->min);
-		put_dec(f, "step_max", in->step_max);
-	}
-	for (i = 0; i < cal->n_corners; i++) {
-		const calib_corner_t *c = &cal->corners[i];
-		calib_t tmp = *cal;
-		static const char *const keys[] = { "mass_kg", "omega0_radps", "damping", "mu_inf",
-			"delta_mu", "slope_spm", "criterion", "pad_radius_m", "wheel_radius_m",
-			"status_id", "detail_id", "detail2_id", "diag_id", SD_KEYS, NULL };
-		size_t k;
-
-		calib_flat_from_corner(c, &tmp);
-		fprintf(f, "\n[corner %s]\nspeed = %s\nforce = %s\n", pos_names[c->pos],
-			nm[c->speed_input], nm[c->force_input]);
-		if (c->piston_area_cmm2 != 0U) {
-			fprintf(f, "piston_area_mm2 = %u.%02u\n", c->piston_area_cmm2 / 100U,
-				c->piston_area_cmm2 % 100U);
-		}
-		if (c->torque_share_ppm != 1000000U) {
-			fprintf(f, "torque_share = %u.%06u\n", c->torque_share_ppm / 1000000U,
-				c->torque_share_ppm % 1000000U);
-		}
-		fprintf(f, "efficiency = %u.%06u\naxle_factor = %u.%06u\nfriction_faces = %u\n",
-			c->efficiency_ppm / 1000000U, c->efficiency_ppm % 1000000U,
-			c->axle_factor_ppm / 1000000U, c->axle_factor_ppm % 1000000U,
-			c->friction_faces);
-		for (k = 0; keys[k] != NULL; k++) {
-			char b[48];
-
-			calib_text_flat_format(keys[k], &tmp, b, sizeof(b));
-			fprintf(f, "%s = %s\n", keys[k], b);
-		}
-	}
-	return ferror(f) ? SQ_EIO : SQ_OK;
+	return (prot < CALIB_PROT_COUNT) ? prot_names[prot] : "?";
 }

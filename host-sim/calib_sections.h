@@ -1,15 +1,20 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * calib_sections: the `[input NAME]` and `[corner POS]` sections of a
- * calibration text file (the input map, /work/specs contract in
- * docs/calib-input-map.md), read by calib_text.c:
+ * calib_sections: what the keys of a calibration text file mean, below the
+ * file reading of calib_text.c (which calls this module; nothing here calls
+ * back up):
  *
- *   calib_sections_header()  a `[...]` line starts a section
+ *   calib_key_*()            the flat `key = value` keys, one table row per
+ *                            calib_t field: conversion, range, formatting
+ *   calib_sections_header()  a `[...]` line starts an `[input NAME]` or
+ *                            `[corner POS]` section (the input map,
+ *                            docs/calib-input-map.md)
  *   calib_sections_key()     a `key = value` line inside a section
  *   calib_sections_finish()  after the last line: defaults, names resolved,
  *                            every input and corner checked (calib_map.c),
  *                            cal->inputs / corners written
- * Every error is one line `FILE:LINE: message`; the whole file is refused.
+ * Messages come without FILE:LINE (calib_text adds the line it read), except
+ * calib_sections_finish's, which name the line of the key responsible.
  */
 #ifndef CALIB_SECTIONS_H
 #define CALIB_SECTIONS_H
@@ -59,6 +64,24 @@ typedef struct {
 	char input_iface[CALIB_IFACE_LEN];
 } calib_names_t;
 
+/* ---- the flat keys: index 0 .. CALIB_KEY_COUNT - 1 (one per calib_t field) ---- */
+#define CALIB_KEY_COUNT 46U
+size_t calib_key_count(void);
+const char *calib_key_name(size_t i);   /* NULL past the end */
+int calib_key_find(const char *name);   /* its index, or -1: no such key */
+/* a key of the legacy DiscSpeed/PadForce inputs (refused with [corner]s) */
+bool calib_key_legacy_input(size_t i);
+/* Convert value with key i's rules into cal: 0, or -1 with msg. */
+int calib_key_set(size_t i, const char *value, calib_t *cal, char *msg, size_t msglen);
+/* Key i's value in cal: the shortest text that reads back exactly. */
+void calib_key_format(size_t i, const calib_t *cal, char *buf, size_t len);
+/* "what it is; default X; range A .. B unit" (def: the defaults). */
+void calib_key_comment(size_t i, const calib_t *def, char *buf, size_t len);
+
+/* A corner position by name ("FL".."RR", any case): 0..3, or -1. */
+int calib_corner_pos(const char *name);
+const char *calib_corner_pos_name(unsigned int pos);
+
 /* `input_iface` values: 1..15 of A-Z a-z 0-9 _ . - */
 bool calib_iface_name_valid(const char *name);
 
@@ -83,10 +106,10 @@ int calib_sections_finish(const calib_sections_t *s, const char *file,
 			  unsigned int legacy_line, const char *legacy_key,
 			  calib_t *cal, calib_names_t *names, char *err, size_t errlen);
 
-/* Write the input and corner sections of cal (nothing for the legacy
- * form); inputs are named in0..in7 unless names is given (which also
- * gives their `signal` lines). */
-int calib_sections_write(FILE *f, const calib_t *cal, const calib_names_t *names);
+/* The flat keys a [corner] may give (its own brake, geometry and output
+ * identifiers), NULL-terminated; a protection's name (none, p01, ...). */
+extern const char *const calib_corner_flat_keys[];
+const char *calib_prot_name(unsigned int prot);
 
 /* decimal text <-> calib_dec_t, exactly: up to 17 significant digits,
  * plain or exponent notation as Python's repr(float) writes them

@@ -60,11 +60,6 @@ int calib_text_parse_map(FILE *f, const char *name, calib_t *out, calib_names_t 
 int calib_text_load_map(const char *path, calib_t *out, calib_names_t *names, char *err,
 			size_t errlen);
 
-/* One flat key (brake, geometry, identifiers) converted into cal with the
- * flat key's rules (for the corner sections). 0, or -1 with msg. */
-int calib_text_flat_key(const char *key, const char *value, calib_t *cal, char *msg,
-			size_t msglen);
-
 /*
  * The brake of one corner of a loaded calibration: pos_name NULL gives the
  * flat keys' brake (every corner's default), "FL".."RR" (any case) the
@@ -73,16 +68,6 @@ int calib_text_flat_key(const char *key, const char *value, calib_t *cal, char *
  */
 int calib_text_brake(const calib_t *cal, const char *pos_name, calib_corner_t *brake,
 		     char *msg, size_t msglen);
-
-/* One line of error text into err (nothing when errlen is 0). */
-void calib_text_errf(char *err, size_t errlen, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
-/* An integer: decimal with an optional sign, or 0x hex. */
-bool calib_text_parse_int(const char *text, int64_t *out);
-
-/* A flat key's value in cal, formatted as calib_text_write() does. */
-void calib_text_flat_format(const char *key, const calib_t *cal, char *buf, size_t len);
 
 /*
  * Write a complete file for cal: every key, in the shortest form that parses

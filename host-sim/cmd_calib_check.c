@@ -17,21 +17,10 @@
 #include "calib.h"
 #include "calib_map.h"
 #include "calib_text.h"
+#include "cli_args.h"
 #include "monitor.h"
 #include "sim_commands.h"
 #include "sq_status.h"
-
-static void usage(FILE *f)
-{
-	fprintf(f, "usage: squeal-sim calib-check FILE\n\n"
-		"Load a calibration text file (docs/calib-example.txt,\n"
-		"docs/calib-input-map.md) and set up every corner as the monitor does.\n\n"
-		"  FILE: ok (N inputs, M corners)   on stdout, exit 0, when it does;\n"
-		"  FILE:LINE: reason                on stderr, exit 1, when it does not\n"
-		"                                   (LINE of the key responsible, left\n"
-		"                                   out for whole-file problems).\n"
-		"Exit 2: bad usage. --help prints this.\n");
-}
 
 /* Every corner set up by the monitor itself (monitor_init_corner(), what
  * the ECU, replay and decode run): it keeps the calibration only when the
@@ -57,25 +46,36 @@ int cmd_calib_check(int argc, char **argv)
 	char err[400];
 	uint32_t bad = 0U;
 
-	if ((argc == 2) && ((strcmp(argv[1], "--help") == 0) || (strcmp(argv[1], "-h") == 0))) {
-		usage(stdout);
-		return 0;
+	static const cli_spec_t spec = {
+		.cmd = "calib-check",
+		.synopsis = "squeal-sim calib-check FILE",
+		.description = "Load a calibration text file (docs/calib-example.txt,\n"
+			       "docs/calib-input-map.md) and set up every corner as the monitor does.\n\n"
+			       "  FILE: ok (N inputs, M corners)   on stdout, exit 0, when it does;\n"
+			       "  FILE:LINE: reason                on stderr, exit 1, when it does not\n"
+			       "                                   (LINE of the key responsible, left\n"
+			       "                                   out for whole-file problems).",
+		.closing = "Exit 2: bad usage.",
+		.min_pos = 1U,
+		.max_pos = 1U,
+	};
+	const char *path = NULL;
+	const cli_result_t r = cli_parse(&spec, argc, argv, &path, NULL);
+
+	if (r != CLI_OK) {
+		return cli_exit_status(r);
 	}
-	if ((argc != 2) || (argv[1][0] == '-')) {
-		usage(stderr);
-		return 2;
-	}
-	if (calib_text_load_map(argv[1], &cal, &names, err, sizeof(err)) != SQ_OK) {
+	if (calib_text_load_map(path, &cal, &names, err, sizeof(err)) != SQ_OK) {
 		fprintf(stderr, "%s\n", err);
 		return 1;
 	}
 	if (set_up_all(&cal, &bad) != 0) {
 		/* calib_validate() and the set-up share one preparation: this
 		 * would be a defect of the program, reported as the file's */
-		fprintf(stderr, "%s: corner %u does not set up\n", argv[1], (unsigned int)bad);
+		fprintf(stderr, "%s: corner %u does not set up\n", path, (unsigned int)bad);
 		return 1;
 	}
-	printf("%s: ok (%u inputs, %u corners)\n", argv[1],
+	printf("%s: ok (%u inputs, %u corners)\n", path,
 	       (unsigned int)((cal.n_corners == 0U) ? 2U : cal.n_inputs),
 	       (unsigned int)calib_corner_count(&cal));
 	return 0;

@@ -3,8 +3,6 @@
  * squeal-sim classify: one operating point through the firmware's model.
  * squeal-sim sweep: a readable stability table over speed and force.
  */
-#include <errno.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -13,6 +11,7 @@
 
 #include "calib.h"
 #include "calib_text.h"
+#include "cli_args.h"
 #include "sim_commands.h"
 #include "sim_num.h"
 #include "squeal_model.h"
@@ -39,172 +38,78 @@ typedef struct {
 	double wheel_over_pad;       /* r_w / r_p for the vehicle speed       */
 } classify_args_t;
 
-static int parse_double(const char *flag, const char *text, double *out)
-{
-	char *end = NULL;
-	double v;
-
-	errno = 0;
-	v = strtod(text, &end);
-	if ((end == text) || (*end != '\0') || (errno == ERANGE)) {
-		fprintf(stderr, "squeal-sim classify: %s needs a number, got '%s'\n",
-			flag, text);
-		return -1;
-	}
-	*out = v;
-	return 0;
-}
-
-static void classify_usage(FILE *f)
-{
-	fprintf(f,
-		"usage: squeal-sim classify --v0 MPS --force N [--slope A] [--damping D]\n"
-		"         [--omega0 W] [--mass M] [--mu-inf X] [--delta-mu Y]\n"
-		"         [--criterion exact|cubic] [--json]\n"
-		"       squeal-sim classify --v0 MPS --force N --calib FILE [--corner POS] [--json]\n\n"
-		"Classifies one operating point of the friction oscillator as stable,\n"
-		"bistable, unstable or not sliding (shared/model.md), with its margins.\n\n"
-		"  --v0 MPS         disc surface speed at the pad radius [m/s] (required)\n"
-		"  --force N        pad normal force [N] (required)\n"
-		"  --slope A        friction slope a [s/m]            (default 2)\n"
-		"  --damping D      damping ratio D [-]              (default 0.023)\n"
-		"  --omega0 W       natural angular frequency [rad/s] (default 5000)\n"
-		"  --mass M         moving mass m [kg]               (default 1)\n"
-		"  --mu-inf X       friction coefficient at high speed (default 0.25)\n"
-		"  --delta-mu Y     mu_0 - mu_inf                    (default 0.15)\n"
-		"  --criterion C    exact (I1(s)/s, default) or cubic (the paper's)\n"
-		"  --calib FILE     the brake of a calibration file (its flat keys) with its\n"
-		"                   standard deviations: also the margin to the border next\n"
-		"                   to the class in sigmas (docs/uncertainty.md)\n"
-		"  --corner POS     with --calib: the brake of [corner POS] (FL, FR, RL, RR)\n"
-		"  --json           one JSON object on stdout\n\n"
-		"The vehicle speed shown is v0 x wheel radius / pad radius (--calib: its\n"
-		"corner's radii; else 0.30 m / 0.12 m).\n"
-		"Exit status: 0 classified, 1 input outside the model's domain\n"
-		"(state \"invalid\") or a --calib file that does not load and set up\n"
-		"(one line FILE:LINE: reason), 2 bad usage. Numeric build: %s.\n",
-		SQUEAL_NUMERIC_NAME);
-}
+static const char *const criterion_names[] = { "exact", "cubic", NULL };
 
 static int classify_parse(int argc, char **argv, classify_args_t *a)
 {
-	enum {
-		OPT_V0 = 256, OPT_FORCE, OPT_SLOPE, OPT_DAMPING, OPT_OMEGA0,
-		OPT_MASS, OPT_MU_INF, OPT_DELTA_MU, OPT_CRITERION, OPT_JSON, OPT_HELP,
-		OPT_CALIB, OPT_CORNER
+	bool model_opt[6] = { false, false, false, false, false, false };
+	int criterion = 0;
+	const cli_opt_t opts[] = {
+		CLI_OPT_ANY_REAL("v0", &a->v0_mps, &a->have_v0, "MPS",
+			     "disc surface speed at the pad radius [m/s] (required)"),
+		CLI_OPT_ANY_REAL("force", &a->force_n, &a->have_force, "N",
+			     "pad normal force [N] (required)"),
+		CLI_OPT_ANY_REAL("slope", &a->params.slope_spm, &model_opt[0], "A",
+			     "friction slope a [s/m] (default 2)"),
+		CLI_OPT_ANY_REAL("damping", &a->params.damping, &model_opt[1], "D",
+			     "damping ratio D [-] (default 0.023)"),
+		CLI_OPT_ANY_REAL("omega0", &a->params.omega0_radps, &model_opt[2],
+			     "W", "natural angular frequency [rad/s] (default 5000)"),
+		CLI_OPT_ANY_REAL("mass", &a->params.mass_kg, &model_opt[3], "M",
+			     "moving mass m [kg] (default 1)"),
+		CLI_OPT_ANY_REAL("mu-inf", &a->params.mu_inf, &model_opt[4], "X",
+			     "friction coefficient at high speed (default 0.25)"),
+		CLI_OPT_ANY_REAL("delta-mu", &a->params.delta_mu, &model_opt[5], "Y",
+			     "mu_0 - mu_inf (default 0.15)"),
+		CLI_OPT_CHOICE("criterion", &criterion, &a->have_criterion, criterion_names, "C",
+			       "exact (I1(s)/s, default) or cubic (the paper's)"),
+		CLI_OPT_TEXT("calib", &a->calib_path, NULL, "FILE",
+			     "the brake of a calibration file (its flat keys) with its\n"
+			     "standard deviations: also the margin to the border next\n"
+			     "to the class in sigmas (docs/uncertainty.md)"),
+		CLI_OPT_TEXT("corner", &a->corner, NULL, "POS",
+			     "with --calib: the brake of [corner POS] (FL, FR, RL, RR)"),
+		CLI_OPT_FLAG("json", 0, &a->json, "one JSON object on stdout"),
 	};
-	static const struct option options[] = {
-		{ "v0", required_argument, NULL, OPT_V0 },
-		{ "force", required_argument, NULL, OPT_FORCE },
-		{ "slope", required_argument, NULL, OPT_SLOPE },
-		{ "damping", required_argument, NULL, OPT_DAMPING },
-		{ "omega0", required_argument, NULL, OPT_OMEGA0 },
-		{ "mass", required_argument, NULL, OPT_MASS },
-		{ "mu-inf", required_argument, NULL, OPT_MU_INF },
-		{ "delta-mu", required_argument, NULL, OPT_DELTA_MU },
-		{ "criterion", required_argument, NULL, OPT_CRITERION },
-		{ "json", no_argument, NULL, OPT_JSON },
-		{ "calib", required_argument, NULL, OPT_CALIB },
-		{ "corner", required_argument, NULL, OPT_CORNER },
-		{ "help", no_argument, NULL, OPT_HELP },
-		{ NULL, 0, NULL, 0 },
+	const cli_spec_t spec = {
+		.cmd = "classify",
+		CLI_SPEC_OPTS(opts),
+		.synopsis = "squeal-sim classify --v0 MPS --force N [--slope A] [--damping D]\n"
+			    "         [--omega0 W] [--mass M] [--mu-inf X] [--delta-mu Y]\n"
+			    "         [--criterion exact|cubic] [--json]\n"
+			    "       squeal-sim classify --v0 MPS --force N --calib FILE [--corner POS] [--json]",
+		.description = "Classifies one operating point of the friction oscillator as stable,\n"
+			       "bistable, unstable or not sliding (shared/model.md), with its margins.",
+		.closing = "The vehicle speed shown is v0 x wheel radius / pad radius (--calib: its\n"
+			   "corner's radii; else 0.30 m / 0.12 m).\n"
+			   "Exit status: 0 classified, 1 input outside the model's domain\n"
+			   "(state \"invalid\") or a --calib file that does not load and set up\n"
+			   "(one line FILE:LINE: reason), 2 bad usage.",
 	};
-	int opt;
+	cli_result_t r;
+	size_t i;
 
 	memset(a, 0, sizeof(*a));
 	a->wheel_over_pad = WHEEL_OVER_PAD_RADIUS;
 	sim_params_default(&a->params);
-	a->criterion = SQUEAL_CRITERION_EXACT;
-	optind = 1;
-	opterr = 0;
-	while ((opt = getopt_long(argc, argv, "h", options, NULL)) != -1) {
-		int rc = 0;
-
-		switch (opt) {
-		case OPT_V0:
-			rc = parse_double("--v0", optarg, &a->v0_mps);
-			a->have_v0 = true;
-			break;
-		case OPT_FORCE:
-			rc = parse_double("--force", optarg, &a->force_n);
-			a->have_force = true;
-			break;
-		case OPT_SLOPE:
-			a->have_model_option = true;
-			rc = parse_double("--slope", optarg, &a->params.slope_spm);
-			break;
-		case OPT_DAMPING:
-			a->have_model_option = true;
-			rc = parse_double("--damping", optarg, &a->params.damping);
-			break;
-		case OPT_OMEGA0:
-			a->have_model_option = true;
-			rc = parse_double("--omega0", optarg, &a->params.omega0_radps);
-			break;
-		case OPT_MASS:
-			a->have_model_option = true;
-			rc = parse_double("--mass", optarg, &a->params.mass_kg);
-			break;
-		case OPT_MU_INF:
-			a->have_model_option = true;
-			rc = parse_double("--mu-inf", optarg, &a->params.mu_inf);
-			break;
-		case OPT_DELTA_MU:
-			a->have_model_option = true;
-			rc = parse_double("--delta-mu", optarg, &a->params.delta_mu);
-			break;
-		case OPT_CRITERION:
-			a->have_criterion = true;
-			if (strcmp(optarg, "exact") == 0) {
-				a->criterion = SQUEAL_CRITERION_EXACT;
-			} else if (strcmp(optarg, "cubic") == 0) {
-				a->criterion = SQUEAL_CRITERION_CUBIC;
-			} else {
-				fprintf(stderr, "squeal-sim classify: --criterion is exact or cubic, got '%s'\n",
-					optarg);
-				rc = -1;
-			}
-			break;
-		case OPT_JSON:
-			a->json = true;
-			break;
-		case OPT_CALIB:
-			a->calib_path = optarg;
-			break;
-		case OPT_CORNER:
-			a->corner = optarg;
-			break;
-		case 'h':
-		case OPT_HELP:
-			classify_usage(stdout);
-			return 1;
-		default:
-			fprintf(stderr, "squeal-sim classify: unknown or incomplete option '%s'\n",
-				argv[optind - 1]);
-			rc = -1;
-			break;
-		}
-		if (rc != 0) {
-			return -1;
-		}
+	r = cli_parse(&spec, argc, argv, NULL, NULL);
+	if (r != CLI_OK) {
+		return r;
 	}
-	if (optind < argc) {
-		fprintf(stderr, "squeal-sim classify: unexpected argument '%s'\n", argv[optind]);
-		return -1;
+	a->criterion = (criterion == 1) ? SQUEAL_CRITERION_CUBIC : SQUEAL_CRITERION_EXACT;
+	for (i = 0U; i < CLI_COUNT(model_opt); i++) {
+		a->have_model_option = a->have_model_option || model_opt[i];
 	}
 	if (!a->have_v0 || !a->have_force) {
-		fprintf(stderr, "squeal-sim classify: --v0 and --force are required (see --help)\n");
-		return -1;
+		return cli_usage_error(&spec, "--v0 and --force are required (see --help)");
 	}
 	if ((a->calib_path != NULL) && a->have_model_option) {
-		fprintf(stderr, "squeal-sim classify: --calib gives the brake; leave out --slope .. --delta-mu\n");
-		return -1;
+		return cli_usage_error(&spec, "--calib gives the brake; leave out --slope .. --delta-mu");
 	}
 	if ((a->corner != NULL) && (a->calib_path == NULL)) {
-		fprintf(stderr, "squeal-sim classify: --corner needs --calib\n");
-		return -1;
+		return cli_usage_error(&spec, "--corner needs --calib");
 	}
-	return 0;
+	return CLI_OK;
 }
 
 /* The brake and its deviations from --calib (criterion too, unless given),
@@ -235,13 +140,14 @@ static int load_brake(classify_args_t *a, squeal_params_t *params, squeal_param_
 	return 0;
 }
 
-/* Print a field as a JSON number, or null where the model gives none. */
-static void json_field(const char *key, bool present, double value, bool last)
+/* A field as a JSON number, or null where the model gives none (never the
+ * last field of the object: a comma follows). */
+static void json_field(const char *key, bool present, double value)
 {
 	if (present && isfinite(value)) {
-		printf("  \"%s\": %.9g%s\n", key, value, last ? "" : ",");
+		printf("  \"%s\": %.9g,\n", key, value);
 	} else {
-		printf("  \"%s\": null%s\n", key, last ? "" : ",");
+		printf("  \"%s\": null,\n", key);
 	}
 }
 
@@ -282,10 +188,37 @@ static double margin_of(const squeal_sigma_result_t *sig, bool have_sig)
 	return sim_num_to_double(sig->margin_sigma, SQUEAL_Q_MARGIN);
 }
 
+/* The model's numbers, null where it gives none. */
+static void json_model_fields(const squeal_result_t *r, const result_d_t *d, double margin)
+{
+	const bool lnq = has(r, SQUEAL_HAS_LNQ, 0U);
+	const struct {
+		const char *key;
+		bool present;
+		double value;
+	} fields[] = {
+		{ "q", lnq, exp(d->ln_q) },
+		{ "ln_q", lnq, d->ln_q },
+		{ "hopf_v0_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0), d->hopf_v0_mps },
+		{ "hopf_margin_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0), d->hopf_margin_mps },
+		{ "hopf_force_n", has(r, SQUEAL_HAS_HOPF_FORCE, SQUEAL_SAT_HOPF_FORCE), d->hopf_force_n },
+		{ "cycle_x", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_CYCLE_X), d->cycle_x },
+		{ "lc_amplitude_m", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_AMPLITUDE), d->lc_amplitude_m },
+		{ "trigger_velocity_mps", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_TRIGGER),
+		  d->trigger_velocity_mps },
+		{ "basin_ratio", has(r, SQUEAL_HAS_BASIN, SQUEAL_SAT_BASIN), d->basin_ratio },
+		{ "border_margin_sigma", !isnan(margin), margin },
+	};
+	size_t i;
+
+	for (i = 0U; i < sizeof(fields) / sizeof(fields[0]); i++) {
+		json_field(fields[i].key, fields[i].present, fields[i].value);
+	}
+}
+
 static void print_json(const classify_args_t *a, const squeal_result_t *r, double margin)
 {
 	result_d_t d;
-	const bool lnq = has(r, SQUEAL_HAS_LNQ, 0U);
 
 	result_to_double(r, &d);
 	printf("{\n");
@@ -296,23 +229,7 @@ static void print_json(const classify_args_t *a, const squeal_result_t *r, doubl
 	printf("  \"v0_mps\": %.9g,\n", a->v0_mps);
 	printf("  \"force_n\": %.9g,\n", a->force_n);
 	printf("  \"vehicle_kmh\": %.9g,\n", a->v0_mps * a->wheel_over_pad * 3.6);
-	json_field("q", lnq, exp(d.ln_q), false);
-	json_field("ln_q", lnq, d.ln_q, false);
-	json_field("hopf_v0_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0),
-		   d.hopf_v0_mps, false);
-	json_field("hopf_margin_mps", has(r, SQUEAL_HAS_HOPF_V0, SQUEAL_SAT_HOPF_V0),
-		   d.hopf_margin_mps, false);
-	json_field("hopf_force_n", has(r, SQUEAL_HAS_HOPF_FORCE, SQUEAL_SAT_HOPF_FORCE),
-		   d.hopf_force_n, false);
-	json_field("cycle_x", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_CYCLE_X),
-		   d.cycle_x, false);
-	json_field("lc_amplitude_m", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_AMPLITUDE),
-		   d.lc_amplitude_m, false);
-	json_field("trigger_velocity_mps", has(r, SQUEAL_HAS_CYCLE, SQUEAL_SAT_TRIGGER),
-		   d.trigger_velocity_mps, false);
-	json_field("basin_ratio", has(r, SQUEAL_HAS_BASIN, SQUEAL_SAT_BASIN),
-		   d.basin_ratio, false);
-	json_field("border_margin_sigma", !isnan(margin), margin, false);
+	json_model_fields(r, &d, margin);
 	printf("  \"saturated\": %s\n", ((r->flags & 0xff00U) != 0U) ? "true" : "false");
 	printf("}\n");
 }
@@ -381,8 +298,8 @@ int cmd_classify(int argc, char **argv)
 	int rc;
 
 	rc = classify_parse(argc, argv, &a);
-	if (rc != 0) {
-		return (rc > 0) ? 0 : 2;
+	if (rc != CLI_OK) {
+		return cli_exit_status((cli_result_t)rc);
 	}
 	squeal_sigma_sd_zero(&sd);
 	if (a.calib_path != NULL) {
@@ -449,14 +366,16 @@ int cmd_sweep(int argc, char **argv)
 	size_t fi;
 	int crit;
 
-	if ((argc > 1) && ((strcmp(argv[1], "--help") == 0) || (strcmp(argv[1], "-h") == 0))) {
-		printf("usage: squeal-sim sweep\n\nPrints the stability of the default brake over disc "
-		       "speed 0..3 m/s and pad force 2..30 kN, for both criteria.\n");
-		return 0;
-	}
-	if (argc > 1) {
-		fprintf(stderr, "squeal-sim sweep: takes no arguments\n");
-		return 2;
+	static const cli_spec_t spec = {
+		.cmd = "sweep",
+		.synopsis = "squeal-sim sweep",
+		.description = "Prints the stability of the default brake over disc speed 0..3 m/s and\n"
+			       "pad force 2..30 kN, for both criteria.",
+	};
+	const cli_result_t cr = cli_parse(&spec, argc, argv, NULL, NULL);
+
+	if (cr != CLI_OK) {
+		return cli_exit_status(cr);
 	}
 	sim_params_default(&pd);
 	if (sim_params_to_model(&pd, &params) != 0) {

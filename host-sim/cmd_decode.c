@@ -43,7 +43,6 @@
  * rely on it; forward-fill a column to get its value at every time.
  */
 #include <errno.h>
-#include <getopt.h>
 #include <inttypes.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -55,6 +54,7 @@
 
 #include "candump_hal.h"
 #include "candump_log.h"
+#include "cli_args.h"
 #include "crc8_p01.h"
 #include "decode_inputs.h"
 #include "hal.h"
@@ -438,34 +438,6 @@ static int flush_line(decoder_t *d)
 	return rc;
 }
 
-static void decode_usage(FILE *f)
-{
-	fprintf(f,
-		"usage: squeal-sim decode [LOG|-] [--bus NAME] [--csv] [--calib FILE [--inputs-csv]]\n"
-		"       squeal-sim decode --iface IF [--csv] [--calib FILE [--inputs-csv]]\n\n"
-		"Prints every frame of the monitor's messages and inputs (squeal.dbc) as\n"
-		"physical values with names and state names, checking E2E (CRC with the\n"
-		"DBC's data ID, alive counter sequence per message); other frames raw.\n"
-		"Reads a candump -L log (default: stdin), or a SocketCAN interface until\n"
-		"SIGINT/SIGTERM.\n\n"
-		"  --csv       one CSV row per frame: time_s,id,message,counter,e2e,\n"
-		"              every signal of the DBC (empty if not in the frame,\n"
-		"              NA if not available),raw\n"
-		"  --iface IF  read from a CAN interface (vcan0, can0, ...)\n"
-		"  --bus NAME  of a log, only the frames of interface NAME (one bus of a\n"
-		"              multi-bus log; default: the calibration's input_iface, else\n"
-		"              every interface)\n"
-		"  --calib FILE  calibration text with an input map (docs/calib-input-map.md):\n"
-		"              after each frame, every input it carries as the monitor sees\n"
-		"              it: raw, physical, valid/reason, and per corner v0 [m/s] or\n"
-		"              the clamp force [N]; each corner's messages by their\n"
-		"              identifiers, named NAME[POS] (SquealStatus[FR])\n"
-		"  --inputs-csv  with --calib: only the inputs, one CSV row each:\n"
-		"              t_s,iface,id,input,raw,physical,unit,valid,reason\n\n"
-		"Malformed log lines are reported on stderr as LOG:LINE: message.\n"
-		"Exit status: 0 done, 1 input error, 2 bad usage.\n");
-}
-
 /* The output messages of every [corner] of the calibration (none for the
  * legacy form, whose one corner sends the DBC's identifiers). */
 static void corner_msgs(decoder_t *d, const decode_inputs_t *in)
@@ -602,16 +574,6 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 
 int cmd_decode(int argc, char **argv)
 {
-	enum { OPT_CSV = 256, OPT_IFACE, OPT_BUS, OPT_HELP, OPT_CALIB, OPT_INPUTS_CSV };
-	static const struct option options[] = {
-		{ "csv", no_argument, NULL, OPT_CSV },
-		{ "bus", required_argument, NULL, OPT_BUS },
-		{ "calib", required_argument, NULL, OPT_CALIB },
-		{ "inputs-csv", no_argument, NULL, OPT_INPUTS_CSV },
-		{ "iface", required_argument, NULL, OPT_IFACE },
-		{ "help", no_argument, NULL, OPT_HELP },
-		{ NULL, 0, NULL, 0 },
-	};
 	static char linebuf[4096];
 	static char outbuf[1U << 16];
 	static decoder_t d;
@@ -620,54 +582,60 @@ int cmd_decode(int argc, char **argv)
 	const char *iface = NULL;
 	const char *bus_name = NULL;
 	const char *path = NULL;
+	const cli_opt_t opts[] = {
+		CLI_OPT_FLAG("csv", 0, &d.csv,
+			     "one CSV row per frame: time_s,id,message,counter,e2e,\n"
+			     "every signal of the DBC (empty if not in the frame,\n"
+			     "NA if not available),raw"),
+		CLI_OPT_TEXT("iface", &iface, NULL, "IF", "read from a CAN interface (vcan0, can0, ...)"),
+		CLI_OPT_TEXT("bus", &bus_name, NULL, "NAME",
+			     "of a log, only the frames of interface NAME (one bus of a\n"
+			     "multi-bus log; default: the calibration's input_iface, else\n"
+			     "every interface)"),
+		CLI_OPT_TEXT("calib", &calib_path, NULL, "FILE",
+			     "calibration text with an input map (docs/calib-input-map.md):\n"
+			     "after each frame, every input it carries as the monitor sees\n"
+			     "it: raw, physical, valid/reason, and per corner v0 [m/s] or\n"
+			     "the clamp force [N]; each corner's messages by their\n"
+			     "identifiers, named NAME[POS] (SquealStatus[FR])"),
+		CLI_OPT_FLAG("inputs-csv", 0, &d.inputs_csv,
+			     "with --calib: only the inputs, one CSV row each:\n"
+			     "t_s,iface,id,input,raw,physical,unit,valid,reason"),
+	};
+	const cli_spec_t spec = {
+		.cmd = "decode",
+		CLI_SPEC_OPTS(opts),
+		.synopsis = "squeal-sim decode [LOG|-] [--bus NAME] [--csv] [--calib FILE [--inputs-csv]]\n"
+			    "       squeal-sim decode --iface IF [--csv] [--calib FILE [--inputs-csv]]",
+		.description = "Prints every frame of the monitor's messages and inputs (squeal.dbc) as\n"
+			       "physical values with names and state names, checking E2E (CRC with the\n"
+			       "DBC's data ID, alive counter sequence per message); other frames raw.\n"
+			       "Reads a candump -L log (default: stdin), or a SocketCAN interface until\n"
+			       "SIGINT/SIGTERM.",
+		.closing = "Malformed log lines are reported on stderr as LOG:LINE: message.\n"
+			   "Exit status: 0 done, 1 input error, 2 bad usage.",
+		.min_pos = 0U,
+		.max_pos = 1U,
+	};
+	size_t n_pos = 0U;
+	cli_result_t r;
 	size_t i;
-	int c;
 
 	memset(&d, 0, sizeof(d));
 	d.out = linebuf;
 	d.out_size = sizeof(linebuf);
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "h", options, NULL)) != -1) {
-		switch (c) {
-		case OPT_CSV:
-			d.csv = true;
-			break;
-		case OPT_IFACE:
-			iface = optarg;
-			break;
-		case OPT_BUS:
-			bus_name = optarg;
-			break;
-		case OPT_CALIB:
-			calib_path = optarg;
-			break;
-		case OPT_INPUTS_CSV:
-			d.inputs_csv = true;
-			break;
-		case OPT_HELP:
-		case 'h':
-			decode_usage(stdout);
-			return 0;
-		default:
-			decode_usage(stderr);
-			return 2;
-		}
-	}
-	if (optind < argc) {
-		path = argv[optind++];
+	r = cli_parse(&spec, argc, argv, &path, &n_pos);
+	if (r != CLI_OK) {
+		return cli_exit_status(r);
 	}
 	if ((iface != NULL) && (bus_name != NULL)) {
-		fprintf(stderr, "squeal-sim decode: --bus picks an interface of a log, not with --iface\n");
-		return 2;
+		return cli_exit_status(cli_usage_error(&spec, "--bus picks an interface of a log, not with --iface"));
 	}
-	if ((optind < argc) || ((iface != NULL) && (path != NULL))) {
-		fprintf(stderr, "squeal-sim decode: give one LOG, -, or --iface IF\n");
-		decode_usage(stderr);
-		return 2;
+	if ((iface != NULL) && (path != NULL)) {
+		return cli_exit_status(cli_usage_error(&spec, "give one LOG, -, or --iface IF"));
 	}
 	if (d.inputs_csv && (calib_path == NULL)) {
-		fprintf(stderr, "squeal-sim decode: --inputs-csv needs --calib FILE\n");
-		return 2;
+		return cli_exit_status(cli_usage_error(&spec, "--inputs-csv needs --calib FILE"));
 	}
 	if (calib_path != NULL) {
 		if (decode_inputs_load(&inputs, calib_path) != 0) {

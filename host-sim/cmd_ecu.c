@@ -15,7 +15,6 @@
  * for --verbose and the exit summary.
  */
 #include <errno.h>
-#include <getopt.h>
 #include <inttypes.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -26,6 +25,7 @@
 
 #include "calib.h"
 #include "calib_text.h"
+#include "cli_args.h"
 #include "hal.h"
 #include "hal_linux.h"
 #include "monitor.h"
@@ -47,110 +47,56 @@ typedef struct {
 static volatile bool ecu_stop;
 static char ecu_calib_tmp[64];
 
-static void ecu_usage(FILE *f)
-{
-	fprintf(f,
-		"usage: squeal-sim ecu --iface IF [--out-iface IF2] [--listen-only]\n"
-		"         [--calib FILE] [--duration S] [--rcvbuf BYTES] [--verbose]\n\n"
-		"Runs the monitor firmware on a SocketCAN interface (vcan0, can0, ...) in\n"
-		"real time: reads DiscSpeed/PadForce, sends SquealStatus, SquealDetail,\n"
-		"SquealDetail2 and SquealDiag, until SIGINT or SIGTERM. The interface must\n"
-		"exist and be up (no root needed). On exit a summary goes to stderr.\n\n"
-		"  --iface IF      the CAN interface (required): bus 0, the inputs\n"
-		"  --out-iface IF2 a second interface, bus 1: the outputs go there\n"
-		"                  (calibration output_bus = 1)\n"
-		"  --listen-only   never send on the input bus (input_listen_only = yes);\n"
-		"                  set the interface itself listen-only too: ip link set\n"
-		"                  can0 type can listen-only on (no ACK, no error frames)\n"
-		"  --calib FILE    calibration text file (docs/calib-example.txt lists\n"
-		"                  every key); a bad file is refused with its line number\n"
-		"  --duration S    stop by itself after S seconds\n"
-		"  --rcvbuf BYTES  socket receive buffer (SO_RCVBUF; the kernel caps it\n"
-		"                  at net.core.rmem_max): depth for input floods\n"
-		"  --verbose       print every state / warning level change on stderr\n\n"
-		"Exit status: 0 stopped by a signal or --duration, 1 interface or\n"
-		"calibration error, 2 bad usage. Watchdog expiries (a stalled loop) are\n"
-		"reported on stderr and counted in the summary.\n"
-		"Numeric build: %s.\n", SQUEAL_NUMERIC_NAME);
-}
-
 static int ecu_parse(int argc, char **argv, ecu_args_t *a)
 {
-	enum { OPT_IFACE = 256, OPT_OUT_IFACE, OPT_LISTEN_ONLY, OPT_CALIB, OPT_VERBOSE, OPT_DURATION,
-	       OPT_RCVBUF, OPT_HELP };
-	static const struct option options[] = {
-		{ "iface", required_argument, NULL, OPT_IFACE },
-		{ "out-iface", required_argument, NULL, OPT_OUT_IFACE },
-		{ "listen-only", no_argument, NULL, OPT_LISTEN_ONLY },
-		{ "calib", required_argument, NULL, OPT_CALIB },
-		{ "verbose", no_argument, NULL, OPT_VERBOSE },
-		{ "duration", required_argument, NULL, OPT_DURATION },
-		{ "rcvbuf", required_argument, NULL, OPT_RCVBUF },
-		{ "help", no_argument, NULL, OPT_HELP },
-		{ NULL, 0, NULL, 0 }
+	uint32_t rcvbuf = 0U;
+	const cli_opt_t opts[] = {
+		CLI_OPT_TEXT("iface", &a->iface, NULL, "IF",
+			     "the CAN interface (required): bus 0, the inputs"),
+		CLI_OPT_TEXT("out-iface", &a->out_iface, NULL, "IF2",
+			     "a second interface, bus 1: the outputs go there\n"
+			     "(calibration output_bus = 1)"),
+		CLI_OPT_FLAG("listen-only", 0, &a->listen_only,
+			     "never send on the input bus (input_listen_only = yes);\n"
+			     "set the interface itself listen-only too: ip link set\n"
+			     "can0 type can listen-only on (no ACK, no error frames)"),
+		CLI_OPT_TEXT("calib", &a->calib_path, NULL, "FILE",
+			     "calibration text file (docs/calib-example.txt lists\n"
+			     "every key); a bad file is refused with its line number"),
+		CLI_OPT_REAL("duration", &a->duration_s, NULL, 0.0, 1e7, 0U, "S",
+			     "stop by itself after S seconds"),
+		CLI_OPT_U32("rcvbuf", &rcvbuf, NULL, 0.0, 268435456.0, "BYTES",
+			    "socket receive buffer (SO_RCVBUF; the kernel caps it\n"
+			    "at net.core.rmem_max): depth for input floods"),
+		CLI_OPT_FLAG("verbose", 'v', &a->verbose,
+			     "print every state / warning level change on stderr"),
 	};
-	int c;
+	const cli_spec_t spec = {
+		.cmd = "ecu",
+		CLI_SPEC_OPTS(opts),
+		.synopsis = "squeal-sim ecu --iface IF [--out-iface IF2] [--listen-only]\n"
+			    "         [--calib FILE] [--duration S] [--rcvbuf BYTES] [--verbose]",
+		.description = "Runs the monitor firmware on a SocketCAN interface (vcan0, can0, ...) in\n"
+			       "real time: reads DiscSpeed/PadForce, sends SquealStatus, SquealDetail,\n"
+			       "SquealDetail2 and SquealDiag, until SIGINT or SIGTERM. The interface must\n"
+			       "exist and be up (no root needed). On exit a summary goes to stderr.",
+		.closing = "Exit status: 0 stopped by a signal or --duration, 1 interface or\n"
+			   "calibration error, 2 bad usage. Watchdog expiries (a stalled loop) are\n"
+			   "reported on stderr and counted in the summary.",
+	};
+	cli_result_t r;
 
 	memset(a, 0, sizeof(*a));
 	a->duration_s = -1.0;
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "hv", options, NULL)) != -1) {
-		char *end = NULL;
-
-		switch (c) {
-		case OPT_IFACE:
-			a->iface = optarg;
-			break;
-		case OPT_OUT_IFACE:
-			a->out_iface = optarg;
-			break;
-		case OPT_LISTEN_ONLY:
-			a->listen_only = true;
-			break;
-		case OPT_CALIB:
-			a->calib_path = optarg;
-			break;
-		case 'v':
-		case OPT_VERBOSE:
-			a->verbose = true;
-			break;
-		case OPT_DURATION:
-			a->duration_s = strtod(optarg, &end);
-			if ((end == optarg) || (*end != '\0') || !(a->duration_s >= 0.0)) {
-				fprintf(stderr, "squeal-sim ecu: --duration needs seconds >= 0, got '%s'\n",
-					optarg);
-				return -1;
-			}
-			break;
-		case OPT_RCVBUF: {
-			const long v = strtol(optarg, &end, 10);
-
-			if ((end == optarg) || (*end != '\0') || (v < 0) || (v > (1L << 28))) {
-				fprintf(stderr, "squeal-sim ecu: --rcvbuf needs bytes (0 .. 268435456), got '%s'\n",
-					optarg);
-				return -1;
-			}
-			a->rcvbuf_bytes = (int)v;
-			break;
-		}
-		case 'h':
-		case OPT_HELP:
-			ecu_usage(stdout);
-			return 1;
-		default:
-			ecu_usage(stderr);
-			return -1;
-		}
+	r = cli_parse(&spec, argc, argv, NULL, NULL);
+	if (r != CLI_OK) {
+		return (int)r;
 	}
-	if (optind < argc) {
-		fprintf(stderr, "squeal-sim ecu: unexpected argument '%s'\n", argv[optind]);
-		return -1;
-	}
+	a->rcvbuf_bytes = (int)rcvbuf; /* <= 2^28 */
 	if (a->iface == NULL) {
-		fprintf(stderr, "squeal-sim ecu: --iface IF is required (e.g. --iface vcan0)\n");
-		return -1;
+		return (int)cli_usage_error(&spec, "--iface IF is required (e.g. --iface vcan0)");
 	}
-	return 0;
+	return CLI_OK;
 }
 
 /*
@@ -311,8 +257,8 @@ int cmd_ecu(int argc, char **argv)
 	uint8_t warning;
 	int rc = ecu_parse(argc, argv, &a);
 
-	if (rc != 0) {
-		return rc > 0 ? 0 : 2;
+	if (rc != CLI_OK) {
+		return cli_exit_status((cli_result_t)rc);
 	}
 	if (hal_linux_install_signal_handlers(&ecu_stop) != SQ_OK) {
 		fprintf(stderr, "squeal-sim ecu: %s\n", hal_linux_strerror());

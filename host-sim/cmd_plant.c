@@ -7,7 +7,6 @@
  * the way (drop, delay, corrupt CRC, frozen counter), reproducibly (--seed).
  */
 #include <errno.h>
-#include <getopt.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdbool.h>
@@ -21,6 +20,7 @@
 #include "calib_text.h"
 #include "candump_hal.h"
 #include "candump_log.h"
+#include "cli_args.h"
 #include "e2e_p01.h"
 #include "hal.h"
 #include "hal_linux.h"
@@ -104,183 +104,97 @@ static double rng_uniform(uint64_t *x)
 	return (double)(rng_next(x) >> 11) * (1.0 / 9007199254740992.0);
 }
 
-static void plant_usage(FILE *f)
-{
-	fprintf(f,
-		"usage: squeal-sim plant (--iface IF | --log FILE|-) --scenario NAME|FILE\n"
-		"         [--v0 MPS --force N] [--duration S] [--rate-hz N] [--calib FILE]\n"
-		"         [--drop P] [--delay MS] [--corrupt-crc P] [--freeze-counter AFTER_S]\n"
-		"         [--seed N] [--quiet]\n\n"
-		"Sends DiscSpeed and PadForce (E2E counter + CRC) every 10 ms each, the\n"
-		"two senders 5 ms apart, following a scenario: in real time on a SocketCAN\n"
-		"interface, or with --log as a candump -L log in virtual time starting at\n"
-		"(0.000000) (no interface needed; --iface then only names the log's\n"
-		"interface column, default vcan0).\n\n"
-		"Scenarios (speeds are vehicle speeds; the disc turns at v / r_w and its\n"
-		"surface at the pad moves at v0 = v r_p / r_w):\n"
-		"  stop    30 m/s -> standstill at 6 m/s^2, 9000 N (6 s)\n"
-		"  creep   slow rolling 1.0 -> 0.4 -> 1.0 m/s at 1500 N (12 s)\n"
-		"  sweep   3, 6, 9, 12 kN, each 10 -> 0.5 -> 10 m/s (32 s)\n"
-		"  point   constant --v0 MPS (pad surface speed, as in classify) and\n"
-		"          --force N (10 s)\n"
-		"  FILE    rows 'time_s speed_mps force_n', linear interpolation, '#'\n"
-		"          comments (see scenarios/)\n\n"
-		"  --duration S        run S seconds (default: the scenario's length;\n"
-		"                      past its last row the last values hold)\n"
-		"  --rate-hz N         frames per second of EACH message (default 100:\n"
-		"                      the DBC period); higher for flood tests\n"
-		"  --calib FILE        take identifiers and radii from a calibration\n"
-		"                      text file (as the ECU's --calib); with an input\n"
-		"                      map ([input]/[corner] sections) send that vehicle's\n"
-		"                      frames instead, in its layout and protection, each\n"
-		"                      at its period (--rate-hz 100 = that period)\n"
-		"  --drop P            lose each frame with probability P (the sender's\n"
-		"                      counter still advances, as for a frame lost on\n"
-		"                      the bus)\n"
-		"  --delay MS          each frame leaves up to MS ms late (uniform,\n"
-		"                      order within a message kept): jitter, staleness\n"
-		"  --corrupt-crc P     flip CRC bits of a frame with probability P\n"
-		"  --freeze-counter S  from S seconds on the alive counter stops\n"
-		"  --seed N            random seed of the faults (default 1)\n"
-		"  --quiet             no summary on stderr\n\n"
-		"Exit status: 0 done (or stopped by SIGINT/SIGTERM), 1 interface or\n"
-		"file error, 2 bad usage.\n");
-}
-
-static int parse_num(const char *flag, const char *text, double lo, double hi,
-		     double *out)
-{
-	char *end = NULL;
-	double v;
-
-	errno = 0;
-	v = strtod(text, &end);
-	if ((end == text) || (*end != '\0') || (errno == ERANGE) || !isfinite(v) ||
-	    (v < lo) || (v > hi)) {
-		fprintf(stderr, "squeal-sim plant: %s needs a number in [%g, %g], got '%s'\n",
-			flag, lo, hi, text);
-		return -1;
-	}
-	*out = v;
-	return 0;
-}
-
 static int plant_parse(int argc, char **argv, plant_args_t *a)
 {
-	enum {
-		OPT_IFACE = 256, OPT_SCENARIO, OPT_V0, OPT_FORCE, OPT_DURATION,
-		OPT_LOG, OPT_DROP, OPT_DELAY, OPT_CORRUPT, OPT_FREEZE, OPT_SEED,
-		OPT_RATE, OPT_CALIB, OPT_QUIET, OPT_HELP
+	const cli_opt_t opts[] = {
+		CLI_OPT_TEXT("iface", &a->iface, NULL, "IF",
+			     "the SocketCAN interface to send on (with --log: only\n"
+			     "the name of the log's interface column)"),
+		CLI_OPT_TEXT("log", &a->log_path, NULL, "FILE|-",
+			     "write a candump -L log in virtual time instead"),
+		CLI_OPT_TEXT("scenario", &a->scenario, NULL, "NAME|FILE",
+			     "stop, creep, sweep, point or a file (above; required)"),
+		CLI_OPT_REAL("v0", &a->v0_mps, &a->have_v0, 0.0, 1000.0, 0U, "MPS",
+			     "--scenario point: pad surface speed [m/s]"),
+		CLI_OPT_REAL("force", &a->force_n, &a->have_force, 0.0, 1e6, 0U, "N",
+			     "--scenario point: pad force [N]"),
+		CLI_OPT_REAL("duration", &a->duration_s, NULL, 0.0, 1e7, 0U, "S",
+			     "run S seconds (default: the scenario's length;\n"
+			     "past its last row the last values hold)"),
+		CLI_OPT_REAL("rate-hz", &a->rate_hz, NULL, 0.1, 1e6, 0U, "N",
+			     "frames per second of EACH message (default 100:\n"
+			     "the DBC period); higher for flood tests"),
+		CLI_OPT_TEXT("calib", &a->calib_path, NULL, "FILE",
+			     "take identifiers and radii from a calibration\n"
+			     "text file (as the ECU's --calib); with an input\n"
+			     "map ([input]/[corner] sections) send that vehicle's\n"
+			     "frames instead, in its layout and protection, each\n"
+			     "at its period (--rate-hz 100 = that period)"),
+		CLI_OPT_REAL("drop", &a->drop_p, NULL, 0.0, 1.0, 0U, "P",
+			     "lose each frame with probability P (the sender's\n"
+			     "counter still advances, as for a frame lost on\n"
+			     "the bus)"),
+		CLI_OPT_REAL("delay", &a->delay_ms, NULL, 0.0, 60000.0, 0U, "MS",
+			     "each frame leaves up to MS ms late (uniform,\n"
+			     "order within a message kept): jitter, staleness"),
+		CLI_OPT_REAL("corrupt-crc", &a->corrupt_p, NULL, 0.0, 1.0, 0U, "P",
+			     "flip CRC bits of a frame with probability P"),
+		CLI_OPT_REAL("freeze-counter", &a->freeze_after_s, NULL, 0.0, 1e7, 0U, "S",
+			     "from S seconds on the alive counter stops"),
+		CLI_OPT_U64("seed", &a->seed, NULL, 0.0, 1e15, 1U, "N",
+			    "random seed of the faults (default 1)"),
+		CLI_OPT_FLAG("quiet", 0, &a->quiet, "no summary on stderr"),
 	};
-	static const struct option options[] = {
-		{ "iface", required_argument, NULL, OPT_IFACE },
-		{ "scenario", required_argument, NULL, OPT_SCENARIO },
-		{ "v0", required_argument, NULL, OPT_V0 },
-		{ "force", required_argument, NULL, OPT_FORCE },
-		{ "duration", required_argument, NULL, OPT_DURATION },
-		{ "log", required_argument, NULL, OPT_LOG },
-		{ "drop", required_argument, NULL, OPT_DROP },
-		{ "delay", required_argument, NULL, OPT_DELAY },
-		{ "corrupt-crc", required_argument, NULL, OPT_CORRUPT },
-		{ "freeze-counter", required_argument, NULL, OPT_FREEZE },
-		{ "seed", required_argument, NULL, OPT_SEED },
-		{ "rate-hz", required_argument, NULL, OPT_RATE },
-		{ "calib", required_argument, NULL, OPT_CALIB },
-		{ "quiet", no_argument, NULL, OPT_QUIET },
-		{ "help", no_argument, NULL, OPT_HELP },
-		{ NULL, 0, NULL, 0 }
+	const cli_spec_t spec = {
+		.cmd = "plant",
+		CLI_SPEC_OPTS(opts),
+		.synopsis = "squeal-sim plant (--iface IF | --log FILE|-) --scenario NAME|FILE\n"
+			    "         [--v0 MPS --force N] [--duration S] [--rate-hz N] [--calib FILE]\n"
+			    "         [--drop P] [--delay MS] [--corrupt-crc P] [--freeze-counter AFTER_S]\n"
+			    "         [--seed N] [--quiet]",
+		.description = "Sends DiscSpeed and PadForce (E2E counter + CRC) every 10 ms each, the\n"
+			       "two senders 5 ms apart, following a scenario: in real time on a SocketCAN\n"
+			       "interface, or with --log as a candump -L log in virtual time starting at\n"
+			       "(0.000000) (no interface needed; --iface then only names the log's\n"
+			       "interface column, default vcan0).\n\n"
+			       "Scenarios (speeds are vehicle speeds; the disc turns at v / r_w and its\n"
+			       "surface at the pad moves at v0 = v r_p / r_w):\n"
+			       "  stop    30 m/s -> standstill at 6 m/s^2, 9000 N (6 s)\n"
+			       "  creep   slow rolling 1.0 -> 0.4 -> 1.0 m/s at 1500 N (12 s)\n"
+			       "  sweep   3, 6, 9, 12 kN, each 10 -> 0.5 -> 10 m/s (32 s)\n"
+			       "  point   constant --v0 MPS (pad surface speed, as in classify) and\n"
+			       "          --force N (10 s)\n"
+			       "  FILE    rows 'time_s speed_mps force_n', linear interpolation, '#'\n"
+			       "          comments (see scenarios/)",
+		.closing = "Exit status: 0 done (or stopped by SIGINT/SIGTERM), 1 interface or\n"
+			   "file error, 2 bad usage.",
 	};
-	double seed = 1.0;
-	int c;
+	cli_result_t r;
+	bool point;
 
 	memset(a, 0, sizeof(*a));
 	a->duration_s = -1.0;
 	a->freeze_after_s = -1.0;
 	a->rate_hz = 100.0;
 	a->seed = 1U;
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "h", options, NULL)) != -1) {
-		int rc = 0;
-
-		switch (c) {
-		case OPT_IFACE:
-			a->iface = optarg;
-			break;
-		case OPT_SCENARIO:
-			a->scenario = optarg;
-			break;
-		case OPT_V0:
-			rc = parse_num("--v0", optarg, 0.0, 1000.0, &a->v0_mps);
-			a->have_v0 = true;
-			break;
-		case OPT_FORCE:
-			rc = parse_num("--force", optarg, 0.0, 1e6, &a->force_n);
-			a->have_force = true;
-			break;
-		case OPT_DURATION:
-			rc = parse_num("--duration", optarg, 0.0, 1e7, &a->duration_s);
-			break;
-		case OPT_LOG:
-			a->log_path = optarg;
-			break;
-		case OPT_DROP:
-			rc = parse_num("--drop", optarg, 0.0, 1.0, &a->drop_p);
-			break;
-		case OPT_DELAY:
-			rc = parse_num("--delay", optarg, 0.0, 60000.0, &a->delay_ms);
-			break;
-		case OPT_CORRUPT:
-			rc = parse_num("--corrupt-crc", optarg, 0.0, 1.0, &a->corrupt_p);
-			break;
-		case OPT_FREEZE:
-			rc = parse_num("--freeze-counter", optarg, 0.0, 1e7, &a->freeze_after_s);
-			break;
-		case OPT_SEED:
-			rc = parse_num("--seed", optarg, 0.0, 1e15, &seed);
-			break;
-		case OPT_RATE:
-			rc = parse_num("--rate-hz", optarg, 0.1, 1e6, &a->rate_hz);
-			break;
-		case OPT_CALIB:
-			a->calib_path = optarg;
-			break;
-		case OPT_QUIET:
-			a->quiet = true;
-			break;
-		case 'h':
-		case OPT_HELP:
-			plant_usage(stdout);
-			return 1;
-		default:
-			plant_usage(stderr);
-			return -1;
-		}
-		if (rc != 0) {
-			return -1;
-		}
-	}
-	if (optind < argc) {
-		fprintf(stderr, "squeal-sim plant: unexpected argument '%s'\n", argv[optind]);
-		return -1;
+	r = cli_parse(&spec, argc, argv, NULL, NULL);
+	if (r != CLI_OK) {
+		return (int)r;
 	}
 	if (a->scenario == NULL) {
-		fprintf(stderr, "squeal-sim plant: --scenario NAME|FILE is required\n");
-		return -1;
+		return (int)cli_usage_error(&spec, "--scenario NAME|FILE is required");
 	}
 	if ((a->iface == NULL) && (a->log_path == NULL)) {
-		fprintf(stderr, "squeal-sim plant: give --iface IF (send) or --log FILE|- (write a log)\n");
-		return -1;
+		return (int)cli_usage_error(&spec, "give --iface IF (send) or --log FILE|- (write a log)");
 	}
-	if ((strcmp(a->scenario, "point") == 0) && (!a->have_v0 || !a->have_force)) {
-		fprintf(stderr, "squeal-sim plant: --scenario point needs --v0 MPS and --force N\n");
-		return -1;
+	point = strcmp(a->scenario, "point") == 0;
+	if (point && (!a->have_v0 || !a->have_force)) {
+		return (int)cli_usage_error(&spec, "--scenario point needs --v0 MPS and --force N");
 	}
-	if ((strcmp(a->scenario, "point") != 0) && (a->have_v0 || a->have_force)) {
-		fprintf(stderr, "squeal-sim plant: --v0/--force belong to --scenario point\n");
-		return -1;
+	if (!point && (a->have_v0 || a->have_force)) {
+		return (int)cli_usage_error(&spec, "--v0/--force belong to --scenario point");
 	}
-	a->seed = (uint64_t)seed;
-	return 0;
+	return CLI_OK;
 }
 
 /* Saturating raw conversion, counted when the sender had to clamp. */
@@ -433,8 +347,8 @@ static int plant_setup(plant_t *p, int argc, char **argv)
 	double v_vehicle = 0.0;
 	unsigned int i;
 
-	if (rc != 0) {
-		return rc > 0 ? 0 : 2;
+	if (rc != CLI_OK) {
+		return cli_exit_status((cli_result_t)rc);
 	}
 	calib_default(&p->cal);
 	if ((p->a.calib_path != NULL) &&

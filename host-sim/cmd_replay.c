@@ -60,7 +60,7 @@
  * Memory is constant: the log is streamed line by line through the window.
  */
 #include <errno.h>
-#include <getopt.h>
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -69,6 +69,7 @@
 
 #include "calib.h"
 #include "calib_text.h"
+#include "cli_args.h"
 #include "input_rx.h"
 #include "candump_hal.h"
 #include "candump_log.h"
@@ -108,6 +109,7 @@ typedef struct {
 	bool rss;
 	const char *summary_json; /* --summary-json FILE|- (replay_summary.h) */
 	bool no_output;           /* --no-output: no frame lines, only counts */
+	bool quiet;               /* --quiet: no line per message, the summary only */
 } replay_args_t;
 
 /* Where a new segment began: the log line, how far the log's time went
@@ -221,146 +223,91 @@ typedef struct {
 	replay_summary_t *summary; /* NULL without --summary-json */
 } replay_t;
 
-static void replay_usage(FILE *f)
-{
-	fprintf(f,
-		"usage: squeal-sim replay LOG|- [--calib FILE] [--bus NAME]\n"
-		"         [--iface-out NAME] [--tail-ms MS] [--max-gap S] [--rss]\n"
-		"         [--summary-json FILE|-] [--no-output]\n\n"
-		"Feeds a candump -L log (a file, or - for stdin) through the firmware in\n"
-		"virtual time taken from the log's timestamps, offline. Writes every frame\n"
-		"the ECU sends as a candump -L log on stdout, and a summary on stderr:\n"
-		"frames read, used, rejected by reason, time in each state, warnings\n"
-		"raised, state changes. Malformed lines are reported as LOG:LINE: message\n"
-		"and skipped. The same log gives the same output, byte for byte.\n\n"
-		"  --calib FILE     calibration text file (docs/calib-example.txt)\n"
-		"  --bus NAME       the inputs come from the log's interface NAME (the\n"
-		"                   calibration's input_bus), every other interface is\n"
-		"                   the other bus; default: the calibration's input_iface,\n"
-		"                   else all frames on bus 0 with the inputs from the first\n"
-		"                   interface that carries one (said so when several do)\n"
-		"  --iface-out NAME interface name of the output lines (default: the\n"
-		"                   output bus's: the input interface or the log's first\n"
-		"                   for the input bus, another of its interfaces for the other)\n"
-		"  --tail-ms MS     run on after the last frame (default 0: the replay\n"
-		"                   ends with the tick that takes the last frame in)\n"
-		"  --max-gap S      a gap between frames up to S seconds is simulated\n"
-		"                   (time passes, inputs go stale); a longer one is\n"
-		"                   skipped (default 3600)\n\n"
-		"Frames out of time order are put back in order within a window of 5 s of\n"
-		"log time (32768 frames); a jump back of more than 1 s that does not return\n"
-		"to where it left is a logger restart: a new segment, re-based.\n"
-		"  --rss            add the peak resident memory (VmHWM) to the summary\n"
-		"  --summary-json FILE  also write the summary as one JSON document, with\n"
-		"                   the episodes (time spans in one state per corner) and\n"
-		"                   the time per (v0, force) cell; - for stdout (needs\n"
-		"                   --no-output)\n"
-		"  --no-output      do not write the ECU's frames (only count them)\n\n"
-		"CAN FD frames (##) reach the firmware as FD frames; CAN XL frames are\n"
-		"counted as unsupported.\n"
-		"Exit status: 0 done (also with malformed lines), 1 input/calibration\n"
-		"error or no CAN frame in the log, 2 bad usage.\n");
-}
-
-static int parse_u64(const char *flag, const char *text, uint64_t max, uint64_t *out)
-{
-	char *end = NULL;
-	unsigned long long v;
-
-	errno = 0;
-	v = strtoull(text, &end, 10);
-	if ((end == text) || (*end != '\0') || (errno != 0) || (text[0] == '-') || (v > max)) {
-		fprintf(stderr, "squeal-sim replay: %s needs a whole number 0..%llu, got '%s'\n",
-			flag, (unsigned long long)max, text);
-		return -1;
-	}
-	*out = v;
-	return 0;
-}
-
 static int replay_parse(int argc, char **argv, replay_args_t *a)
 {
-	enum { OPT_CALIB = 256, OPT_IFACE_OUT, OPT_BUS, OPT_TAIL, OPT_GAP, OPT_RSS, OPT_HELP,
-	       OPT_SUMMARY_JSON, OPT_NO_OUTPUT };
-	static const struct option options[] = {
-		{ "calib", required_argument, NULL, OPT_CALIB },
-		{ "bus", required_argument, NULL, OPT_BUS },
-		{ "iface-out", required_argument, NULL, OPT_IFACE_OUT },
-		{ "tail-ms", required_argument, NULL, OPT_TAIL },
-		{ "max-gap", required_argument, NULL, OPT_GAP },
-		{ "rss", no_argument, NULL, OPT_RSS },
-		{ "summary-json", required_argument, NULL, OPT_SUMMARY_JSON },
-		{ "no-output", no_argument, NULL, OPT_NO_OUTPUT },
-		{ "help", no_argument, NULL, OPT_HELP },
-		{ NULL, 0, NULL, 0 },
+	const cli_opt_t opts[] = {
+		CLI_OPT_TEXT("calib", &a->calib_path, NULL, "FILE",
+			     "calibration text file (docs/calib-example.txt)"),
+		CLI_OPT_NAME("bus", &a->input_iface, &a->input_iface_from_bus, CANDUMP_IFACE_MAX, "NAME",
+			     "the inputs come from the log's interface NAME (the\n"
+			     "calibration's input_bus), every other interface is\n"
+			     "the other bus; default: the calibration's input_iface,\n"
+			     "else all frames on bus 0 with the inputs from the first\n"
+			     "interface that carries one (said so when several do)"),
+		CLI_OPT_NAME("iface-out", &a->iface_out, NULL, CANDUMP_IFACE_MAX, "NAME",
+			     "interface name of the output lines (default: the\n"
+			     "output bus's: the input interface or the log's first\n"
+			     "for the input bus, another of its interfaces for the other)"),
+		CLI_OPT_U64("tail-ms", &a->tail_us, NULL, 0.0, 86400000.0, 1000U, "MS",
+			    "run on after the last frame (default 0: the replay\n"
+			    "ends with the tick that takes the last frame in)"),
+		CLI_OPT_U64("max-gap", &a->max_gap_us, NULL, 0.0, 31536000.0, 1000000U, "S",
+			    "a gap between frames up to S seconds is simulated\n"
+			    "(time passes, inputs go stale); a longer one is\n"
+			    "skipped (default 3600)"),
+		CLI_OPT_FLAG("rss", 0, &a->rss, "add the peak resident memory (VmHWM) to the summary"),
+		CLI_OPT_TEXT("summary-json", &a->summary_json, NULL, "FILE|-",
+			     "also write the summary as one JSON document, with\n"
+			     "the episodes (time spans in one state per corner) and\n"
+			     "the time per (v0, force) cell; - for stdout (needs\n"
+			     "--no-output or --quiet)"),
+		CLI_OPT_FLAG("no-output", 0, &a->no_output,
+			     "do not write the ECU's frames (only count them)"),
+		CLI_OPT_FLAG("quiet", 0, &a->quiet,
+			     "no line per message: neither the ECU's frames nor the\n"
+			     "notes on single log lines (each still counted); only\n"
+			     "the summary"),
 	};
-	uint64_t v;
-	int c;
+	const cli_spec_t spec = {
+		.cmd = "replay",
+		CLI_SPEC_OPTS(opts),
+		.synopsis = "squeal-sim replay LOG|- [--calib FILE] [--bus NAME]\n"
+			    "         [--iface-out NAME] [--tail-ms MS] [--max-gap S] [--rss]\n"
+			    "         [--summary-json FILE|-] [--no-output] [--quiet]",
+		.description = "Feeds a candump -L log (a file, or - for stdin) through the firmware in\n"
+			       "virtual time taken from the log's timestamps, offline. Writes every frame\n"
+			       "the ECU sends as a candump -L log on stdout, and a summary on stderr:\n"
+			       "frames read, used, rejected by reason, time in each state, warnings\n"
+			       "raised, state changes. Malformed lines are reported as LOG:LINE: message\n"
+			       "and skipped. The same log gives the same output, byte for byte.\n\n"
+			       "Frames out of time order are put back in order within a window of 5 s of\n"
+			       "log time (32768 frames); a jump back of more than 1 s that does not return\n"
+			       "to where it left is a logger restart: a new segment, re-based.",
+		.closing = "CAN FD frames (##) reach the firmware as FD frames; CAN XL frames are\ncounted as unsupported.\n"
+			   "Exit status: 0 done (also with malformed lines), 1 input/calibration\n"
+			   "error or no CAN frame in the log, 2 bad usage.",
+		.min_pos = 1U,
+		.max_pos = 1U,
+	};
+	cli_result_t r;
 
 	a->tail_us = 0U;
 	a->max_gap_us = 3600ULL * 1000000ULL;
-	optind = 1;
-	while ((c = getopt_long(argc, argv, "h", options, NULL)) != -1) {
-		switch (c) {
-		case OPT_CALIB:
-			a->calib_path = optarg;
-			break;
-		case OPT_IFACE_OUT:
-		case OPT_BUS:
-			if ((strlen(optarg) == 0U) || (strlen(optarg) > CANDUMP_IFACE_MAX) ||
-			    (strpbrk(optarg, " \t\n") != NULL)) {
-				fprintf(stderr, "squeal-sim replay: %s needs 1..%u characters without blanks\n",
-					(c == OPT_BUS) ? "--bus" : "--iface-out", CANDUMP_IFACE_MAX);
-				return 2;
-			}
-			if (c == OPT_BUS) {
-				a->input_iface = optarg;
-				a->input_iface_from_bus = true;
-			} else {
-				a->iface_out = optarg;
-			}
-			break;
-		case OPT_TAIL:
-			if (parse_u64("--tail-ms", optarg, 86400000ULL, &v) != 0) {
-				return 2;
-			}
-			a->tail_us = v * 1000U;
-			break;
-		case OPT_GAP:
-			if (parse_u64("--max-gap", optarg, 31536000ULL, &v) != 0) {
-				return 2;
-			}
-			a->max_gap_us = v * 1000000U;
-			break;
-		case OPT_RSS:
-			a->rss = true;
-			break;
-		case OPT_SUMMARY_JSON:
-			a->summary_json = optarg;
-			break;
-		case OPT_NO_OUTPUT:
-			a->no_output = true;
-			break;
-		case OPT_HELP:
-		case 'h':
-			replay_usage(stdout);
-			return 1;
-		default:
-			replay_usage(stderr);
-			return 2;
-		}
+	r = cli_parse(&spec, argc, argv, &a->log_name, NULL);
+	if (r != CLI_OK) {
+		return (int)r;
 	}
-	if (optind + 1 != argc) {
-		fprintf(stderr, "squeal-sim replay: give exactly one LOG (or - for stdin)\n");
-		replay_usage(stderr);
-		return 2;
-	}
-	a->log_name = argv[optind];
+	a->no_output = a->no_output || a->quiet;
 	if ((a->summary_json != NULL) && (strcmp(a->summary_json, "-") == 0) && !a->no_output) {
-		fprintf(stderr, "squeal-sim replay: --summary-json - shares stdout with the frames: add --no-output\n");
-		return 2;
+		return (int)cli_usage_error(&spec, "--summary-json - shares stdout with the frames: add --no-output");
 	}
-	return 0;
+	return CLI_OK;
+}
+
+/* A note about one log line on stderr (a restart, a gap, a late frame),
+ * unless --quiet: the summary counts each. */
+static void note(const replay_args_t *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void note(const replay_args_t *a, const char *fmt, ...)
+{
+	va_list ap;
+
+	if (a->quiet) {
+		return;
+	}
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
 }
 
 /* ---- output ------------------------------------------------------------------ */
@@ -596,7 +543,7 @@ static bool bus_of_frame(replay_t *r, const held_t *h, const hal_can_frame_t *hf
 			r->auto_iface = h->iface;
 		} else if (!r->multi_reported) {
 			r->multi_reported = true;
-			fprintf(stderr, "%s:%llu: the input identifiers arrive on %s and %s (0x%X here): the inputs are taken from %s (the first that carried one), the other's are ignored; --bus NAME or input_iface chooses\n",
+			note(a, "%s:%llu: the input identifiers arrive on %s and %s (0x%X here): the inputs are taken from %s (the first that carried one), the other's are ignored; --bus NAME or input_iface chooses\n",
 				a->log_name, (unsigned long long)h->line_no, r->ifaces[r->auto_iface],
 				name, (unsigned)hf->id, r->ifaces[r->auto_iface]);
 		}
@@ -669,7 +616,7 @@ static void release(replay_t *r, const held_t *h, const replay_args_t *a)
 		const uint64_t back = r->now_us - t_us;
 
 		r->backwards++;
-		fprintf(stderr, "%s:%llu: timestamp %llu.%06llu s behind, beyond the reorder window: frame given at the current time\n",
+		note(a, "%s:%llu: timestamp %llu.%06llu s behind, beyond the reorder window: frame given at the current time\n",
 			a->log_name, (unsigned long long)h->line_no,
 			(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U));
 		t_us = r->now_us;
@@ -677,7 +624,7 @@ static void release(replay_t *r, const held_t *h, const replay_args_t *a)
 		const uint64_t gap = t_us - r->now_us;
 
 		r->gaps++;
-		fprintf(stderr, "%s:%llu: gap of %llu.%06llu s > --max-gap: skipped, not simulated\n",
+		note(a, "%s:%llu: gap of %llu.%06llu s > --max-gap: skipped, not simulated\n",
 			a->log_name, (unsigned long long)h->line_no,
 			(unsigned long long)(gap / 1000000U), (unsigned long long)(gap % 1000000U));
 		/* keep the tick grid's phase */
@@ -800,7 +747,7 @@ static void detour_restart(replay_t *r, const replay_args_t *a)
 		r->max_seen_us = r->prev_t_us;
 	}
 	r->detour = false;
-	fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s: new segment %llu, log time re-based\n",
+	note(a, "%s:%llu: timestamp goes back by %llu.%06llu s: new segment %llu, log time re-based\n",
 		a->log_name, (unsigned long long)r->detour_line,
 		(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U),
 		(unsigned long long)(r->segments + 1U));
@@ -819,7 +766,7 @@ static void detour_reordered(replay_t *r, const replay_args_t *a, uint64_t line_
 	r->reordered += r->detour_frames;
 	r->reordered_blocks++;
 	r->detour = false;
-	fprintf(stderr, "%s:%llu: timestamp goes back by %llu.%06llu s and returns at line %llu: a block of %llu frames written out of order, put back in order\n",
+	note(a, "%s:%llu: timestamp goes back by %llu.%06llu s and returns at line %llu: a block of %llu frames written out of order, put back in order\n",
 		a->log_name, (unsigned long long)r->detour_line,
 		(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U),
 		(unsigned long long)line_no, (unsigned long long)r->detour_frames);
@@ -1034,15 +981,34 @@ static uint64_t corner_time_us(const corner_stats_t *cs)
 	return total;
 }
 
+/* What the text and the JSON summary show of corner k. */
+typedef struct {
+	const corner_stats_t *cs;
+	const input_counters_t *cnt[2]; /* speed, force */
+	uint64_t total_us;              /* corner_time_us */
+} corner_view_t;
+
+static const monitor_t *corner_view(const replay_t *r, uint32_t k, corner_view_t *v)
+{
+	const monitor_t *c = squeal_app_corner(k);
+
+	v->cs = &r->cs[k];
+	v->cnt[0] = &c->speed.count;
+	v->cnt[1] = &c->force.count;
+	v->total_us = corner_time_us(v->cs);
+	return c;
+}
+
 /* One corner: final state, share of time per state, each input's frames
  * used and rejected by the input stage's reasons, the time in FAULT by
  * reason. */
 static void corner_summary(FILE *o, const replay_t *r, uint32_t k)
 {
-	const monitor_t *c = squeal_app_corner(k);
-	const corner_stats_t *cs = &r->cs[k];
-	const input_counters_t *cnt[2] = { &c->speed.count, &c->force.count };
-	const uint64_t total = corner_time_us(cs);
+	corner_view_t v;
+	const monitor_t *c = corner_view(r, k, &v);
+	const corner_stats_t *cs = v.cs;
+	const input_counters_t *const *cnt = v.cnt;
+	const uint64_t total = v.total_us;
 	char label[96];
 	unsigned s;
 	unsigned j;
@@ -1286,6 +1252,36 @@ static void json_buses(json_writer_t *w, const replay_t *r, const replay_args_t 
 	json_end_object(w);
 }
 
+/* One input of a corner in "inputs_by_corner" (j: 0 speed, 1 force). */
+static void json_corner_input(json_writer_t *w, const replay_t *r, uint32_t k, unsigned j,
+			      const corner_view_t *v)
+{
+	const input_counters_t *cnt = v->cnt[j];
+	char label[96];
+	unsigned q;
+
+	input_label(r, k, j, label, sizeof(label));
+	json_key(w, qty_names[j]);
+	json_begin_object(w);
+	json_kv_string(w, "label", label);
+	json_kv_u64(w, "frames", cnt->frames);
+	json_kv_u64(w, "used", cnt->used);
+	json_key(w, "rejected");
+	json_begin_object(w);
+	for (q = 1U; q < (unsigned)INPUT_RX_REASON_COUNT; q++) {
+		json_kv_u64(w, input_rx_reason_name((input_rx_reason_t)q), cnt->verdict[q]);
+	}
+	json_end_object(w);
+	json_kv_u64(w, "stale_events", cnt->stale_events);
+	json_key(w, "fault_time_s");
+	json_begin_object(w);
+	for (q = 0U; q < N_FAULT_BITS; q++) {
+		json_kv_seconds(w, fault_bit_names[q], v->cs->fault_us[j][q]);
+	}
+	json_end_object(w);
+	json_end_object(w);
+}
+
 /* "inputs_by_corner": the text summary's corner blocks. */
 static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
 {
@@ -1294,55 +1290,26 @@ static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
 	json_key(w, "inputs_by_corner");
 	json_begin_array(w);
 	for (k = 0U; r->started && (k < squeal_app_corner_count()) && (k < CALIB_MAX_CORNERS); k++) {
-		const monitor_t *c = squeal_app_corner(k);
-		const corner_stats_t *cs = &r->cs[k];
-		const input_counters_t *cnt[2] = { &c->speed.count, &c->force.count };
-		const uint64_t total = corner_time_us(cs);
-		char label[96];
+		corner_view_t v;
+		const monitor_t *c = corner_view(r, k, &v);
 		unsigned s;
-		unsigned j;
-		unsigned q;
 
 		json_begin_object(w);
 		json_kv_string(w, "corner", pos_names[c->corner.pos & 3U]);
 		json_kv_string(w, "final_state", rs_state_name(msg_squeal_state_slot(c->state)));
-		json_key(w, "state_time_s");
-		json_begin_object(w);
-		for (s = 0U; s < N_STATES; s++) {
-			json_kv_seconds(w, rs_state_name(s), cs->state_us[s]);
-		}
-		json_end_object(w);
+		rs_json_state_times(w, "state_time_s", v.cs->state_us);
 		json_key(w, "state_share");
 		json_begin_object(w);
 		for (s = 0U; s < N_STATES; s++) {
 			json_key(w, rs_state_name(s));
-			json_fixed(w, (total == 0U) ? 0 :
-				   (int64_t)(((cs->state_us[s] * 1000000U) + (total / 2U)) / total), 6U);
+			json_fixed(w, (v.total_us == 0U) ? 0 :
+				   (int64_t)(((v.cs->state_us[s] * 1000000U) + (v.total_us / 2U)) /
+					     v.total_us), 6U);
 		}
 		json_end_object(w);
-		for (j = 0U; j < 2U; j++) {
-			input_label(r, k, j, label, sizeof(label));
-			json_key(w, qty_names[j]);
-			json_begin_object(w);
-			json_kv_string(w, "label", label);
-			json_kv_u64(w, "frames", cnt[j]->frames);
-			json_kv_u64(w, "used", cnt[j]->used);
-			json_key(w, "rejected");
-			json_begin_object(w);
-			for (q = 1U; q < (unsigned)INPUT_RX_REASON_COUNT; q++) {
-				json_kv_u64(w, input_rx_reason_name((input_rx_reason_t)q), cnt[j]->verdict[q]);
-			}
-			json_end_object(w);
-			json_kv_u64(w, "stale_events", cnt[j]->stale_events);
-			json_key(w, "fault_time_s");
-			json_begin_object(w);
-			for (q = 0U; q < N_FAULT_BITS; q++) {
-				json_kv_seconds(w, fault_bit_names[q], cs->fault_us[j][q]);
-			}
-			json_end_object(w);
-			json_end_object(w);
-		}
-		json_kv_seconds(w, "fault_without_input_fault_s", cs->fault_other_us);
+		json_corner_input(w, r, k, 0U, &v);
+		json_corner_input(w, r, k, 1U, &v);
+		json_kv_seconds(w, "fault_without_input_fault_s", v.cs->fault_other_us);
 		json_end_object(w);
 	}
 	json_end_array(w);
@@ -1421,12 +1388,7 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 	json_end_object(w);
 	json_buses(w, r, a);
 	json_kv_u64(w, "gaps_skipped", r->gaps);
-	json_key(w, "state_time_s");
-	json_begin_object(w);
-	for (i = 0U; i < N_STATES; i++) {
-		json_kv_seconds(w, rs_state_name(i), r->state_us[i]);
-	}
-	json_end_object(w);
+	rs_json_state_times(w, "state_time_s", r->state_us);
 	json_key(w, "warnings_raised");
 	json_begin_object(w);
 	for (i = 1U; i < N_LEVELS; i++) {
@@ -1531,6 +1493,22 @@ static int load_calib(replay_t *r, const char *path)
 	return 0;
 }
 
+/* A malformed log line (column 0: the whole line), unless --quiet. */
+static void report_line(candump_pending_t *p, const replay_args_t *a, uint64_t line_no,
+			candump_err_t err, size_t column)
+{
+	if (a->quiet) {
+		return;
+	}
+	if (column == 0U) {
+		candump_pending_report(p, "%s:%llu: %s", a->log_name, (unsigned long long)line_no,
+				       candump_strerror(err));
+	} else {
+		candump_pending_report(p, "%s:%llu: %s (column %zu)", a->log_name,
+				       (unsigned long long)line_no, candump_strerror(err), column);
+	}
+}
+
 int cmd_replay(int argc, char **argv)
 {
 	static candump_reader_t reader; /* 70 kB: not on the stack */
@@ -1552,8 +1530,8 @@ int cmd_replay(int argc, char **argv)
 	memset(&a, 0, sizeof(a));
 	memset(&r, 0, sizeof(r));
 	rc = replay_parse(argc, argv, &a);
-	if (rc != 0) {
-		return (rc == 1) ? 0 : rc;
+	if (rc != CLI_OK) {
+		return cli_exit_status((cli_result_t)rc);
 	}
 	if (strcmp(a.log_name, "-") == 0) {
 		in = stdin;
@@ -1601,9 +1579,7 @@ int cmd_replay(int argc, char **argv)
 		r.lines++;
 		if (too_long) {
 			r.malformed++;
-			candump_pending_report(&pending, "%s:%llu: %s", a.log_name,
-					       (unsigned long long)reader.line_no,
-					       candump_strerror(CANDUMP_ERR_TOO_LONG));
+			report_line(&pending, &a, reader.line_no, CANDUMP_ERR_TOO_LONG, 0U);
 			continue;
 		}
 		switch (candump_parse_line(line, len, &f, &err, &col)) {
@@ -1624,9 +1600,7 @@ int cmd_replay(int argc, char **argv)
 			break;
 		default:
 			r.malformed++;
-			candump_pending_report(&pending, "%s:%llu: %s (column %zu)", a.log_name,
-					       (unsigned long long)reader.line_no, candump_strerror(err),
-					       col + 1U);
+			report_line(&pending, &a, reader.line_no, err, col + 1U);
 			break;
 		}
 	}

@@ -126,6 +126,25 @@ static size_t utf8_len(const unsigned char *s)
 	return n;
 }
 
+/* The two-character escape of a byte, or NULL: RFC 8259's " \\ and the
+ * control characters that have one written out. */
+static const char *short_escape(unsigned char c)
+{
+	static const struct {
+		unsigned char c;
+		const char *esc;
+	} table[] = { { '"', "\\\"" }, { '\\', "\\\\" }, { '\n', "\\n" }, { '\t', "\\t" },
+		      { '\r', "\\r" } };
+	size_t i;
+
+	for (i = 0U; i < sizeof(table) / sizeof(table[0]); i++) {
+		if (table[i].c == c) {
+			return table[i].esc;
+		}
+	}
+	return NULL;
+}
+
 static void string_body(json_writer_t *w, const char *s)
 {
 	const unsigned char *p = (const unsigned char *)s;
@@ -133,25 +152,14 @@ static void string_body(json_writer_t *w, const char *s)
 	puts_(w, "\"");
 	while (*p != 0U) {
 		const size_t n = utf8_len(p);
+		const char *short_esc = (n == 1U) ? short_escape(*p) : NULL;
 		char esc[8];
 
 		if (n == 0U) {
 			puts_(w, "\\ufffd");
 			p++;
-		} else if (*p == '"') {
-			puts_(w, "\\\"");
-			p++;
-		} else if (*p == '\\') {
-			puts_(w, "\\\\");
-			p++;
-		} else if (*p == '\n') {
-			puts_(w, "\\n");
-			p++;
-		} else if (*p == '\t') {
-			puts_(w, "\\t");
-			p++;
-		} else if (*p == '\r') {
-			puts_(w, "\\r");
+		} else if (short_esc != NULL) {
+			puts_(w, short_esc);
 			p++;
 		} else if ((*p < 0x20U) || (*p == 0x7FU)) {
 			(void)snprintf(esc, sizeof(esc), "\\u%04x", (unsigned)*p);

@@ -3,11 +3,12 @@
 
 #include <ctype.h>
 #include <errno.h>
-#include <math.h>
-#include <stdarg.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "num_text.h"
+#include "text_errf.h"
 
 const char *const plant_scenario_names[] = { "stop", "creep", "sweep", "point", NULL };
 
@@ -80,40 +81,26 @@ int plant_scenario_builtin(const char *name, double point_speed_mps,
 	return 0;
 }
 
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-	va_list ap;
-
-	if ((err == NULL) || (errlen == 0U)) {
-		return;
-	}
-	va_start(ap, fmt);
-	vsnprintf(err, errlen, fmt, ap);
-	va_end(ap);
-}
-
-/* One number token; false if it is not a finite decimal number. */
+/* One number token (num_text.h's decimal); false if it is not one. */
 static bool take_number(char **p, double *out)
 {
+	char token[64];
 	char *s = *p;
-	char *end = NULL;
+	size_t len;
 
 	while (isspace((unsigned char)*s)) {
 		s++;
 	}
-	if (*s == '\0') {
+	len = strcspn(s, " \t\r\n\v\f");
+	if ((len == 0U) || (len >= sizeof(token))) {
 		return false;
 	}
-	errno = 0;
-	*out = strtod(s, &end);
-	if ((end == s) || (errno == ERANGE) || !isfinite(*out) ||
-	    ((*end != '\0') && !isspace((unsigned char)*end))) {
+	memcpy(token, s, len);
+	token[len] = '\0';
+	if (!num_text_real(token, out)) {
 		return false;
 	}
-	*p = end;
+	*p = s + len;
 	return true;
 }
 
@@ -126,7 +113,7 @@ int plant_scenario_parse(FILE *f, const char *name, plant_scenario_t *out,
 	size_t n = 0;
 
 	if ((f == NULL) || (out == NULL)) {
-		set_err(err, errlen, "plant_scenario_parse: NULL argument");
+		text_errf(err, errlen, "plant_scenario_parse: NULL argument");
 		return -1;
 	}
 	if (name == NULL) {
@@ -140,7 +127,7 @@ int plant_scenario_parse(FILE *f, const char *name, plant_scenario_t *out,
 
 		lineno++;
 		if ((strchr(line, '\n') == NULL) && !feof(f)) {
-			set_err(err, errlen, "%s:%u: line too long", name, lineno);
+			text_errf(err, errlen, "%s:%u: line too long", name, lineno);
 			return -1;
 		}
 		if (hash != NULL) {
@@ -161,10 +148,10 @@ int plant_scenario_parse(FILE *f, const char *name, plant_scenario_t *out,
 				}
 				tok[strcspn(tok, " \t\r\n")] = '\0';
 				if (*tok == '\0') {
-					set_err(err, errlen, "%s:%u: expected 3 columns (time_s speed_mps force_n), missing %s",
+					text_errf(err, errlen, "%s:%u: expected 3 columns (time_s speed_mps force_n), missing %s",
 						name, lineno, cols[c]);
 				} else {
-					set_err(err, errlen, "%s:%u: %s is not a number: '%s'",
+					text_errf(err, errlen, "%s:%u: %s is not a number: '%s'",
 						name, lineno, cols[c], tok);
 				}
 				return -1;
@@ -174,40 +161,40 @@ int plant_scenario_parse(FILE *f, const char *name, plant_scenario_t *out,
 			p++;
 		}
 		if (*p != '\0') {
-			set_err(err, errlen, "%s:%u: more than 3 columns (time_s speed_mps force_n)",
+			text_errf(err, errlen, "%s:%u: more than 3 columns (time_s speed_mps force_n)",
 				name, lineno);
 			return -1;
 		}
 		if (v[0] < 0.0) {
-			set_err(err, errlen, "%s:%u: time_s must be >= 0", name, lineno);
+			text_errf(err, errlen, "%s:%u: time_s must be >= 0", name, lineno);
 			return -1;
 		}
 		if ((n > 0U) && !(v[0] > out->rows[n - 1U].time_s)) {
-			set_err(err, errlen, "%s:%u: time_s %g is not after the previous row's %g",
+			text_errf(err, errlen, "%s:%u: time_s %g is not after the previous row's %g",
 				name, lineno, v[0], out->rows[n - 1U].time_s);
 			return -1;
 		}
 		if (v[1] < 0.0) {
-			set_err(err, errlen, "%s:%u: speed_mps must be >= 0", name, lineno);
+			text_errf(err, errlen, "%s:%u: speed_mps must be >= 0", name, lineno);
 			return -1;
 		}
 		if (v[2] < 0.0) {
-			set_err(err, errlen, "%s:%u: force_n must be >= 0", name, lineno);
+			text_errf(err, errlen, "%s:%u: force_n must be >= 0", name, lineno);
 			return -1;
 		}
 		if (n >= PLANT_SCENARIO_MAX_ROWS) {
-			set_err(err, errlen, "%s:%u: more than %u rows", name, lineno,
+			text_errf(err, errlen, "%s:%u: more than %u rows", name, lineno,
 				PLANT_SCENARIO_MAX_ROWS);
 			return -1;
 		}
 		out->rows[n++] = (plant_row_t){ v[0], v[1], v[2] };
 	}
 	if (ferror(f)) {
-		set_err(err, errlen, "%s: read error", name);
+		text_errf(err, errlen, "%s: read error", name);
 		return -1;
 	}
 	if (n == 0U) {
-		set_err(err, errlen, "%s: no rows (expected lines 'time_s speed_mps force_n')", name);
+		text_errf(err, errlen, "%s: no rows (expected lines 'time_s speed_mps force_n')", name);
 		return -1;
 	}
 	out->count = n;
@@ -222,7 +209,7 @@ int plant_scenario_load(const char *path, plant_scenario_t *out, char *err,
 	int rc;
 
 	if (f == NULL) {
-		set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+		text_errf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
 		return -1;
 	}
 	rc = plant_scenario_parse(f, path, out, err, errlen);

@@ -217,6 +217,20 @@ static void range(bool *have, int32_t *lo, int32_t *hi, int32_t v)
 	*have = true;
 }
 
+/* A detail frame's value (have: it carries one) and, in an open episode,
+ * the episode's range of it. */
+static void take_value(const msg_sig_desc_t *sig, const hal_can_frame_t *f, bool open, bool *have,
+		       int32_t *raw, bool *ep_have, int32_t *lo, int32_t *hi)
+{
+	int32_t v = 0;
+
+	*have = raw_of(sig, f, &v);
+	*raw = v;
+	if (*have && open) {
+		range(ep_have, lo, hi, v);
+	}
+}
+
 void replay_summary_on_frame(replay_summary_t *rs, const hal_can_frame_t *f)
 {
 	unsigned k;
@@ -226,30 +240,35 @@ void replay_summary_on_frame(replay_summary_t *rs, const hal_can_frame_t *f)
 	}
 	for (k = 0U; k < RS_CORNERS_MAX; k++) {
 		rs_corner_t *c = &rs->corner[k];
-		int32_t raw = 0;
 
 		if (f->id == c->ids.status_id) {
 			account(c, f->timestamp_us);
 			on_status(rs, k, f);
 		} else if (f->id == c->ids.detail_id) {
 			account(c, f->timestamp_us);
-			c->have_v0 = raw_of(sigs.v0, f, &raw);
-			c->v0_raw = raw;
-			if (c->have_v0 && c->ep.open) {
-				range(&c->ep.have_v0, &c->ep.v0_min, &c->ep.v0_max, raw);
-			}
+			take_value(sigs.v0, f, c->ep.open, &c->have_v0, &c->v0_raw, &c->ep.have_v0,
+				   &c->ep.v0_min, &c->ep.v0_max);
 		} else if (f->id == c->ids.detail2_id) {
 			account(c, f->timestamp_us);
-			c->have_force = raw_of(sigs.force, f, &raw);
-			c->force_raw = raw;
-			if (c->have_force && c->ep.open) {
-				range(&c->ep.have_force, &c->ep.force_min, &c->ep.force_max, raw);
-			}
+			take_value(sigs.force, f, c->ep.open, &c->have_force, &c->force_raw,
+				   &c->ep.have_force, &c->ep.force_min, &c->ep.force_max);
 		} else {
 			continue;
 		}
 		return;
 	}
+}
+
+void rs_json_state_times(json_writer_t *w, const char *key, const uint64_t us[RS_N_STATES])
+{
+	unsigned s;
+
+	json_key(w, key);
+	json_begin_object(w);
+	for (s = 0U; s < RS_N_STATES; s++) {
+		json_kv_seconds(w, rs_state_name(s), us[s]);
+	}
+	json_end_object(w);
 }
 
 static void write_corner(const replay_summary_t *rs, unsigned k)
@@ -268,12 +287,7 @@ static void write_corner(const replay_summary_t *rs, unsigned k)
 	json_kv_seconds(w, "first_s", c->first_us);
 	json_kv_seconds(w, "end_s", c->last_us);
 	json_kv_u64(w, "episodes", c->episodes);
-	json_key(w, "state_time_s");
-	json_begin_object(w);
-	for (s = 0U; s < RS_N_STATES; s++) {
-		json_kv_seconds(w, rs_state_name(s), c->state_us[s]);
-	}
-	json_end_object(w);
+	rs_json_state_times(w, "state_time_s", c->state_us);
 	/* occupancy: [v0 cell, force cell, state, seconds], non-zero cells only */
 	json_key(w, "cells");
 	json_begin_array(w);

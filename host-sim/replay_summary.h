@@ -91,6 +91,9 @@ typedef struct {
 /* State slot i (0..RS_N_STATES-1, msg_squeal_state_slot) by its DBC name
  * (msg_squeal_state_name). */
 const char *rs_state_name(unsigned i);
+
+/* "key": { state name: seconds, ... } of a time per state slot. */
+void rs_json_state_times(json_writer_t *w, const char *key, const uint64_t us[RS_N_STATES]);
 extern const char *const rs_corner_names[RS_CORNERS_MAX];
 
 /* Starts with the DBC's identifiers and opens the document's "episodes"

@@ -11,6 +11,7 @@
 
 #include "squeal_model.h"
 #include "sim_commands.h"
+#include "sim_version.h"
 #include "oscsim/oscsim_cmd.h"
 
 /*
@@ -71,7 +72,8 @@ static void usage(FILE *f)
 	for (i = 0; i < sizeof(commands) / sizeof(commands[0]); i++) {
 		fprintf(f, "  %-11s %s\n", commands[i].name, commands[i].summary);
 	}
-	fprintf(f, "\n'squeal-sim COMMAND --help' describes each command.\n");
+	fprintf(f, "\n'squeal-sim COMMAND --help' describes each command;\n"
+		"'squeal-sim --version' prints the version and the numeric build.\n");
 }
 
 int main(int argc, char **argv)
@@ -84,6 +86,10 @@ int main(int argc, char **argv)
 	}
 	if ((strcmp(argv[1], "--help") == 0) || (strcmp(argv[1], "-h") == 0)) {
 		usage(stdout);
+		return 0;
+	}
+	if (strcmp(argv[1], "--version") == 0) {
+		printf("squeal-sim %s (numeric build: %s)\n", SQUEAL_SIM_VERSION, SQUEAL_NUMERIC_NAME);
 		return 0;
 	}
 	for (i = 0; i < sizeof(commands) / sizeof(commands[0]); i++) {

@@ -5,6 +5,7 @@
 #include "oscsim.h"
 
 #include <float.h>
+#include <stdbool.h>
 #include <math.h>
 #include <string.h>
 
@@ -13,6 +14,12 @@
 /* libm gives float-typed NAN/INFINITY; -Wdouble-promotion wants them cast */
 #define DNAN ((double)NAN)
 #define DINF ((double)INFINITY)
+
+/* An enum's name from its table ("?" outside it). */
+static const char *name_of(const char *const *names, size_t n, unsigned int i)
+{
+	return (i < n) ? names[i] : "?";
+}
 
 int oscsim_params_check(const oscsim_params_t *p)
 {
@@ -568,26 +575,16 @@ static int revolve(const oscsim_slide_t *sl, double s, double r,
 	dp.h_max = 0.5;
 	/* the section u' = 0: its half u > 0 ends the revolution, the half
 	 * u < 0 gives u_min */
-	ev[0].fn = ev_velocity;
-	ev[0].ctx = NULL;
-	ev[0].dir = 0; /* both halves; the sign of u tells them apart */
+	/* both halves; the sign of u tells them apart */
+	ev[0] = (oscsim_event_t){ .fn = ev_velocity, .ctx = NULL, .dir = 0 };
 	/* extremes of u' (u'' = 0), both kinds */
-	ev[1].fn = ev_accel;
-	ev[1].ctx = (void *)sl;
-	ev[1].dir = 0;
+	ev[1] = (oscsim_event_t){ .fn = ev_accel, .ctx = (void *)sl, .dir = 0 };
 	/* the stick line u' = s */
-	ev[2].fn = ev_stick;
-	ev[2].ctx = &s;
-	ev[2].dir = 1;
+	ev[2] = (oscsim_event_t){ .fn = ev_stick, .ctx = &s, .dir = 1 };
 	memset(&w, 0, sizeof(w));
 	w.ev = ev;
 	w.n_ev = isfinite(s) ? 3U : 2U;
-	out->u_min = 0.0;
-	out->v_max = 0.0;
-	out->v_min = 0.0;
-	out->hit_stick = 0;
-	out->r_next = DNAN;
-	out->period = 0.0;
+	*out = (revolution_t){ .r_next = DNAN }; /* the extremes start at 0 */
 	for (guard = 0; guard < 64U; guard++) {
 		rc = oscsim_dp5_advance(&dp, (double)dir * t_lim, &w);
 		if (rc < 0) {
@@ -667,13 +664,59 @@ int oscsim_cycle_return_map(double damping, double ln_q, double s, double r,
 
 static void cycle_clear(oscsim_cycle_t *out)
 {
-	memset(out, 0, sizeof(*out));
-	out->r = DNAN;
-	out->u_min = DNAN;
-	out->v_max = DNAN;
-	out->v_min = DNAN;
-	out->period = DNAN;
-	out->v_reach = DNAN;
+	/* every field unknown (NaN) or zero until a search fills it */
+	*out = (oscsim_cycle_t){ .r = DNAN, .u_min = DNAN, .v_max = DNAN, .v_min = DNAN,
+				 .period = DNAN, .v_reach = DNAN };
+}
+
+/* cycle_begin's answer when Q <= 1/2: no cycle, out says so. */
+#define CYCLE_NONE 1
+
+/* The start of both cycle searches: out cleared, the options (the defaults
+ * for NULL, in *def), the sliding equations. SQ_OK to search; CYCLE_NONE;
+ * SQ_EINVAL for bad arguments (args_ok: the caller's own). */
+static int cycle_begin(double damping, double ln_q, double s, bool args_ok,
+		       const oscsim_cycle_opts_t **opts, oscsim_cycle_opts_t *def,
+		       oscsim_slide_t *sl, oscsim_cycle_t *out)
+{
+	if (out == NULL) {
+		return SQ_EINVAL;
+	}
+	cycle_clear(out);
+	if (*opts == NULL) {
+		oscsim_cycle_default_opts(def);
+		*opts = def;
+	}
+	if ((slide_setup(damping, ln_q, sl) != SQ_OK) || !args_ok || isnan(s) || !(s > 0.0)) {
+		return SQ_EINVAL;
+	}
+	if (ln_q <= LN_HALF) {
+		out->kind = OSCSIM_CYCLE_NONE;
+		return CYCLE_NONE;
+	}
+	return SQ_OK;
+}
+
+/* The search's end: the cycle reaches the stick line (from r on). */
+static int cycle_at_stick(oscsim_cycle_t *out, double r, double v_reach)
+{
+	out->kind = OSCSIM_CYCLE_AT_STICK;
+	out->v_reach = v_reach;
+	out->r = r;
+	return SQ_OK;
+}
+
+/* The search's end: a closed sliding cycle, its shape from one revolution. */
+static int cycle_found(oscsim_cycle_t *out, double r, const revolution_t *rev)
+{
+	out->kind = OSCSIM_CYCLE_FOUND;
+	out->r = r;
+	out->u_min = rev->u_min;
+	out->v_max = rev->v_max;
+	out->v_min = rev->v_min;
+	out->period = rev->period;
+	out->v_reach = rev->v_max;
+	return SQ_OK;
 }
 
 /* Evaluate g(r) = B(r) - r (B the backward return map). */
@@ -729,21 +772,9 @@ int oscsim_cycle_find(double damping, double ln_q, double s,
 	double g;
 	uint32_t guard;
 
-	if (out == NULL) {
-		return SQ_EINVAL;
-	}
-	cycle_clear(out);
-	if (opts == NULL) {
-		oscsim_cycle_default_opts(&def);
-		opts = &def;
-	}
-	rc = slide_setup(damping, ln_q, &sl);
-	if (rc != SQ_OK || isnan(s) || !(s > 0.0)) {
-		return SQ_EINVAL;
-	}
-	if (ln_q <= LN_HALF) {
-		out->kind = OSCSIM_CYCLE_NONE;
-		return SQ_OK;
+	rc = cycle_begin(damping, ln_q, s, true, &opts, &def, &sl, out);
+	if (rc != SQ_OK) {
+		return (rc == CYCLE_NONE) ? SQ_OK : rc;
 	}
 	se.sl = &sl;
 	se.s = s;
@@ -835,10 +866,7 @@ int oscsim_cycle_find(double damping, double ln_q, double s,
 		}
 	}
 	if (!hi_outside) {
-		out->kind = OSCSIM_CYCLE_AT_STICK;
-		out->v_reach = v_reach;
-		out->r = r_lo;
-		return SQ_OK;
+		return cycle_at_stick(out, r_lo, v_reach);
 	}
 	/* one more revolution on the cycle for its shape */
 	r = 0.5 * (r_lo + r_hi);
@@ -848,19 +876,9 @@ int oscsim_cycle_find(double damping, double ln_q, double s,
 	}
 	if (hit) {
 		/* the cycle grazes the stick line within the root tolerance */
-		out->kind = OSCSIM_CYCLE_AT_STICK;
-		out->v_reach = v_reach;
-		out->r = r_lo;
-		return SQ_OK;
+		return cycle_at_stick(out, r_lo, v_reach);
 	}
-	out->kind = OSCSIM_CYCLE_FOUND;
-	out->r = r;
-	out->u_min = rev.u_min;
-	out->v_max = rev.v_max;
-	out->v_min = rev.v_min;
-	out->period = rev.period;
-	out->v_reach = rev.v_max;
-	return SQ_OK;
+	return cycle_found(out, r, &rev);
 }
 
 int oscsim_cycle_backward_plain(double damping, double ln_q, double s,
@@ -875,21 +893,9 @@ int oscsim_cycle_backward_plain(double damping, double ln_q, double s,
 	uint32_t i;
 	int rc;
 
-	if (out == NULL) {
-		return SQ_EINVAL;
-	}
-	cycle_clear(out);
-	if (opts == NULL) {
-		oscsim_cycle_default_opts(&def);
-		opts = &def;
-	}
-	rc = slide_setup(damping, ln_q, &sl);
-	if (rc != SQ_OK || !(r_start > 0.0) || isnan(s) || !(s > 0.0)) {
-		return SQ_EINVAL;
-	}
-	if (ln_q <= LN_HALF) {
-		out->kind = OSCSIM_CYCLE_NONE;
-		return SQ_OK;
+	rc = cycle_begin(damping, ln_q, s, r_start > 0.0, &opts, &def, &sl, out);
+	if (rc != SQ_OK) {
+		return (rc == CYCLE_NONE) ? SQ_OK : rc;
 	}
 	for (i = 0; i < max_revs; i++) {
 		rc = revolve(&sl, s, r, opts, -1, &rev);
@@ -899,20 +905,10 @@ int oscsim_cycle_backward_plain(double damping, double ln_q, double s,
 			return rc;
 		}
 		if (rev.hit_stick) {
-			out->kind = OSCSIM_CYCLE_AT_STICK;
-			out->v_reach = rev.v_max;
-			out->r = r;
-			return SQ_OK;
+			return cycle_at_stick(out, r, rev.v_max);
 		}
 		if (fabs(rev.r_next - r) <= opts->r_tol * r) {
-			out->kind = OSCSIM_CYCLE_FOUND;
-			out->r = rev.r_next;
-			out->u_min = rev.u_min;
-			out->v_max = rev.v_max;
-			out->v_min = rev.v_min;
-			out->period = rev.period;
-			out->v_reach = rev.v_max;
-			return SQ_OK;
+			return cycle_found(out, rev.r_next, &rev);
 		}
 		r = rev.r_next;
 	}
@@ -1002,15 +998,11 @@ int oscsim_linear_growth(double damping, double ln_q, double *ratio)
 	}
 	dp.h_max = 0.5;
 	/* forward, the half u > 0 of the section is crossed with u' falling */
-	ev[0].fn = ev_velocity;
-	ev[0].ctx = NULL;
-	ev[0].dir = 0;
+	ev[0] = (oscsim_event_t){ .fn = ev_velocity, .ctx = NULL, .dir = 0 };
 	/* with strong negative damping (kappa > 2 + 2D) there is no
 	 * oscillation left to count revolutions by: leaving the ball
 	 * of radius 1000 r0 is growth */
-	ev[1].fn = ev_escape;
-	ev[1].ctx = &escape;
-	ev[1].dir = 1;
+	ev[1] = (oscsim_event_t){ .fn = ev_escape, .ctx = &escape, .dir = 1 };
 	memset(&w, 0, sizeof(w));
 	w.ev = ev;
 	w.n_ev = 2;
@@ -1038,16 +1030,9 @@ int oscsim_linear_growth(double damping, double ln_q, double *ratio)
 
 const char *oscsim_mode_name(oscsim_mode_t mode)
 {
-	switch (mode) {
-	case OSCSIM_SLIP_POS:
-		return "slip";
-	case OSCSIM_SLIP_NEG:
-		return "slip_neg";
-	case OSCSIM_STICK:
-		return "stick";
-	default:
-		return "?";
-	}
+	static const char *const names[] = { "slip", "slip_neg", "stick" };
+
+	return name_of(names, sizeof(names) / sizeof(names[0]), (unsigned int)mode);
 }
 
 double oscsim_steady_x(const oscsim_params_t *p)
@@ -1318,18 +1303,9 @@ int oscsim_simulate(const oscsim_params_t *p, double x0_m, double xd0_mps,
 
 const char *oscsim_truth_name(oscsim_truth_class_t c)
 {
-	switch (c) {
-	case OSCSIM_TRUTH_STABLE:
-		return "stable";
-	case OSCSIM_TRUTH_BISTABLE:
-		return "bistable";
-	case OSCSIM_TRUTH_UNSTABLE:
-		return "unstable";
-	case OSCSIM_TRUTH_NOT_SLIDING:
-		return "not_sliding";
-	default:
-		return "?";
-	}
+	static const char *const names[] = { "stable", "bistable", "unstable", "not_sliding" };
+
+	return name_of(names, sizeof(names) / sizeof(names[0]), (unsigned int)c);
 }
 
 int oscsim_truth(const oscsim_params_t *p, const oscsim_cycle_opts_t *opts,
@@ -1393,16 +1369,9 @@ int oscsim_truth(const oscsim_params_t *p, const oscsim_cycle_opts_t *opts,
 
 const char *oscsim_basin_name(oscsim_basin_outcome_t o)
 {
-	switch (o) {
-	case OSCSIM_BASIN_DECAYED:
-		return "decayed";
-	case OSCSIM_BASIN_CAPTURED:
-		return "captured";
-	case OSCSIM_BASIN_UNDECIDED:
-		return "undecided";
-	default:
-		return "?";
-	}
+	static const char *const names[] = { "undecided", "decayed", "captured" };
+
+	return name_of(names, sizeof(names) / sizeof(names[0]), (unsigned int)o);
 }
 
 int oscsim_basin(const oscsim_params_t *p, double r_cycle, double factor,

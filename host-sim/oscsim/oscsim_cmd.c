@@ -6,79 +6,19 @@
 #include "oscsim_cmd.h"
 
 #include <errno.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_args.h"
 #include "oscsim.h"
 #include "oscsim_map.h"
 #include "squeal_model.h"
 
 #define TWO_PI 6.28318530717958647692
 
-static int parse_num(const char *cmd, const char *flag, const char *text,
-		     double *out)
-{
-	char *end = NULL;
-	double v;
-
-	errno = 0;
-	v = strtod(text, &end);
-	if (end == text || *end != '\0' || errno == ERANGE || !isfinite(v)) {
-		fprintf(stderr, "squeal-sim %s: %s needs a number, got '%s'\n",
-			cmd, flag, text);
-		return -1;
-	}
-	*out = v;
-	return 0;
-}
-
-static int parse_count(const char *cmd, const char *flag, const char *text,
-		       uint32_t max, uint32_t *out)
-{
-	double v;
-
-	if (parse_num(cmd, flag, text, &v) != 0) {
-		return -1;
-	}
-	if (v < 1.0 || v > (double)max || v != floor(v)) {
-		fprintf(stderr, "squeal-sim %s: %s must be a whole number in 1..%u\n",
-			cmd, flag, max);
-		return -1;
-	}
-	*out = (uint32_t)v;
-	return 0;
-}
-
 /* ---- simulate ----------------------------------------------------------- */
-
-static void simulate_usage(FILE *f)
-{
-	fprintf(f,
-		"usage: squeal-sim simulate [--v0 MPS] [--force N] [--slope A] [--damping D]\n"
-		"         [--omega0 W] [--mass M] [--mu-inf X] [--delta-mu Y]\n"
-		"         [--t-end S] [--dt S] [--dx M | --x0 M] [--xd0 MPS] [--rtol R]\n"
-		"         [--cycle | --truth | --basin F | --dimless --q Q [--s S] [--plain]]\n\n"
-		"Simulates the friction oscillator with sliding and sticking (Dormand-Prince\n"
-		"5(4), event switching at relative velocity 0). Defaults: the paper's brake\n"
-		"(shared/model.md section 8) at a = 2 s/m, v0 = 1 m/s, N = 9000 N.\n\n"
-		"  (default)   trajectory from x = x_s + dx, x' = xd0 for t-end seconds:\n"
-		"              CSV kind,t_s,x_m,v_mps,mode on stdout, kind 'sample' every dt\n"
-		"              and 'switch' at each change of mode (slip, slip_neg, stick)\n"
-		"  --cycle     the unstable sliding cycle (backward-time integration) in the\n"
-		"              same CSV with kind 'cycle'; exit 1 when there is none\n"
-		"  --truth     ground-truth class by simulation, key=value\n"
-		"  --basin F   start at F times the cycle (on x' = 0) and report whether the\n"
-		"              oscillator decays to steady sliding or is captured by stick-slip\n"
-		"  --dimless   the cycle of u'' + 2 D u' + u = (D/Q)(exp(u') - 1) for --damping\n"
-		"              and --q, stick line --s (default none): key=value; --plain uses\n"
-		"              brute-force backward integration instead of the return-map search\n"
-		"  --t-end S   simulated time [s] (default 0.05)\n"
-		"  --dt S      sample interval [s] (default one 64th of 2 pi / w0)\n"
-		"  --rtol R    integrator tolerance (default 1e-9)\n");
-}
 
 typedef struct {
 	oscsim_params_t p;
@@ -91,10 +31,10 @@ typedef struct {
 	double basin;
 	double q;
 	double s;
-	int have_x0;
-	int have_q;
+	bool have_x0;
+	bool have_q;
 	int mode; /* 0 trajectory, 1 cycle, 2 truth, 3 basin, 4 dimless */
-	int plain;
+	bool plain;
 } sim_args_t;
 
 static void print_trace(const char *kind, double t_s, double x_m,
@@ -135,134 +75,78 @@ static void print_cycle(void *ctx, double tau, const double *y)
 
 static int parse_sim_args(int argc, char **argv, sim_args_t *a)
 {
-	enum {
-		O_V0 = 256, O_FORCE, O_SLOPE, O_DAMP, O_OMEGA, O_MASS, O_MUI,
-		O_DMU, O_TEND, O_DT, O_DX, O_X0, O_XD0, O_RTOL, O_CYCLE,
-		O_TRUTH, O_BASIN, O_DIMLESS, O_Q, O_S, O_PLAIN
+	/* the modes besides the trajectory, as sim_args_t.mode numbers them */
+	bool mode_given[5] = { false, false, false, false, false };
+	const cli_opt_t opts[] = {
+		CLI_OPT_ANY_REAL("v0", &a->p.v0_mps, NULL, "MPS", "disc surface speed [m/s] (default 1)"),
+		CLI_OPT_ANY_REAL("force", &a->p.force_n, NULL, "N", "pad normal force [N] (default 9000)"),
+		CLI_OPT_ANY_REAL("slope", &a->p.slope_spm, NULL, "A", "friction slope a [s/m] (default 2)"),
+		CLI_OPT_ANY_REAL("damping", &a->p.damping, NULL, "D", "damping ratio D [-]"),
+		CLI_OPT_ANY_REAL("omega0", &a->p.omega0_radps, NULL, "W",
+			     "natural angular frequency [rad/s]"),
+		CLI_OPT_ANY_REAL("mass", &a->p.mass_kg, NULL, "M", "moving mass m [kg]"),
+		CLI_OPT_ANY_REAL("mu-inf", &a->p.mu_inf, NULL, "X",
+			     "friction coefficient at high speed"),
+		CLI_OPT_ANY_REAL("delta-mu", &a->p.delta_mu, NULL, "Y", "mu_0 - mu_inf"),
+		CLI_OPT_ANY_REAL("t-end", &a->t_end_s, NULL, "S", "simulated time [s] (default 0.05)"),
+		CLI_OPT_ANY_REAL("dt", &a->dt_s, NULL, "S",
+			     "sample interval [s] (default one 64th of 2 pi / w0)"),
+		CLI_OPT_ANY_REAL("dx", &a->dx_m, NULL, "M", "start at x = x_s + dx [m] (default 0)"),
+		CLI_OPT_ANY_REAL("x0", &a->x0_m, &a->have_x0, "M", "start at x = x0 [m] instead"),
+		CLI_OPT_ANY_REAL("xd0", &a->xd0_mps, NULL, "MPS", "start velocity x' [m/s] (default 0)"),
+		CLI_OPT_ANY_REAL("rtol", &a->rtol, NULL, "R", "integrator tolerance (default 1e-9)"),
+		CLI_OPT_FLAG("cycle", 0, &mode_given[1],
+			     "the unstable sliding cycle (backward-time integration) in the\n"
+			     "same CSV with kind 'cycle'; exit 1 when there is none"),
+		CLI_OPT_FLAG("truth", 0, &mode_given[2], "ground-truth class by simulation, key=value"),
+		CLI_OPT_ANY_REAL("basin", &a->basin, &mode_given[3], "F",
+			     "start at F times the cycle (on x' = 0) and report whether the\n"
+			     "oscillator decays to steady sliding or is captured by stick-slip"),
+		CLI_OPT_FLAG("dimless", 0, &mode_given[4],
+			     "the cycle of u'' + 2 D u' + u = (D/Q)(exp(u') - 1) for --damping\n"
+			     "and --q, stick line --s (default none): key=value"),
+		CLI_OPT_ANY_REAL("q", &a->q, &a->have_q, "Q", "--dimless: Q"),
+		CLI_OPT_ANY_REAL("s", &a->s, NULL, "S", "--dimless: the stick line s"),
+		CLI_OPT_FLAG("plain", 0, &a->plain,
+			     "--dimless: brute-force backward integration instead of the\n"
+			     "return-map search"),
 	};
-	static const struct option options[] = {
-		{ "v0", required_argument, NULL, O_V0 },
-		{ "force", required_argument, NULL, O_FORCE },
-		{ "slope", required_argument, NULL, O_SLOPE },
-		{ "damping", required_argument, NULL, O_DAMP },
-		{ "omega0", required_argument, NULL, O_OMEGA },
-		{ "mass", required_argument, NULL, O_MASS },
-		{ "mu-inf", required_argument, NULL, O_MUI },
-		{ "delta-mu", required_argument, NULL, O_DMU },
-		{ "t-end", required_argument, NULL, O_TEND },
-		{ "dt", required_argument, NULL, O_DT },
-		{ "dx", required_argument, NULL, O_DX },
-		{ "x0", required_argument, NULL, O_X0 },
-		{ "xd0", required_argument, NULL, O_XD0 },
-		{ "rtol", required_argument, NULL, O_RTOL },
-		{ "cycle", no_argument, NULL, O_CYCLE },
-		{ "truth", no_argument, NULL, O_TRUTH },
-		{ "basin", required_argument, NULL, O_BASIN },
-		{ "dimless", no_argument, NULL, O_DIMLESS },
-		{ "q", required_argument, NULL, O_Q },
-		{ "s", required_argument, NULL, O_S },
-		{ "plain", no_argument, NULL, O_PLAIN },
-		{ "help", no_argument, NULL, 'h' },
-		{ NULL, 0, NULL, 0 }
+	const cli_spec_t spec = {
+		.cmd = "simulate",
+		CLI_SPEC_OPTS(opts),
+		.synopsis = "squeal-sim simulate [--v0 MPS] [--force N] [--slope A] [--damping D]\n"
+			    "         [--omega0 W] [--mass M] [--mu-inf X] [--delta-mu Y]\n"
+			    "         [--t-end S] [--dt S] [--dx M | --x0 M] [--xd0 MPS] [--rtol R]\n"
+			    "         [--cycle | --truth | --basin F | --dimless --q Q [--s S] [--plain]]",
+		.description = "Simulates the friction oscillator with sliding and sticking (Dormand-Prince\n"
+			       "5(4), event switching at relative velocity 0). Defaults: the paper's brake\n"
+			       "(shared/model.md section 8) at a = 2 s/m, v0 = 1 m/s, N = 9000 N.\n\n"
+			       "Without a mode option: the trajectory from x = x_s + dx, x' = xd0 for\n"
+			       "t-end seconds, CSV kind,t_s,x_m,v_mps,mode on stdout, kind 'sample'\n"
+			       "every dt and 'switch' at each change of mode (slip, slip_neg, stick).",
+		.closing = "Exit status: 0 done, 1 the simulation failed or found no cycle, 2 bad usage.",
 	};
-	int opt;
+	cli_result_t r;
+	int m;
 
 	oscsim_default_params(&a->p);
 	a->t_end_s = 0.05;
 	a->dt_s = 0.0;
 	a->rtol = 1e-9;
 	a->s = (double)INFINITY;
-	optind = 1;
-	opterr = 0;
-	while ((opt = getopt_long(argc, argv, "h", options, NULL)) != -1) {
-		double *dst = NULL;
-
-		switch (opt) {
-		case 'h':
-			simulate_usage(stdout);
-			return 1;
-		case O_V0:
-			dst = &a->p.v0_mps;
-			break;
-		case O_FORCE:
-			dst = &a->p.force_n;
-			break;
-		case O_SLOPE:
-			dst = &a->p.slope_spm;
-			break;
-		case O_DAMP:
-			dst = &a->p.damping;
-			break;
-		case O_OMEGA:
-			dst = &a->p.omega0_radps;
-			break;
-		case O_MASS:
-			dst = &a->p.mass_kg;
-			break;
-		case O_MUI:
-			dst = &a->p.mu_inf;
-			break;
-		case O_DMU:
-			dst = &a->p.delta_mu;
-			break;
-		case O_TEND:
-			dst = &a->t_end_s;
-			break;
-		case O_DT:
-			dst = &a->dt_s;
-			break;
-		case O_DX:
-			dst = &a->dx_m;
-			break;
-		case O_X0:
-			dst = &a->x0_m;
-			a->have_x0 = 1;
-			break;
-		case O_XD0:
-			dst = &a->xd0_mps;
-			break;
-		case O_RTOL:
-			dst = &a->rtol;
-			break;
-		case O_CYCLE:
-			a->mode = 1;
-			break;
-		case O_TRUTH:
-			a->mode = 2;
-			break;
-		case O_BASIN:
-			a->mode = 3;
-			dst = &a->basin;
-			break;
-		case O_DIMLESS:
-			a->mode = 4;
-			break;
-		case O_Q:
-			dst = &a->q;
-			a->have_q = 1;
-			break;
-		case O_S:
-			dst = &a->s;
-			break;
-		case O_PLAIN:
-			a->plain = 1;
-			break;
-		default:
-			fprintf(stderr, "squeal-sim simulate: unknown or incomplete option '%s'\n",
-				argv[optind - 1]);
-			return -1;
-		}
-		if (dst != NULL &&
-		    parse_num("simulate", argv[optind - 1], optarg, dst) != 0) {
-			return -1;
+	r = cli_parse(&spec, argc, argv, NULL, NULL);
+	if (r != CLI_OK) {
+		return (int)r;
+	}
+	for (m = 1; m < 5; m++) {
+		if (mode_given[m]) {
+			if (a->mode != 0) {
+				return (int)cli_usage_error(&spec, "give one of --cycle, --truth, --basin, --dimless");
+			}
+			a->mode = m;
 		}
 	}
-	if (optind != argc) {
-		fprintf(stderr, "squeal-sim simulate: unexpected argument '%s'\n",
-			argv[optind]);
-		return -1;
-	}
-	return 0;
+	return CLI_OK;
 }
 
 static int sim_dimless(const sim_args_t *a)
@@ -300,12 +184,8 @@ int oscsim_cmd_simulate(int argc, char **argv)
 
 	memset(&a, 0, sizeof(a));
 	rc = parse_sim_args(argc, argv, &a);
-	if (rc != 0) {
-		if (rc < 0) {
-			simulate_usage(stderr);
-			return 2;
-		}
-		return 0;
+	if (rc != CLI_OK) {
+		return cli_exit_status((cli_result_t)rc);
 	}
 	if (a.mode == 4) {
 		return sim_dimless(&a);
@@ -384,32 +264,6 @@ int oscsim_cmd_simulate(int argc, char **argv)
 
 /* ---- map ---------------------------------------------------------------- */
 
-static void map_usage(FILE *f)
-{
-	fprintf(f,
-		"usage: squeal-sim map [--brake NAME|all] [--grid N] [--na N] [--nv N]\n"
-		"         [--a-max A] [--v-max V] [--margin M] [--no-linear] [--csv FILE|-]\n"
-		"         [--basin K] [--check] [--list]\n\n"
-		"Classifies every point of an (a, v0) grid by simulation of the oscillator\n"
-		"(backward-time search for the unstable sliding cycle) and by the firmware\n"
-		"model with the exact and the cubic criterion, and reports how they agree.\n\n"
-		"  --brake NAME  default, d0.05, d0.1, k2, k0.5, n5000, n20000, or all\n"
-		"                (default: default); --list shows them\n"
-		"  --grid N      N x N points (default 100): a = a_max i/N, v0 = v_max j/N\n"
-		"  --a-max A     largest friction slope [s/m] (default 6)\n"
-		"  --v-max V     largest disc speed [m/s] (default 3)\n"
-		"  --margin M    'near a border' = within M in ln Q (default 0.01)\n"
-		"  --no-linear   skip the per-point simulation of the linear test\n"
-		"  --basin K     basin test at every K-th bistable point (farther than 0.05\n"
-		"                in ln Q from a border): the full oscillator started at 0.8\n"
-		"                and 1.2 x the exact model's cycle must decay / stick-slip\n"
-		"  --csv FILE    every point as CSV ('-' = stdout, the summary then goes\n"
-		"                to stderr)\n"
-		"  --check       exit 1 unless the exact criterion agrees at every point\n"
-		"                farther than the margin from a border (and the simulated\n"
-		"                linear test agrees with Q <= 1/2 there)\n");
-}
-
 static void csv_point(void *ctx, const oscsim_variation_t *var,
 		      const oscsim_map_point_t *pt)
 {
@@ -467,107 +321,82 @@ static void map_report(FILE *f, const oscsim_variation_t *var,
 
 int oscsim_cmd_map(int argc, char **argv)
 {
-	enum {
-		O_BRAKE = 256, O_GRID, O_NA, O_NV, O_AMAX, O_VMAX, O_MARGIN,
-		O_NOLIN, O_CSV, O_CHECK, O_LIST, O_BASIN
-	};
-	static const struct option options[] = {
-		{ "brake", required_argument, NULL, O_BRAKE },
-		{ "grid", required_argument, NULL, O_GRID },
-		{ "na", required_argument, NULL, O_NA },
-		{ "nv", required_argument, NULL, O_NV },
-		{ "a-max", required_argument, NULL, O_AMAX },
-		{ "v-max", required_argument, NULL, O_VMAX },
-		{ "margin", required_argument, NULL, O_MARGIN },
-		{ "no-linear", no_argument, NULL, O_NOLIN },
-		{ "csv", required_argument, NULL, O_CSV },
-		{ "check", no_argument, NULL, O_CHECK },
-		{ "list", no_argument, NULL, O_LIST },
-		{ "basin", required_argument, NULL, O_BASIN },
-		{ "help", no_argument, NULL, 'h' },
-		{ NULL, 0, NULL, 0 }
-	};
 	oscsim_map_opts_t o;
 	const char *brake = "default";
 	const char *csv = NULL;
 	FILE *csv_f = NULL;
 	FILE *rep = stdout;
-	int check = 0, failed = 0, opt;
+	bool check = false, list = false, no_linear = false;
+	bool have_grid = false, have_na = false, have_nv = false;
+	uint32_t grid = 0U, n_a = 0U, n_v = 0U;
+	int failed = 0;
+	const cli_opt_t opts[] = {
+		CLI_OPT_TEXT("brake", &brake, NULL, "NAME",
+			     "default, d0.05, d0.1, k2, k0.5, n5000, n20000, or all\n"
+			     "(default: default); --list shows them"),
+		CLI_OPT_U32("grid", &grid, &have_grid, 1.0, 2000.0, "N",
+			    "N x N points (default 100): a = a_max i/N, v0 = v_max j/N"),
+		CLI_OPT_U32("na", &n_a, &have_na, 1.0, 2000.0, "N", "points along a (overrides --grid)"),
+		CLI_OPT_U32("nv", &n_v, &have_nv, 1.0, 2000.0, "N", "points along v0 (overrides --grid)"),
+		CLI_OPT_REAL("a-max", &o.a_max_spm, NULL, 0.0, 20.0, CLI_LO_OPEN, "A",
+			     "largest friction slope [s/m] (default 6)"),
+		CLI_OPT_REAL("v-max", &o.v_max_mps, NULL, 0.0, 100.0, CLI_LO_OPEN, "V",
+			     "largest disc speed [m/s] (default 3)"),
+		CLI_OPT_REAL("margin", &o.border_margin, NULL, 0.0, HUGE_VAL, 0U, "M",
+			     "'near a border' = within M in ln Q (default 0.01)"),
+		CLI_OPT_FLAG("no-linear", 0, &no_linear, "skip the per-point simulation of the linear test"),
+		CLI_OPT_U32("basin", &o.basin_every, NULL, 1.0, 1000000.0, "K",
+			    "basin test at every K-th bistable point (farther than 0.05\n"
+			    "in ln Q from a border): the full oscillator started at 0.8\n"
+			    "and 1.2 x the exact model's cycle must decay / stick-slip"),
+		CLI_OPT_TEXT("csv", &csv, NULL, "FILE",
+			     "every point as CSV ('-' = stdout, the summary then goes\n"
+			     "to stderr)"),
+		CLI_OPT_FLAG("check", 0, &check,
+			     "exit 1 unless the exact criterion agrees at every point\n"
+			     "farther than the margin from a border (and the simulated\n"
+			     "linear test agrees with Q <= 1/2 there)"),
+		CLI_OPT_FLAG("list", 0, &list, "list the brakes and exit"),
+	};
+	const cli_spec_t spec = {
+		.cmd = "map",
+		CLI_SPEC_OPTS(opts),
+		.synopsis = "squeal-sim map [--brake NAME|all] [--grid N] [--na N] [--nv N]\n"
+			    "         [--a-max A] [--v-max V] [--margin M] [--no-linear] [--csv FILE|-]\n"
+			    "         [--basin K] [--check] [--list]",
+		.description = "Classifies every point of an (a, v0) grid by simulation of the oscillator\n"
+			       "(backward-time search for the unstable sliding cycle) and by the firmware\n"
+			       "model with the exact and the cubic criterion, and reports how they agree.",
+		.closing = "Exit status: 0 done, 1 a brake failed or --check found a disagreement,\n"
+			   "2 bad usage.",
+	};
+	cli_result_t r;
 	size_t i;
 
 	oscsim_map_default_opts(&o);
-	optind = 1;
-	opterr = 0;
-	while ((opt = getopt_long(argc, argv, "h", options, NULL)) != -1) {
-		int bad = 0;
-
-		switch (opt) {
-		case 'h':
-			map_usage(stdout);
-			return 0;
-		case O_BRAKE:
-			brake = optarg;
-			break;
-		case O_GRID:
-			bad = parse_count("map", "--grid", optarg, 2000U, &o.n_a);
-			o.n_v = o.n_a;
-			break;
-		case O_NA:
-			bad = parse_count("map", "--na", optarg, 2000U, &o.n_a);
-			break;
-		case O_NV:
-			bad = parse_count("map", "--nv", optarg, 2000U, &o.n_v);
-			break;
-		case O_AMAX:
-			bad = parse_num("map", "--a-max", optarg, &o.a_max_spm) ||
-			      !(o.a_max_spm > 0.0 && o.a_max_spm <= 20.0);
-			break;
-		case O_VMAX:
-			bad = parse_num("map", "--v-max", optarg, &o.v_max_mps) ||
-			      !(o.v_max_mps > 0.0 && o.v_max_mps <= 100.0);
-			break;
-		case O_MARGIN:
-			bad = parse_num("map", "--margin", optarg, &o.border_margin) ||
-			      !(o.border_margin >= 0.0);
-			break;
-		case O_NOLIN:
-			o.check_linear = 0;
-			break;
-		case O_CSV:
-			csv = optarg;
-			break;
-		case O_BASIN:
-			bad = parse_count("map", "--basin", optarg, 1000000U,
-					  &o.basin_every);
-			break;
-		case O_CHECK:
-			check = 1;
-			break;
-		case O_LIST:
-			for (i = 0; i < oscsim_variation_count(); i++) {
-				const oscsim_variation_t *v = oscsim_variation_get(i);
-
-				printf("%-8s %s\n", v->name, v->what);
-			}
-			return 0;
-		default:
-			fprintf(stderr, "squeal-sim map: unknown or incomplete option '%s'\n",
-				argv[optind - 1]);
-			bad = 1;
-			break;
-		}
-		if (bad) {
-			map_usage(stderr);
-			return 2;
-		}
+	r = cli_parse(&spec, argc, argv, NULL, NULL);
+	if (r != CLI_OK) {
+		return cli_exit_status(r);
 	}
-	if (optind != argc) {
-		fprintf(stderr, "squeal-sim map: unexpected argument '%s'\n", argv[optind]);
-		return 2;
+	if (have_grid) {
+		o.n_a = grid;
+		o.n_v = grid;
+	}
+	o.n_a = have_na ? n_a : o.n_a;
+	o.n_v = have_nv ? n_v : o.n_v;
+	if (no_linear) {
+		o.check_linear = 0;
+	}
+	if (list) {
+		for (i = 0; i < oscsim_variation_count(); i++) {
+			const oscsim_variation_t *v = oscsim_variation_get(i);
+
+			printf("%-8s %s\n", v->name, v->what);
+		}
+		return 0;
 	}
 	if (strcmp(brake, "all") != 0 && oscsim_variation_find(brake) == NULL) {
-		fprintf(stderr, "squeal-sim map: unknown brake '%s' (--list)\n", brake);
-		return 2;
+		return cli_exit_status(cli_usage_error(&spec, "unknown brake '%s' (--list)", brake));
 	}
 	if (csv != NULL) {
 		if (strcmp(csv, "-") == 0) {

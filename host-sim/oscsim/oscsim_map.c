@@ -255,6 +255,44 @@ static double now_s(void)
 	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* One criterion's class m against the truth t. */
+static void tally_model(int m, int t, int far, double border_dist, uint32_t *agree,
+			uint32_t *under, uint32_t *over, uint32_t *far_disagree, double *worst_dist)
+{
+	if (m == t) {
+		(*agree)++;
+		return;
+	}
+	if (m < t) {
+		(*under)++;
+	} else {
+		(*over)++;
+	}
+	if (far) {
+		(*far_disagree)++;
+	}
+	*worst_dist = fmax(*worst_dist, border_dist);
+}
+
+/* One criterion's cycle x_model against the simulated one. */
+static void tally_amp(double x_model, const oscsim_map_point_t *pt, int off_hopf, double *err_max,
+		      double *err_at_q, double *err_far)
+{
+	double err;
+
+	if (!isfinite(x_model)) {
+		return;
+	}
+	err = fabs(x_model - pt->sim_x) / pt->sim_x;
+	if (err > *err_max) {
+		*err_max = err;
+		*err_at_q = pt->ln_q;
+	}
+	if (off_hopf) {
+		*err_far = fmax(*err_far, err);
+	}
+}
+
 static void tally(oscsim_map_stats_t *st, const oscsim_map_opts_t *o,
 		  const oscsim_map_point_t *pt)
 {
@@ -270,62 +308,20 @@ static void tally(oscsim_map_stats_t *st, const oscsim_map_opts_t *o,
 	if (far) {
 		st->far_points++;
 	}
-	if (e == t) {
-		st->exact_agree++;
-	} else {
-		if (e < t) {
-			st->exact_under++;
-		} else {
-			st->exact_over++;
-		}
-		if (far) {
-			st->exact_far_disagree++;
-		}
-		st->exact_worst_dist = fmax(st->exact_worst_dist, pt->border_dist);
-	}
-	if (c == t) {
-		st->cubic_agree++;
-	} else {
-		if (c < t) {
-			st->cubic_under++;
-		} else {
-			st->cubic_over++;
-		}
-		if (far) {
-			st->cubic_far_disagree++;
-		}
-		st->cubic_worst_dist = fmax(st->cubic_worst_dist, pt->border_dist);
-	}
+	tally_model(e, t, far, pt->border_dist, &st->exact_agree, &st->exact_under, &st->exact_over,
+		    &st->exact_far_disagree, &st->exact_worst_dist);
+	tally_model(c, t, far, pt->border_dist, &st->cubic_agree, &st->cubic_under, &st->cubic_over,
+		    &st->cubic_far_disagree, &st->cubic_worst_dist);
 	if (pt->truth == OSCSIM_TRUTH_BISTABLE && isfinite(pt->sim_x)) {
 		/* right at the Hopf point the cycle shrinks to nothing and a
 		 * relative error measures the model's rounding of Q - 1/2 */
 		int off_hopf = fabs(pt->ln_q - LN_HALF) > o->border_margin;
 
 		st->amp_points++;
-		if (isfinite(pt->exact_x)) {
-			double err = fabs(pt->exact_x - pt->sim_x) / pt->sim_x;
-
-			if (err > st->exact_amp_err) {
-				st->exact_amp_err = err;
-				st->exact_amp_err_at_q = pt->ln_q;
-			}
-			if (off_hopf) {
-				st->exact_amp_err_far =
-					fmax(st->exact_amp_err_far, err);
-			}
-		}
-		if (isfinite(pt->cubic_x)) {
-			double err = fabs(pt->cubic_x - pt->sim_x) / pt->sim_x;
-
-			if (err > st->cubic_amp_err) {
-				st->cubic_amp_err = err;
-				st->cubic_amp_err_at_q = pt->ln_q;
-			}
-			if (off_hopf) {
-				st->cubic_amp_err_far =
-					fmax(st->cubic_amp_err_far, err);
-			}
-		}
+		tally_amp(pt->exact_x, pt, off_hopf, &st->exact_amp_err, &st->exact_amp_err_at_q,
+			  &st->exact_amp_err_far);
+		tally_amp(pt->cubic_x, pt, off_hopf, &st->cubic_amp_err, &st->cubic_amp_err_at_q,
+			  &st->cubic_amp_err_far);
 	}
 	if (pt->basin_in >= 0) {
 		st->basin_tested++;
@@ -423,14 +419,10 @@ int oscsim_map_run(const oscsim_variation_t *var, const oscsim_map_opts_t *o,
 			}
 			st->cycle_evals += tr.cycle.evals;
 			st->cycle_steps += tr.cycle.steps;
-			memset(&pt, 0, sizeof(pt));
-			pt.a_spm = p.slope_spm;
-			pt.v0_mps = p.v0_mps;
-			pt.ln_q = tr.ln_q;
-			pt.s = tr.s;
-			pt.truth = tr.cls;
-			pt.sim_x = tr.cycle_x;
-			pt.linear_grows = tr.linear_grows;
+			pt = (oscsim_map_point_t){ .a_spm = p.slope_spm, .v0_mps = p.v0_mps,
+				.ln_q = tr.ln_q, .s = tr.s, .truth = tr.cls, .sim_x = tr.cycle_x,
+				.linear_grows = tr.linear_grows, .basin_in = -1, .basin_out = -1,
+				.basin_cubic_in = -1 };
 			rc = oscsim_model_classify(&p, 0, &pt.exact_state,
 						   &pt.exact_x, &lq_model);
 			if (rc != SQ_OK) {
@@ -447,9 +439,6 @@ int oscsim_map_run(const oscsim_variation_t *var, const oscsim_map_opts_t *o,
 				pt.border_dist = fmin(pt.border_dist,
 						      fabs(pt.ln_q - pt.ln_q_border));
 			}
-			pt.basin_in = -1;
-			pt.basin_out = -1;
-			pt.basin_cubic_in = -1;
 			if (o->basin_every > 0U &&
 			    pt.truth == OSCSIM_TRUTH_BISTABLE &&
 			    pt.border_dist > o->basin_min_dist &&
