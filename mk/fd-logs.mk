@@ -2,7 +2,7 @@
 # CAN FD in logs, replay, decode and the plant's log:
 #   host-sim/candump_hal.c   the one candump frame <-> HAL frame conversion
 #                            (FD flags both ways), used by replay, decode, plant
-#   build/test/tests/host-sim/test_candump_log_fd   cmocka, ASan+UBSan: FD lines
+#   build/test/tests/host-sim/test_candump_hal   cmocka, ASan+UBSan: FD lines
 #                            of every length and flags, both flag conventions,
 #                            non-DLC lengths, the HAL conversion, and the writer
 #                            against can-utils' log2long/log2asc/asc2log
@@ -11,12 +11,12 @@ SIM_SRCS += host-sim/candump_hal.c
 $(foreach v,$(VARIANTS),$(eval build/$(v)/squeal-replay: build/$(v)/app/host-sim/candump_hal.o))
 
 define fd_logs_unit
-build/$(1)/tests/host-sim/test_candump_log_fd: build/$(1)/app/tests/host-sim/test_candump_log_fd.o build/$(1)/app/host-sim/candump_log.o build/$(1)/app/host-sim/candump_hal.o
+build/$(1)/tests/host-sim/test_candump_hal: build/$(1)/app/tests/host-sim/test_candump_hal.o build/$(1)/app/host-sim/candump_log.o build/$(1)/app/host-sim/candump_hal.o
 	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka
 endef
 $(foreach v,test test-fixed,$(eval $(call fd_logs_unit,$(v))))
-TEST_PROGS += build/test/tests/host-sim/test_candump_log_fd
+TEST_PROGS += build/test/tests/host-sim/test_candump_hal
 
 # replay and decode --inputs-csv of FD logs written by the test (P05 of its
 # own, states from the reference model), both numeric builds

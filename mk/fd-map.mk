@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 # CAN FD input map and AUTOSAR E2E Profile 5: cmocka, both numeric builds,
 # ASan+UBSan.
-#   build/<v>/tests/firmware/protocol/test_e2e_p05      P05 + CRC-16 vs crc_hqx
+#   build/<v>/tests/firmware/protocol/test_e2e_p05      P05 vs crc_hqx, the published example
+#   build/<v>/tests/firmware/protocol/test_crc16_ccitt  CRC-16/CCITT-FALSE vs crc_hqx
 #   build/<v>/tests/firmware/protocol/test_can_signal_fd FD signals vs canmatrix
 #   build/<v>/tests/firmware/monitor/test_input_rx_fd    FD configs and verdicts
 #   build/<v>/tests/host-sim/test_calib_sections_fd      fd / p05 text keys
@@ -29,6 +30,7 @@ TEST_PROGS += build/$(1)/tests/$(2)/$(3)
 endef
 $(foreach v,$(FD_MAP_VARIANTS),\
   $(eval $(call fd_map_rules,$(v),firmware/protocol,test_e2e_p05,$(FD_MAP_GEN)/e2e_p05_ref.h,))\
+  $(eval $(call fd_map_rules,$(v),firmware/protocol,test_crc16_ccitt,$(FD_MAP_GEN)/e2e_p05_ref.h,))\
   $(eval $(call fd_map_rules,$(v),firmware/protocol,test_can_signal_fd,$(FD_MAP_GEN)/can_signal_fd_ref.h,))\
   $(eval $(call fd_map_rules,$(v),firmware/monitor,test_input_rx_fd,,))\
   $(eval $(call fd_map_rules,$(v),host-sim,test_calib_sections_fd,,host-sim/calib_text.o host-sim/calib_sections.o)))

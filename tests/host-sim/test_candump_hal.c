@@ -272,7 +272,7 @@ static void write_ref_log(char *path, size_t size)
 	unsigned e;
 	int fd;
 
-	(void)snprintf(path, size, "/tmp/test_candump_log_fd.XXXXXX");
+	(void)snprintf(path, size, "/tmp/test_candump_hal.XXXXXX");
 	fd = mkstemp(path);
 	assert_true(fd >= 0);
 	fp = fdopen(fd, "w");
