@@ -236,7 +236,7 @@ uint32_t chip_fdcan_kernel_hz(void)
 /* ---- CAN pins (DS12288 alternate functions, AF9) ---------------------------------- */
 
 typedef struct {
-	uint32_t port;
+	uintptr_t port;
 	uint32_t port_en;
 	uint8_t rx_pin;
 	uint8_t tx_pin;
@@ -263,7 +263,7 @@ static void field_set(uintptr_t reg_addr, uint32_t shift, uint32_t width_mask, u
 	REG32(reg_addr) = v | (value << shift);
 }
 
-static void pin_af9(uint32_t port, uint32_t pin, bool pull_up)
+static void pin_af9(uintptr_t port, uint32_t pin, bool pull_up)
 {
 	uintptr_t afr = (uintptr_t)&GPIO_AFRL(port) + (pin >= 8U ? 4U : 0U);
 
@@ -410,7 +410,7 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 		uint32_t k;
 
 		for (k = 0; k < CHIP_FLASH_PROGRAM_BYTES && off + k < len; k++) {
-			w[k / 4U] &= ~(0xFFUL << (8U * (k & 3U)));
+			w[k / 4U] &= ~((uint32_t)0xFFU << (8U * (k & 3U)));
 			w[k / 4U] |= (uint32_t)data[off + k] << (8U * (k & 3U));
 		}
 		REG32(addr + off) = w[0];
