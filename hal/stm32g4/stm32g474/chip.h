@@ -35,14 +35,11 @@
 /* The CAN controllers' interrupt handlers (fdcan.c) and their slots in the
  * vector table (startup.c). */
 void FDCAN1_IT0_IRQHandler(void);
-void FDCAN1_IT1_IRQHandler(void);
 void FDCAN2_IT0_IRQHandler(void);
-void FDCAN2_IT1_IRQHandler(void);
+/* fdcan.c routes every interrupt to line 0 (FDCAN_ILS 0) */
 #define CHIP_CAN_VECTORS                                                   \
 	[16U + CHIP_IRQ_FDCAN1_IT0] = { .handler = FDCAN1_IT0_IRQHandler }, \
-	[16U + CHIP_IRQ_FDCAN1_IT1] = { .handler = FDCAN1_IT1_IRQHandler }, \
-	[16U + CHIP_IRQ_FDCAN2_IT0] = { .handler = FDCAN2_IT0_IRQHandler }, \
-	[16U + CHIP_IRQ_FDCAN2_IT1] = { .handler = FDCAN2_IT1_IRQHandler },
+	[16U + CHIP_IRQ_FDCAN2_IT0] = { .handler = FDCAN2_IT0_IRQHandler },
 
 /*
  * Clock plan (RM0440 7.2, clocks): HSE 24 MHz (NUCLEO-G474RE: crystal X3)
