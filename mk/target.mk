@@ -193,3 +193,7 @@ tests/system/target/run-ecu-selftest.sh: build/stm32f4-nmitest/squeal-monitor.el
 $(eval $(call arm_config,stm32f4-contracttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_CONTRACT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 tests/system/target/run-ecu-contract.sh: build/stm32f4-contracttest/squeal-monitor.elf
 TEST_PROGS += tests/system/target/run-ecu-contract.sh
+# ... and the STM32G474 image with semihosting events, run under QEMU on
+# netduinoplus2 (flash at 0x08000000, SRAM at 0x20000000; no G4 RCC, no
+# FDCAN there: clock fallback and CAN init faults, bounded waits)
+$(eval $(call arm_config,stm32g474-ecutest,stm32g474,float,-DSQ_TARGET_TEST,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32g474) $(HAL_TEST_SRCS),$(LDS_stm32g474)))
