@@ -4,6 +4,7 @@
 #   make firmware                               build/stm32f4/squeal-monitor.{elf,bin,hex,map}
 #   make firmware NUMERIC=fixed TARGET=stm32f103  build/stm32f103/... (Cortex-M3, no FPU,
 #                                               checked free of floating point)
+#   make firmware TARGET=stm32g474              build/stm32g474/... (FDCAN, CAN FD frames)
 #   make flash [DRY_RUN=1] [TARGET=...]         OpenOCD + ST-LINK (tools/flash.sh)
 #   make stack-usage                            worst-case stack per entry point
 #
@@ -20,19 +21,33 @@ TARGET ?= stm32f4
 
 CPU_stm32f4 := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
 CPU_stm32f103 := -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
+CPU_stm32g474 := $(CPU_stm32f4)
 LDS_stm32f4 := linker/stm32f405xg.ld
 LDS_stm32f103 := linker/stm32f103xb.ld
+LDS_stm32g474 := linker/stm32g474xe.ld
 # chip.h comes from the chip directory (never next to the shared files, where
 # #include "..." would find it first); the F103 port reuses the generic parts.
 HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
 HAL_INC_stm32f103 := -Ihal/stm32f103/stm32f103xb -Ihal/stm32f4
-HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c selftest.c \
+HAL_INC_stm32g474 := -Ihal/stm32g4/stm32g474 -Ihal/stm32g4 -Ihal/stm32f4
+HAL_GENERIC := startup.c systick.c iwdg.c calib_flash.c board.c selftest.c \
 	platform_faults.c libc_min.c
+HAL_BXCAN := bxcan.c bxcan_timing.c
+# -DHAL_CAN_CLASSIC_ONLY for the bxCAN images only: bxCAN is a classic
+# controller, so its frames hold 8 data bytes (hal.h's HAL_CAN_MAX_DLEN) and
+# its RAM stays the classic one; FD frames are refused there (SQ_ENOTSUP).
+# The G4's FDCAN carries FD frames (HAL_CAN_MAX_DLEN 64).
+CANFLAGS_stm32f4 := -DHAL_CAN_CLASSIC_ONLY
+CANFLAGS_stm32f103 := -DHAL_CAN_CLASSIC_ONLY
+CANFLAGS_stm32f2 := -DHAL_CAN_CLASSIC_ONLY
+CANFLAGS_stm32g474 :=
 # the rules every backend shares (hal/common/: frame and filter checks, the
 # bus-state change)
 HAL_COMMON := $(sort $(wildcard hal/common/*.c))
-HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) clock.c can_pins.c flash.c) $(HAL_COMMON)
-HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32f103/*.c)) $(HAL_COMMON)
+HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN) clock.c can_pins.c flash.c) $(HAL_COMMON)
+HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN)) $(sort $(wildcard hal/stm32f103/*.c)) $(HAL_COMMON)
+# the G4: the generic files, its chip part and FDCAN driver (hal/stm32g4/)
+HAL_SRCS_stm32g474 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32g4/*.c)) $(HAL_COMMON)
 # Test images only (-DSQ_TARGET_TEST): semihosting, the drivers' event sink
 # and the test run around the firmware; never in an ECU image.
 HAL_TEST_SRCS := $(addprefix hal/stm32f4/,semihost.c test_events.c test_run.c)
@@ -46,11 +61,9 @@ FW_TARGET_SRCS := $(sort $(FW_SRCS) $(APP_SRCS))
 
 # -ffp-contract=off: no fused multiply-add, so float results are the host's
 # bit for bit. -fstack-usage/-fcallgraph-info feed tools/stack_usage.py.
-# -DHAL_CAN_CLASSIC_ONLY: every image runs bxCAN, a classic controller, so
-# its frames hold 8 data bytes (hal.h's HAL_CAN_MAX_DLEN) and its RAM stays
-# the classic one; FD frames are refused there (SQ_ENOTSUP).
+# The CAN frame size per controller: CANFLAGS_<chip> above.
 ARM_CFLAGS := $(WARN) -ffreestanding -fno-common -ffunction-sections -fdata-sections \
-	-ffp-contract=off -fstack-usage -fcallgraph-info=su -Os -g -DHAL_CAN_CLASSIC_ONLY
+	-ffp-contract=off -fstack-usage -fcallgraph-info=su -Os -g
 ARM_LDFLAGS := -nostdlib -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments
 
 # arm_config: name, target chip, numeric, extra flags, sources, linker script
@@ -58,7 +71,7 @@ define arm_config
 $(1)_OBJS := $$(patsubst %.c,build/$(1)/fw/%.o,$(5))
 build/$(1)/fw/%.o: %.c
 	@mkdir -p $$(@D)
-	$$(ARM_CC) $$(ARM_CFLAGS) $$(CPU_$(2)) $$(DEF_$(3)) $(4) $$(FW_INC) $$(HAL_INC_$(2)) \
+	$$(ARM_CC) $$(ARM_CFLAGS) $$(CPU_$(2)) $$(CANFLAGS_$(2)) $$(DEF_$(3)) $(4) $$(FW_INC) $$(HAL_INC_$(2)) \
 		-Itests/target -Ibuild/$(1) -MMD -MP -c $$< -o $$@
 .SECONDARY: $$($(1)_OBJS)
 build/$(1)/%.elf: $$($(1)_OBJS) $(6)
@@ -77,9 +90,13 @@ $(eval $(call arm_config,stm32f103,stm32f103,fixed,,$(FW_TARGET_SRCS) $(HAL_SRCS
 # Other numeric modes on request (make firmware NUMERIC=fixed): build/stm32f4-fixed/ ...
 $(eval $(call arm_config,stm32f4-fixed,stm32f4,fixed,,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4),$(LDS_stm32f4)))
 $(eval $(call arm_config,stm32f103-float,stm32f103,float,,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f103),$(LDS_stm32f103)))
+# The STM32G474 (FDCAN): the F4's app, model and monitor objects' flags
+$(eval $(call arm_config,stm32g474,stm32g474,float,,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32g474),$(LDS_stm32g474)))
+$(eval $(call arm_config,stm32g474-fixed,stm32g474,fixed,,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32g474),$(LDS_stm32g474)))
 
 NATIVE_NUM_stm32f4 := float
 NATIVE_NUM_stm32f103 := fixed
+NATIVE_NUM_stm32g474 := float
 FW_CONFIG := $(TARGET)$(if $(filter $(NATIVE_NUM_$(TARGET)),$(NUMERIC)),,-$(NUMERIC))
 FW_IMAGE := build/$(FW_CONFIG)/squeal-monitor
 
@@ -176,3 +193,7 @@ tests/system/target/run-ecu-selftest.sh: build/stm32f4-nmitest/squeal-monitor.el
 $(eval $(call arm_config,stm32f4-contracttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_CONTRACT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 tests/system/target/run-ecu-contract.sh: build/stm32f4-contracttest/squeal-monitor.elf
 TEST_PROGS += tests/system/target/run-ecu-contract.sh
+# ... and the STM32G474 image with semihosting events, run under QEMU on
+# netduinoplus2 (flash at 0x08000000, SRAM at 0x20000000; no G4 RCC, no
+# FDCAN there: clock fallback and CAN init faults, bounded waits)
+$(eval $(call arm_config,stm32g474-ecutest,stm32g474,float,-DSQ_TARGET_TEST,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32g474) $(HAL_TEST_SRCS),$(LDS_stm32g474)))

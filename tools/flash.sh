@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Flash an ECU image through an ST-LINK with OpenOCD: program, verify, reset.
-#   tools/flash.sh [--dry-run] [--target stm32f4|stm32f103] IMAGE.elf
+#   tools/flash.sh [--dry-run] [--target stm32f4|stm32f103|stm32g474] IMAGE.elf
 # --dry-run prints the exact command line instead of running it.
 # The ELF (or HEX) is flashed, never the .bin: only the sectors the image
 # covers are erased, so the calibration sectors keep their contents.
@@ -17,11 +17,12 @@ while [ $# -gt 0 ]; do
 	*) break ;;
 	esac
 done
-[ $# -eq 1 ] || { echo "usage: tools/flash.sh [--dry-run] [--target stm32f4|stm32f103] IMAGE.elf" >&2; exit 2; }
+[ $# -eq 1 ] || { echo "usage: tools/flash.sh [--dry-run] [--target stm32f4|stm32f103|stm32g474] IMAGE.elf" >&2; exit 2; }
 image=$1
 case "$target" in
 stm32f4) cfg=target/stm32f4x.cfg ;;
 stm32f103) cfg=target/stm32f1x.cfg ;;
+stm32g474) cfg=target/stm32g4x.cfg ;;
 *) echo "flash.sh: unknown target $target" >&2; exit 2 ;;
 esac
 [ -f "$image" ] || { echo "flash.sh: $image not found (make firmware first)" >&2; exit 1; }

@@ -17,7 +17,7 @@
 
 #include "stm32_board.h"
 
-#include "bxcan.h"
+#include "can_ctrl.h"
 #include "chip.h"
 #include "squeal_app.h"
 #include "sq_status.h"
@@ -51,7 +51,7 @@ void stm32_board_init(void)
 	 * and reports it (SquealDiag cannot go out then, but the ECU still
 	 * kicks its watchdog and keeps its state). */
 	for (bus = 0; bus < HAL_CAN_BUSES; bus++) {
-		(void)bxcan_start(bus, BXCAN_DEFAULT_BITRATE);
+		(void)can_ctrl_start(bus, CAN_CTRL_DEFAULT_BITRATE);
 	}
 }
 
@@ -65,7 +65,7 @@ void hal_idle_until(uint64_t deadline_us)
 	uint32_t primask = cm_irq_save();
 
 	/* A frame already waiting needs the caller now, not after a tick. */
-	if (!bxcan_rx_pending() && hal_time_us() < deadline_us) {
+	if (!can_ctrl_rx_pending() && hal_time_us() < deadline_us) {
 		cm_dsb();
 		cm_wfi();
 	}

@@ -36,6 +36,7 @@
 
 #include "bxcan.h"
 #include "bxcan_regs.h"
+#include "can_ctrl.h"
 #include "chip.h"
 #include "hal.h"
 #include "hal_can_common.h"
@@ -702,6 +703,22 @@ static void sce_irq(uint8_t bus)
 	}
 	state_follow(bus);
 	can_wr(base, CAN_MSR, CAN_MSR_ERRI); /* write 1 to clear */
+}
+
+/* can_ctrl.h: the board's controller-neutral names for the three above */
+int can_ctrl_start(uint8_t bus, uint32_t bitrate_bps)
+{
+	return bxcan_start(bus, bitrate_bps);
+}
+
+int can_ctrl_selftest_loopback(uint8_t bus)
+{
+	return bxcan_selftest_loopback(bus);
+}
+
+bool can_ctrl_rx_pending(void)
+{
+	return bxcan_rx_pending();
 }
 
 void CAN1_TX_IRQHandler(void) { tx_irq(0U); }

@@ -35,11 +35,6 @@ int bxcan_selftest_loopback(uint8_t bus);
 /* A received frame waits in some bus's ring (hal_idle_until does not sleep). */
 bool bxcan_rx_pending(void);
 
-void CAN1_TX_IRQHandler(void);
-void CAN1_RX0_IRQHandler(void);
-void CAN1_SCE_IRQHandler(void);
-void CAN2_TX_IRQHandler(void);
-void CAN2_RX0_IRQHandler(void);
-void CAN2_SCE_IRQHandler(void);
+/* Its interrupt handlers: chip.h (CHIP_CAN_VECTORS). */
 
 #endif /* BXCAN_H */

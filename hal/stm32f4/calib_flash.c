@@ -38,6 +38,12 @@ typedef struct {
 
 _Static_assert(sizeof(calib_hdr_t) == CALIB_HDR_LEN, "header layout");
 
+/* The header bytes programmed last, together with the magic word: the
+ * flash's program unit, at least the magic itself. */
+#define CALIB_MAGIC_UNIT (CHIP_FLASH_PROGRAM_BYTES > 4U ? CHIP_FLASH_PROGRAM_BYTES : 4U)
+_Static_assert(CALIB_MAGIC_UNIT < CALIB_HDR_LEN && CALIB_HDR_LEN % CALIB_MAGIC_UNIT == 0U,
+	       "the header splits into program units");
+
 static uint32_t slot_size(void)
 {
 	return (uint32_t)(uintptr_t)__calib_slot_size;
@@ -187,10 +193,14 @@ int hal_calib_write(const uint8_t *buf, uint32_t len)
 			return SQ_EIO;
 		}
 	}
-	/* Payload, then seq/len/crc, then the magic that makes it count. */
+	/* Payload, then the header after the magic's program unit, then that
+	 * unit with the magic that makes it count: seq/len/crc, then magic
+	 * (units of 4 or fewer bytes); len/crc, then magic + seq (the G4's
+	 * 8-byte double words, each programmed once). */
 	if (chip_flash_program(addr + CALIB_HDR_LEN, buf, len) != SQ_OK ||
-	    chip_flash_program(addr + 4U, (const uint8_t *)&hdr.seq, 12U) != SQ_OK ||
-	    chip_flash_program(addr, (const uint8_t *)&hdr.magic, 4U) != SQ_OK) {
+	    chip_flash_program(addr + CALIB_MAGIC_UNIT, (const uint8_t *)&hdr + CALIB_MAGIC_UNIT,
+			       CALIB_HDR_LEN - CALIB_MAGIC_UNIT) != SQ_OK ||
+	    chip_flash_program(addr, (const uint8_t *)&hdr, CALIB_MAGIC_UNIT) != SQ_OK) {
 		stm32_fault_raise(HAL_FAULT_CALIB_STORAGE);
 		return SQ_EIO;
 	}

@@ -10,7 +10,7 @@
 
 #include "stm32_selftest.h"
 
-#include "bxcan.h"
+#include "can_ctrl.h"
 #include "chip.h"
 #include "sq_status.h"
 #include "stm32_fault.h"
@@ -21,7 +21,7 @@ static stm32_selftest_t result;
 
 static uint32_t loopback(uint8_t bus)
 {
-	switch (bxcan_selftest_loopback(bus)) {
+	switch (can_ctrl_selftest_loopback(bus)) {
 	case SQ_OK:
 		return STM32_LOOPBACK_PASS;
 	case SQ_EAGAIN:

@@ -13,7 +13,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "bxcan.h"
 #include "chip.h"
 #include "hal.h"
 #include "stm32_fault.h"
@@ -61,14 +60,7 @@ const vector_t stm32_vectors[16U + CHIP_IRQ_COUNT] = {
 	[7 ... 10] = { .handler = NULL },    /* reserved             */
 	[13] = { .handler = NULL },          /* reserved             */
 	[15] = { .handler = SysTick_Handler },
-	[16U + CHIP_IRQ_CAN1_TX] = { .handler = CAN1_TX_IRQHandler },
-	[16U + CHIP_IRQ_CAN1_RX0] = { .handler = CAN1_RX0_IRQHandler },
-	[16U + CHIP_IRQ_CAN1_SCE] = { .handler = CAN1_SCE_IRQHandler },
-#if CHIP_CAN_BUSES > 1
-	[16U + CHIP_IRQ_CAN2_TX] = { .handler = CAN2_TX_IRQHandler },
-	[16U + CHIP_IRQ_CAN2_RX0] = { .handler = CAN2_RX0_IRQHandler },
-	[16U + CHIP_IRQ_CAN2_SCE] = { .handler = CAN2_SCE_IRQHandler },
-#endif
+	CHIP_CAN_VECTORS /* the chip's CAN controller (chip.h) */
 };
 #pragma GCC diagnostic pop
 

@@ -25,6 +25,18 @@
 #define CHIP_CAN_BUSES 1U
 #define CHIP_CAN_FILTER_BANKS 14U
 
+/* bxCAN's interrupt handlers (bxcan.c) and their vector slots (startup.c) */
+void CAN1_TX_IRQHandler(void);
+void CAN1_RX0_IRQHandler(void);
+void CAN1_SCE_IRQHandler(void);
+void CAN2_TX_IRQHandler(void);
+void CAN2_RX0_IRQHandler(void);
+void CAN2_SCE_IRQHandler(void);
+#define CHIP_CAN_VECTORS                                                 \
+	[16U + CHIP_IRQ_CAN1_TX] = { .handler = CAN1_TX_IRQHandler },   \
+	[16U + CHIP_IRQ_CAN1_RX0] = { .handler = CAN1_RX0_IRQHandler }, \
+	[16U + CHIP_IRQ_CAN1_SCE] = { .handler = CAN1_SCE_IRQHandler },
+
 /* Clock plan: HSE 8 MHz x 9 -> 72 MHz SYSCLK, APB1 36 MHz (bxCAN), APB2 72. */
 #define CHIP_HSI_HZ      8000000U
 #define CHIP_HSE_HZ      8000000U
@@ -99,6 +111,7 @@
 #define FLASH_CR_PER  (1U << 1)
 #define FLASH_CR_STRT (1U << 6)
 #define FLASH_CR_LOCK (1U << 7)
+#define CHIP_FLASH_PROGRAM_BYTES 2U /* half-words */
 
 /* GPIO and AFIO */
 #define GPIO_CRH(b) REG32((b) + 0x04U)

@@ -28,6 +28,21 @@
 #define CHIP_CAN_BUSES 2U
 #define CHIP_CAN_FILTER_BANKS 28U
 
+/* bxCAN's interrupt handlers (bxcan.c) and their vector slots (startup.c) */
+void CAN1_TX_IRQHandler(void);
+void CAN1_RX0_IRQHandler(void);
+void CAN1_SCE_IRQHandler(void);
+void CAN2_TX_IRQHandler(void);
+void CAN2_RX0_IRQHandler(void);
+void CAN2_SCE_IRQHandler(void);
+#define CHIP_CAN_VECTORS                                                 \
+	[16U + CHIP_IRQ_CAN1_TX] = { .handler = CAN1_TX_IRQHandler },   \
+	[16U + CHIP_IRQ_CAN1_RX0] = { .handler = CAN1_RX0_IRQHandler }, \
+	[16U + CHIP_IRQ_CAN1_SCE] = { .handler = CAN1_SCE_IRQHandler }, \
+	[16U + CHIP_IRQ_CAN2_TX] = { .handler = CAN2_TX_IRQHandler },   \
+	[16U + CHIP_IRQ_CAN2_RX0] = { .handler = CAN2_RX0_IRQHandler }, \
+	[16U + CHIP_IRQ_CAN2_SCE] = { .handler = CAN2_SCE_IRQHandler },
+
 /* Clock plan: HSE 8 MHz -> PLL (M 4: 2 MHz VCO input as RM0090 recommends,
  * N 168, P 2, Q 7) -> 168 MHz SYSCLK,
  * AHB 168 MHz, APB1 42 MHz (bxCAN), APB2 84 MHz, USB/SDIO 48 MHz. */
@@ -164,6 +179,7 @@
 #define FLASH_CR_PSIZE_MSK (3U << 8)
 #define FLASH_CR_STRT (1U << 16)
 #define FLASH_CR_LOCK (1U << 31)
+#define CHIP_FLASH_PROGRAM_BYTES 4U /* x32 programming */
 
 /* GPIO (RM0090 section 8.4) */
 #define GPIO_MODER(b)   REG32((b) + 0x00U)

@@ -19,7 +19,7 @@
 
 #include <cmocka.h>
 
-#include "bxcan.h"
+#include "can_ctrl.h"
 #include "chip.h"
 #include "hal.h"
 #include "sq_status.h"
@@ -62,7 +62,7 @@ void stm32_time_start(uint32_t core_hz) { note("time"); time_start_hz = core_hz;
 void cm_irq_enable(void) { note("irq_on"); primask = 0U; }
 uint32_t stm32_stack_reserve_bytes(void) { return 6144U; }
 uint64_t hal_time_us(void) { return now_us; }
-bool bxcan_rx_pending(void) { return rx_pending; }
+bool can_ctrl_rx_pending(void) { return rx_pending; }
 void cm_dsb(void) { }
 void cm_wfi(void) { note("wfi"); wfi_primask = primask; }
 
@@ -73,7 +73,7 @@ const stm32_selftest_t *stm32_selftest_run(uint32_t stack_reserve_bytes)
 	return &selftest_result;
 }
 
-int bxcan_start(uint8_t bus, uint32_t bitrate_bps)
+int can_ctrl_start(uint8_t bus, uint32_t bitrate_bps)
 {
 	note(bus == 0U ? "can0" : "can1");
 	can_bitrate[bus] = bitrate_bps;

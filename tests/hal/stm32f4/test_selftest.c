@@ -18,7 +18,7 @@
 
 #include <cmocka.h>
 
-#include "bxcan.h"
+#include "can_ctrl.h"
 #include "chip.h"
 #include "hal.h"
 #include "sq_status.h"
@@ -38,7 +38,7 @@ hal_reset_reason_t hal_reset_reason(void) { return HAL_RESET_WATCHDOG; }
 uint32_t hal_platform_faults(void) { return faults_before | raised; }
 void stm32_fault_raise(uint32_t bits) { raised |= bits; }
 
-int bxcan_selftest_loopback(uint8_t bus)
+int can_ctrl_selftest_loopback(uint8_t bus)
 {
 	assert_true(bus < HAL_CAN_BUSES);
 	return loopback_rc[bus];

@@ -1,0 +1,405 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * STM32G474 chip part (hal/stm32g4/chip_g4.c) on the host, its registers in
+ * plain arrays (tests/support/regsim/g4/chip.h). The "hardware" answers each
+ * bounded wait the way RM0440 says: HSERDY once HSEON is set and a crystal
+ * is fitted, PLLRDY after PLLON, SWS following SW, VOSF clear, TIM17
+ * capturing every 8th edge of HSE/32 on the HSI16-clocked counter only when
+ * TI1SEL routes HSE/32 (0011) and HSE32EN requests it; a page erase fills
+ * the page of FLASH_CR PNB/BKER with 0xFF. Expected values are RM0440's
+ * formulas and tables worked by hand: f_VCO = 24 MHz / M * N = 340 MHz,
+ * SYSCLK = f_VCO / R = 170 MHz; 4 wait states for 136..170 MHz in boost
+ * mode; BOR_LEV codes; RCC_CSR flags; 2 KiB pages with DBANK 1 (bank 2
+ * from 0x08040000), 4 KiB with DBANK 0. The chip part has no numeric-build
+ * dependence, so one build covers both.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "chip.h"
+#include "hal.h"
+#include "sq_status.h"
+#include "stm32_fault.h"
+#include "stm32_iwdg.h"
+#include "stm32_time.h"
+
+uint32_t regsim_rcc[64], regsim_pwr[40], regsim_flash[16], regsim_tim17[32], regsim_gpioa[16],
+	regsim_gpiob[16], regsim_keyr_log[8], regsim_keyr_n;
+uint32_t regsim_iwdg[4], regsim_dbgmcu[4];
+uint8_t regsim_flash_mem[8192] __attribute__((aligned(8)));
+/* the linker symbols of the calibration slots (chip_g4.c) */
+extern const uint8_t __calib_start[];
+
+static uint32_t flash_cr;
+static uint32_t keys_seen; /* keys since the last lock */
+static bool crystal_fitted;
+static uint32_t crystal_hz;
+static uint64_t capture_num;
+/* state at the moment SW asked for the PLL */
+static bool switched_to_pll;
+static uint32_t acr_at_switch, r1mode_at_switch, hpre_at_switch;
+static uint32_t erased[8][2]; /* bker, page */
+static uint32_t n_erased;
+
+void stm32_time_early_init(uint32_t core_hz)
+{
+	(void)core_hz;
+}
+
+void cm_dsb(void) { }
+
+/* FLASH_CR: LOCK stays set until KEY1 then KEY2 arrive in FLASH_KEYR; a
+ * write of LOCK locks it again (RM0440 3.3.5). */
+volatile uint32_t *regsim_flash_cr(void)
+{
+	static uint32_t seen_n;
+
+	while (seen_n < regsim_keyr_n) {
+		uint32_t k = regsim_keyr_log[seen_n & 7U];
+
+		keys_seen = (k == FLASH_KEY1) ? 1U : ((keys_seen == 1U && k == FLASH_KEY2) ? 2U : 0U);
+		seen_n++;
+	}
+	if (keys_seen == 2U) {
+		flash_cr &= ~FLASH_CR_LOCK;
+		keys_seen = 3U;
+	} else if ((flash_cr & FLASH_CR_LOCK) != 0U && keys_seen == 3U) {
+		keys_seen = 0U;
+	}
+	return &flash_cr;
+}
+
+/* FLASH_SR: write 1 to clear. The cell the code sees holds the flags; a
+ * value found there that differs from what was handed out was written, and
+ * clears its 1s (a write equal to the flags themselves is not told apart,
+ * which no test needs). */
+static uint32_t flash_sr_hw, flash_sr_cell;
+volatile uint32_t *regsim_flash_sr(void)
+{
+	if (flash_sr_cell != flash_sr_hw) {
+		flash_sr_hw &= ~flash_sr_cell;
+	}
+	flash_sr_cell = flash_sr_hw;
+	return &flash_sr_cell;
+}
+
+static void tim17_capture(void)
+{
+	bool routed = (RCC_APB2ENR & (1U << 18)) != 0U && (TIM17_CR1 & 1U) != 0U &&
+		      (TIM17_TISEL & 0xFU) == 3U && (TIM17_OR1 & 1U) != 0U &&
+		      (TIM17_CCMR1 & 3U) == 1U && (TIM17_CCER & 1U) != 0U;
+	uint32_t psc = 1U << ((TIM17_CCMR1 >> 2) & 3U);
+
+	if (!routed || !crystal_fitted) {
+		return;
+	}
+	capture_num += (uint64_t)16000000U * 32U * psc; /* counter on the HSI16 */
+	TIM17_CCR1 = (uint32_t)((capture_num / crystal_hz) & 0xFFFFU);
+	TIM17_SR |= 1U << 1;
+}
+
+static void flash_erase(void)
+{
+	uint32_t page_bytes = (FLASH_OPTR & (1U << 22)) != 0U ? 2048U : 4096U;
+	uint32_t bker = (flash_cr >> 11) & 1U;
+	uint32_t pnb = (flash_cr >> 3) & 0x7FU;
+	uint32_t bank = (bker != 0U) ? 0x40000U : 0U;
+	uint32_t off = bank + pnb * page_bytes; /* from the flash's start */
+
+	assert_true(n_erased < 8U);
+	erased[n_erased][0] = bker;
+	erased[n_erased][1] = pnb;
+	n_erased++;
+	assert_true(off >= 0x7E000U && off + page_bytes <= 0x80000U); /* calibration only */
+	memset(&regsim_flash_mem[off - 0x7E000U], 0xFF, page_bytes);
+	flash_cr &= ~(1U << 16);
+}
+
+int stm32_wait_reg(volatile const uint32_t *reg, uint32_t mask, uint32_t value, uint32_t timeout_us)
+{
+	(void)timeout_us;
+	if (reg == &RCC_CR) {
+		RCC_CR = (RCC_CR & ~((1U << 17) | (1U << 25))) |
+			 (((RCC_CR & (1U << 16)) != 0U && crystal_fitted) ? (1U << 17) : 0U) |
+			 ((RCC_CR & (1U << 24)) != 0U ? (1U << 25) : 0U);
+	} else if (reg == &RCC_CFGR) {
+		if ((RCC_CFGR & 3U) == 3U && !switched_to_pll) {
+			switched_to_pll = true;
+			acr_at_switch = FLASH_ACR;
+			r1mode_at_switch = PWR_CR5 & (1U << 8);
+			hpre_at_switch = (RCC_CFGR >> 4) & 0xFU;
+		}
+		RCC_CFGR = (RCC_CFGR & ~(3U << 2)) | ((RCC_CFGR & 3U) << 2);
+	} else if (reg == &TIM17_SR) {
+		tim17_capture();
+	} else if (reg == &flash_sr_cell && (flash_cr & ((1U << 16) | (1U << 1))) == ((1U << 16) | (1U << 1))) {
+		flash_erase();
+	}
+	return ((*reg & mask) == value) ? SQ_OK : SQ_EAGAIN;
+}
+
+static int setup(void **state)
+{
+	(void)state;
+	memset(regsim_rcc, 0, sizeof(regsim_rcc));
+	memset(regsim_pwr, 0, sizeof(regsim_pwr));
+	memset(regsim_flash, 0, sizeof(regsim_flash));
+	memset(regsim_tim17, 0, sizeof(regsim_tim17));
+	memset(regsim_gpioa, 0, sizeof(regsim_gpioa));
+	memset(regsim_gpiob, 0, sizeof(regsim_gpiob));
+	memset(regsim_flash_mem, 0x00, sizeof(regsim_flash_mem)); /* "old data" */
+	RCC_CFGR = 5U;                 /* reset: SW = SWS = HSI16 */
+	PWR_CR1 = 1U << 9;             /* reset: range 1 */
+	PWR_CR5 = 1U << 8;             /* reset: R1MODE 1 (normal) */
+	FLASH_OPTR = 0xFFEFF8AAU;      /* factory value: DBANK 1, BOR_LEV 000 */
+	flash_cr = FLASH_CR_LOCK;
+	keys_seen = 0U;
+	flash_sr_hw = 0U;
+	flash_sr_cell = 0U;
+	crystal_fitted = true;
+	crystal_hz = 24000000U;
+	capture_num = 0U;
+	switched_to_pll = false;
+	n_erased = 0U;
+	return 0;
+}
+
+static void assert_on_hsi(void)
+{
+	assert_int_equal(RCC_CFGR & 3U, 1U);        /* SW = HSI16 */
+	assert_int_equal(RCC_CR & (1U << 24), 0U);  /* PLL off */
+	assert_int_equal(RCC_CR & (1U << 16), 0U);  /* HSE off */
+	assert_int_equal(RCC_CR & (1U << 19), 0U);  /* CSS off */
+	assert_int_equal(FLASH_ACR & 0xFU, 0U);     /* 0 WS at 16 MHz */
+	assert_true((PWR_CR5 & (1U << 8)) != 0U);   /* normal mode again */
+	assert_int_equal((RCC_CCIPR >> 24) & 3U, 2U); /* FDCAN on PCLK1 */
+	assert_int_equal(chip_core_hz(), 16000000U);
+	assert_int_equal(chip_apb1_hz(), 16000000U);
+	assert_int_equal(chip_fdcan_kernel_hz(), 16000000U);
+}
+
+static void test_24mhz_crystal_runs_pll_at_170(void **state)
+{
+	uint32_t pll;
+	uint32_t m, n, r;
+
+	(void)state;
+	assert_int_equal(chip_clock_init(), SQ_OK);
+	/* 16 captures x 8 edges x 32 HSE periods at 24 MHz = 2730.7 ticks */
+	assert_true(chip_hse_measured_hz() > 23990000U && chip_hse_measured_hz() < 24010000U);
+	pll = RCC_PLLCFGR;
+	m = ((pll >> 4) & 0xFU) + 1U;
+	n = (pll >> 8) & 0x7FU;
+	r = 2U * (((pll >> 25) & 3U) + 1U);
+	assert_int_equal(pll & 3U, 3U);                   /* PLLSRC = HSE */
+	assert_int_equal(24000000U / m, 4000000U);        /* VCO input 4 MHz */
+	assert_int_equal(24000000U / m * n, 340000000U);  /* VCO <= 344 MHz */
+	assert_int_equal(24000000U / m * n / r, 170000000U);
+	assert_true((pll & (1U << 24)) != 0U);            /* PLLREN */
+	assert_int_equal(pll & ((1U << 16) | (1U << 20)), 0U); /* P, Q off */
+	assert_int_equal(RCC_CFGR & 3U, 3U);              /* SW = PLL */
+	assert_int_equal((RCC_CFGR >> 4) & 0xFU, 0U);     /* AHB /1 again */
+	assert_true((RCC_CR & (1U << 19)) != 0U);         /* CSSON */
+	assert_int_equal((RCC_CCIPR >> 24) & 3U, 0U);     /* FDCAN on HSE */
+	assert_int_equal(chip_core_hz(), 170000000U);
+	assert_int_equal(chip_apb1_hz(), 170000000U);
+	assert_int_equal(chip_fdcan_kernel_hz(), 24000000U);
+}
+
+/* RM0440 6.1.5 and 3.3.3: boost mode and 4 wait states in place, and the
+ * AHB at /2, at the moment SW asks for the 170 MHz PLL. */
+static void test_wait_states_and_boost_before_the_rise(void **state)
+{
+	(void)state;
+	assert_int_equal(chip_clock_init(), SQ_OK);
+	assert_true(switched_to_pll);
+	assert_int_equal(acr_at_switch & 0xFU, 4U);
+	assert_int_equal(r1mode_at_switch, 0U);
+	assert_int_equal(hpre_at_switch, 8U); /* /2 */
+}
+
+static void test_wrong_crystal_falls_back_to_hsi(void **state)
+{
+	uint32_t hz;
+
+	(void)state;
+	crystal_hz = 8000000U; /* an 8 MHz part fitted */
+	assert_int_equal(chip_clock_init(), SQ_EAGAIN);
+	hz = chip_hse_measured_hz();
+	assert_true(hz > 7992000U && hz < 8008000U);
+	assert_on_hsi();
+	assert_false(switched_to_pll);
+	assert_int_equal(RCC_APB2ENR & (1U << 18), 0U); /* TIM17 clock off again */
+}
+
+static void test_tolerance_window(void **state)
+{
+	(void)state;
+	crystal_hz = 25200000U; /* +5 % */
+	assert_int_equal(chip_clock_init(), SQ_OK);
+	setup(NULL);
+	crystal_hz = 27000000U; /* +12.5 % */
+	assert_int_equal(chip_clock_init(), SQ_EAGAIN);
+	assert_on_hsi();
+}
+
+static void test_no_crystal(void **state)
+{
+	(void)state;
+	crystal_fitted = false;
+	assert_int_equal(chip_clock_init(), SQ_EAGAIN);
+	assert_int_equal(chip_hse_measured_hz(), 0U);
+	assert_on_hsi();
+}
+
+/* BOR_LEV (FLASH_OPTR 10:8) onto chip_api.h's 0..3, 3 = 2.8 V */
+static void test_bor_level(void **state)
+{
+	static const uint32_t want[8] = { 0U, 0U, 1U, 2U, 3U, 0U, 0U, 0U };
+	uint32_t code;
+
+	(void)state;
+	for (code = 0U; code < 8U; code++) {
+		FLASH_OPTR = (0xFFEFF8AAU & ~(7U << 8)) | (code << 8);
+		assert_int_equal(chip_bor_level(), want[code]);
+	}
+}
+
+/* iwdg.c's decode of RCC_CSR with the G4's bits (RM0440 7.4): no PORRSTF,
+ * BORRSTF is a power-on; IWDG wins over the pin flag it also sets. */
+static bool fault_recorded;
+bool stm32_fault_record_take(stm32_fault_record_t *out)
+{
+	(void)out;
+	return fault_recorded;
+}
+
+static void test_reset_cause_decode(void **state)
+{
+	static const struct {
+		uint32_t csr;
+		hal_reset_reason_t want;
+	} cases[] = {
+		{ (1U << 27) | (1U << 26), HAL_RESET_POWER_ON }, /* BOR + PIN at power-up */
+		{ 1U << 26, HAL_RESET_PIN },
+		{ (1U << 29) | (1U << 26), HAL_RESET_WATCHDOG },
+		{ (1U << 30) | (1U << 26), HAL_RESET_WATCHDOG },
+		{ (1U << 28) | (1U << 26), HAL_RESET_SOFTWARE },
+		{ 1U << 25, HAL_RESET_UNKNOWN }, /* option-byte loader */
+	};
+	size_t i;
+
+	(void)state;
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		RCC_CSR = cases[i].csr;
+		stm32_reset_reason_capture();
+		assert_int_equal(hal_reset_reason(), cases[i].want);
+		assert_true((RCC_CSR & (1U << 23)) != 0U); /* RMVF written */
+	}
+	fault_recorded = true;
+	RCC_CSR = 1U << 28;
+	stm32_reset_reason_capture();
+	assert_int_equal(hal_reset_reason(), HAL_RESET_FAULT);
+	fault_recorded = false;
+}
+
+/* DBANK 1: slot 1 = bank 2 pages 126, 127, the header's page first */
+static void test_erase_dual_bank(void **state)
+{
+	(void)state;
+	assert_int_equal(chip_flash_erase_slot(1U), SQ_OK);
+	assert_int_equal(n_erased, 2U);
+	assert_int_equal(erased[0][0], 1U);
+	assert_int_equal(erased[0][1], 126U);
+	assert_int_equal(erased[1][1], 127U);
+	assert_int_equal(regsim_flash_mem[4096], 0xFFU);
+	assert_int_equal(regsim_flash_mem[8191], 0xFFU);
+	assert_int_equal(regsim_flash_mem[4095], 0x00U); /* slot 0 untouched */
+	assert_int_equal(regsim_keyr_log[(regsim_keyr_n - 2U) & 7U], 0x45670123U);
+	assert_int_equal(regsim_keyr_log[(regsim_keyr_n - 1U) & 7U], 0xCDEF89ABU);
+	assert_int_equal(flash_cr, FLASH_CR_LOCK); /* locked again */
+	assert_int_equal(chip_flash_erase_slot(2U), SQ_EINVAL);
+}
+
+/* DBANK 0: 4 KiB pages from the start of the one bank: slot 0 = page 126 */
+static void test_erase_single_bank(void **state)
+{
+	(void)state;
+	FLASH_OPTR &= ~(1U << 22);
+	assert_int_equal(chip_flash_erase_slot(0U), SQ_OK);
+	assert_int_equal(n_erased, 1U);
+	assert_int_equal(erased[0][0], 0U);
+	assert_int_equal(erased[0][1], 126U);
+	assert_int_equal(regsim_flash_mem[0], 0xFFU);
+	assert_int_equal(regsim_flash_mem[4095], 0xFFU);
+	assert_int_equal(regsim_flash_mem[4096], 0x00U);
+}
+
+/* 64-bit double words, little-endian, the tail padded with 0xFF; the
+ * address must be double-word aligned; locked afterwards. */
+static void test_program_double_words(void **state)
+{
+	static const uint8_t data[11] = { 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11 };
+	static const uint8_t want[16] = { 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11,
+					  0xFF, 0xFF, 0xFF, 0xFF, 0xFF };
+	uint32_t addr = (uint32_t)(uintptr_t)__calib_start;
+
+	(void)state;
+	memset(regsim_flash_mem, 0xFF, sizeof(regsim_flash_mem));
+	assert_int_equal(chip_flash_program(addr + 16U, data, sizeof(data)), SQ_OK);
+	assert_memory_equal(&regsim_flash_mem[16], want, sizeof(want));
+	assert_int_equal(regsim_flash_mem[15], 0xFFU);
+	assert_int_equal(regsim_flash_mem[32], 0xFFU);
+	assert_int_equal(flash_cr, FLASH_CR_LOCK);
+	assert_int_equal(chip_flash_program(addr + 4U, data, 4U), SQ_EINVAL);
+	assert_int_equal(regsim_flash_mem[4], 0xFFU);
+	flash_sr_hw = FLASH_SR_PROGERR; /* left from before: cleared first */
+	flash_sr_cell = flash_sr_hw;
+	assert_int_equal(chip_flash_program(addr, data, 8U), SQ_OK); /* cleared first */
+}
+
+/* FDCAN1 on PA11/PA12, FDCAN2 on PB12/PB13: AF9, alternate mode, pull-up
+ * on RX; no port clock that reads back: pins untouched. */
+static void test_can_pins(void **state)
+{
+	(void)state;
+	chip_can_pins_init(0U);
+	assert_true((RCC_APB1ENR1 & (1U << 25)) != 0U);
+	assert_int_equal((GPIO_AFRH(GPIOA_BASE) >> 12) & 0xFU, 9U); /* PA11 */
+	assert_int_equal((GPIO_AFRH(GPIOA_BASE) >> 16) & 0xFU, 9U); /* PA12 */
+	assert_int_equal((GPIO_MODER(GPIOA_BASE) >> 22) & 3U, 2U);
+	assert_int_equal((GPIO_MODER(GPIOA_BASE) >> 24) & 3U, 2U);
+	assert_int_equal((GPIO_PUPDR(GPIOA_BASE) >> 22) & 3U, 1U);
+	assert_int_equal((GPIO_PUPDR(GPIOA_BASE) >> 24) & 3U, 0U);
+	chip_can_pins_init(1U);
+	assert_int_equal((GPIO_AFRH(GPIOB_BASE) >> 16) & 0xFU, 9U); /* PB12 */
+	assert_int_equal((GPIO_AFRH(GPIOB_BASE) >> 20) & 0xFU, 9U); /* PB13 */
+	assert_int_equal((GPIO_MODER(GPIOB_BASE) >> 24) & 3U, 2U);
+	setup(NULL);
+	chip_can_pins_init(2U); /* no such bus: nothing */
+	assert_int_equal(RCC_AHB2ENR, 0U);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test_setup(test_24mhz_crystal_runs_pll_at_170, setup),
+		cmocka_unit_test_setup(test_wait_states_and_boost_before_the_rise, setup),
+		cmocka_unit_test_setup(test_wrong_crystal_falls_back_to_hsi, setup),
+		cmocka_unit_test_setup(test_tolerance_window, setup),
+		cmocka_unit_test_setup(test_no_crystal, setup),
+		cmocka_unit_test_setup(test_bor_level, setup),
+		cmocka_unit_test_setup(test_reset_cause_decode, setup),
+		cmocka_unit_test_setup(test_erase_dual_bank, setup),
+		cmocka_unit_test_setup(test_erase_single_bank, setup),
+		cmocka_unit_test_setup(test_program_double_words, setup),
+		cmocka_unit_test_setup(test_can_pins, setup),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
