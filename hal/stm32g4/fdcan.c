@@ -381,9 +381,12 @@ static void configure(uint8_t bus, const fdcan_timing_t *t, uint32_t cccr_mode, 
 	 * (protocol exception handling on); NISO = 0 (ISO 11898-1:2015 CRC). */
 	reg_wr(bus, FDCAN_CCCR, FDCAN_CCCR_INIT | FDCAN_CCCR_CCE | FDCAN_CCCR_FDOE | FDCAN_CCCR_BRSE |
 					cccr_mode);
-	/* TEST is writable only once CCCR.TEST is set; LBCK with MON is the
-	 * internal loopback (RM0440 section 44.3, "Test modes"). */
-	reg_wr(bus, FDCAN_TEST, ((cccr_mode & FDCAN_CCCR_TEST) != 0U) ? FDCAN_TEST_LBCK : 0U);
+	/* TEST is writable only once CCCR.TEST is set (and reset while it is
+	 * clear); LBCK with MON is the internal loopback (RM0440 section 44.3,
+	 * test modes). */
+	if ((cccr_mode & FDCAN_CCCR_TEST) != 0U) {
+		reg_wr(bus, FDCAN_TEST, FDCAN_TEST_LBCK);
+	}
 	reg_wr(bus, FDCAN_NBTP, t->nbtp);
 	reg_wr(bus, FDCAN_DBTP, t->dbtp);
 	reg_wr(bus, FDCAN_TDCR, t->tdcr);
@@ -458,6 +461,9 @@ int can_ctrl_start(uint8_t bus, uint32_t bitrate_bps)
 		STM32_TEST_EVENT("can_join_timeout", bus);
 		return SQ_EAGAIN;
 	}
+	primask = cm_irq_save();
+	(void)hal_can_state_change(&can_track[bus], state_of(bus, reg_rd(bus, FDCAN_PSR)));
+	cm_irq_restore(primask);
 	return SQ_OK;
 }
 
