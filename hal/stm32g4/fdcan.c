@@ -6,10 +6,10 @@
  * up to 64 bytes with FDF/BRS/ESI, and the board's controller-neutral calls
  * (can_ctrl_start, can_ctrl_selftest_loopback, can_ctrl_rx_pending).
  *
- *   Message RAM: the G4's fixed layout (fdcan_regs.h): 14 of the 28
- *       standard and all 8 extended filter elements, RX FIFO 0 (3 elements
- *       of 64 data bytes), the TX FIFO (3 elements); FIFO 1 and the TX
- *       event FIFO unused.
+ *   Message RAM: the G4's fixed layout (RM0440 section 44.3.3,
+ *       fdcan_regs.h): 14 of the 28 standard and all 8 extended filter
+ *       elements, RX FIFO 0 (3 elements of 64 data bytes), the TX FIFO
+ *       (3 elements); FIFO 1 and the TX event FIFO unused.
  *   RX: every interrupt on line 0; RX FIFO 0 new message -> lock-free
  *       single-producer (ISR) / single-consumer (hal_can_receive) ring per
  *       bus; message lost (IR.RF0L, FIFO 0 in blocking mode) or a full ring
@@ -23,7 +23,7 @@
  *       from ECR, read live. Bus-off: the controller sets CCCR.INIT itself
  *       and, unlike bxCAN, never leaves bus-off alone: the interrupt clears
  *       INIT, and the controller rejoins after 129 x 11 recessive bits
- *       (RM0440 section 44.3, "Bus-off recovery").
+ *       (RM0440 section 44.4, FDCAN_CCCR.INIT and FDCAN_PSR.BO).
  *   Protocol exception (PSR.PXE: a frame with the res bit recessive, e.g. a
  *       format newer than CAN FD): CCCR.PXHD = 0 keeps ISO 11898-1:2015's
  *       handling (the controller waits for bus idle instead of sending an
@@ -324,8 +324,8 @@ static void irq_enable(uint8_t bus, bool on)
 }
 
 /* Stop the bus (its interrupt off) and enter initialisation with the
- * configuration unlocked (CCCR.INIT, then CCE, RM0440 section 44.3,
- * "Software initialization"): INIT is read back before CCE is set, since
+ * configuration unlocked (CCCR.INIT, then CCE; RM0440 section 44.4,
+ * FDCAN_CCCR): INIT is read back before CCE is set, since
  * the write crosses into the CAN clock domain. Setting CCE resets the TX
  * FIFO's requests (TXBRP): the frames still queued are given up, counted.
  * SQ_OK or SQ_EAGAIN (fault raised). */
@@ -381,9 +381,12 @@ static void configure(uint8_t bus, const fdcan_timing_t *t, uint32_t cccr_mode, 
 	 * (protocol exception handling on); NISO = 0 (ISO 11898-1:2015 CRC). */
 	reg_wr(bus, FDCAN_CCCR, FDCAN_CCCR_INIT | FDCAN_CCCR_CCE | FDCAN_CCCR_FDOE | FDCAN_CCCR_BRSE |
 					cccr_mode);
-	/* TEST is writable only once CCCR.TEST is set; LBCK with MON is the
-	 * internal loopback (RM0440 section 44.3, "Test modes"). */
-	reg_wr(bus, FDCAN_TEST, ((cccr_mode & FDCAN_CCCR_TEST) != 0U) ? FDCAN_TEST_LBCK : 0U);
+	/* TEST is writable only once CCCR.TEST is set (and reset while it is
+	 * clear); LBCK with MON is the internal loopback (RM0440 section 44.4,
+	 * FDCAN_TEST.LBCK). */
+	if ((cccr_mode & FDCAN_CCCR_TEST) != 0U) {
+		reg_wr(bus, FDCAN_TEST, FDCAN_TEST_LBCK);
+	}
 	reg_wr(bus, FDCAN_NBTP, t->nbtp);
 	reg_wr(bus, FDCAN_DBTP, t->dbtp);
 	reg_wr(bus, FDCAN_TDCR, t->tdcr);
@@ -458,6 +461,9 @@ int can_ctrl_start(uint8_t bus, uint32_t bitrate_bps)
 		STM32_TEST_EVENT("can_join_timeout", bus);
 		return SQ_EAGAIN;
 	}
+	primask = cm_irq_save();
+	(void)hal_can_state_change(&can_track[bus], state_of(bus, reg_rd(bus, FDCAN_PSR)));
+	cm_irq_restore(primask);
 	return SQ_OK;
 }
 
@@ -769,7 +775,7 @@ static void fdcan_irq(uint8_t bus)
 		}
 		(void)hal_can_state_change(&can_track[bus], state_of(bus, psr));
 		if (((psr & FDCAN_PSR_BO) != 0U) && ((reg_rd(bus, FDCAN_CCCR) & FDCAN_CCCR_INIT) != 0U)) {
-			/* bus-off recovery (RM0440 section 44.3): clearing INIT
+			/* bus-off recovery (RM0440 section 44.4, FDCAN_CCCR.INIT): clearing INIT
 			 * starts it; the controller rejoins after 129 x 11
 			 * recessive bits, and IR.BO tells */
 			reg_wr(bus, FDCAN_CCCR, reg_rd(bus, FDCAN_CCCR) & ~FDCAN_CCCR_INIT);

@@ -2,7 +2,7 @@
 /*
  * FDCAN registers and message RAM of the STM32G474 (RM0440 chapter "FD
  * controller area network (FDCAN)": section 44.4 "FDCAN registers",
- * section 44.3, "Message RAM"). Only what the driver uses; names as in the
+ * section 44.3.3, "Message RAM"). Only what the driver uses; names as in the
  * manual. The host simulation (tests/hal/stm32g4/fdcan_sim.c) and the
  * driver share these numbers; the simulation interprets them on its own.
  */
@@ -61,7 +61,7 @@
 #define FDCAN_TXBTIE 0x0DCU
 #define FDCAN_REG_END 0x100U /* CKDIV (FDCAN1 only) is left at reset: /1 */
 
-/* CCCR (RM0440 section 44.4) */
+/* FDCAN_CCCR (RM0440 section 44.4) */
 #define FDCAN_CCCR_INIT (1U << 0)
 #define FDCAN_CCCR_CCE  (1U << 1)
 #define FDCAN_CCCR_ASM  (1U << 2)
@@ -77,7 +77,7 @@
 #define FDCAN_CCCR_TXP  (1U << 14)
 #define FDCAN_CCCR_NISO (1U << 15)
 
-/* TEST (RM0440 section 44.4): writable with CCCR.TEST only */
+/* FDCAN_TEST (RM0440 section 44.4): writable with CCCR.TEST only */
 #define FDCAN_TEST_LBCK (1U << 4)
 
 /* NBTP and DBTP (RM0440 section 44.4): each field holds the
@@ -91,18 +91,18 @@
 #define FDCAN_DBTP_DTSEG1_SHIFT 8U
 #define FDCAN_DBTP_DBRP_SHIFT 16U
 #define FDCAN_DBTP_TDC (1U << 23)
-/* TDCR (RM0440 section 44.4), in minimum time quanta (kernel clocks) */
+/* FDCAN_TDCR (RM0440 section 44.4), in minimum time quanta (kernel clocks) */
 #define FDCAN_TDCR_TDCF_SHIFT 0U
 #define FDCAN_TDCR_TDCO_SHIFT 8U
 #define FDCAN_TDCR_MAX 127U
 
-/* ECR (RM0440 section 44.4) */
+/* FDCAN_ECR (RM0440 section 44.4) */
 #define FDCAN_ECR_TEC_MSK 0xFFU
 #define FDCAN_ECR_REC_SHIFT 8U
 #define FDCAN_ECR_REC_MSK (0x7FU << 8)
 #define FDCAN_ECR_RP (1U << 15)
 
-/* PSR (RM0440 section 44.4): reading it sets LEC and DLEC to 7 ("no change")
+/* FDCAN_PSR (RM0440 section 44.4): reading it sets LEC and DLEC to 7 ("no change")
  * and clears PXE. */
 #define FDCAN_PSR_LEC_MSK 7U
 #define FDCAN_PSR_LEC_NONE 0U
@@ -130,10 +130,10 @@
 #define FDCAN_IR_PEA  (1U << 21)
 #define FDCAN_IR_PED  (1U << 22)
 #define FDCAN_IR_ALL  0x00FFFFFFU
-/* ILE (RM0440 section 44.4) */
+/* FDCAN_ILE (RM0440 section 44.4) */
 #define FDCAN_ILE_EINT0 (1U << 0)
 
-/* RXGFC (RM0440 section 44.4) */
+/* FDCAN_RXGFC (RM0440 section 44.4) */
 #define FDCAN_RXGFC_RRFE (1U << 0)
 #define FDCAN_RXGFC_RRFS (1U << 1)
 #define FDCAN_RXGFC_ANFE_SHIFT 2U
@@ -151,9 +151,9 @@
 #define FDCAN_RXF0S_F0F (1U << 24)
 #define FDCAN_RXF0S_RF0L (1U << 25)
 
-/* TXBC (RM0440 section 44.4): TFQM 0 = Tx FIFO (sent in the order put) */
+/* FDCAN_TXBC (RM0440 section 44.4): TFQM 0 = Tx FIFO (sent in the order put) */
 #define FDCAN_TXBC_TFQM (1U << 24)
-/* TXFQS (RM0440 section 44.4) */
+/* FDCAN_TXFQS (RM0440 section 44.4) */
 #define FDCAN_TXFQS_TFFL_MSK 7U
 #define FDCAN_TXFQS_TFQPI_SHIFT 16U
 #define FDCAN_TXFQS_TFQPI_MSK (3U << 16)
@@ -161,7 +161,7 @@
 #define FDCAN_TXB_ALL 7U
 
 /*
- * The fixed message RAM of one instance (RM0440 section 44.3, "Message
+ * The fixed message RAM of one instance (RM0440 section 44.3.3, "Message
  * RAM", its figure of the message RAM configuration): 212 words from SRAMCAN_BASE + 0x350 x
  * instance, byte offsets:
  *   0x000 28 standard filter elements (1 word)
@@ -186,7 +186,7 @@
 #define SRAMCAN_FLE_BYTES 8U
 #define SRAMCAN_INSTANCE(n) (SRAMCAN_BASE + (uintptr_t)SRAMCAN_SIZE * (uintptr_t)(n))
 
-/* RX/TX element header (RM0440 section 44.3, "Rx FIFO element", "Tx
+/* RX/TX element header (RM0440 section 44.3.3, "Rx FIFO element", "Tx
  * buffer element"): word 0 ESI, XTD, RTR, ID (standard ids in bits 28:18); word 1
  * (RX) ANMF, FIDX, FDF, BRS, DLC, RXTS; (TX) MM, EFC, FDF, BRS, DLC. */
 #define FDCAN_E0_ESI (1U << 31)
@@ -199,7 +199,7 @@
 #define FDCAN_E1_DLC_SHIFT 16U
 #define FDCAN_E1_DLC_MSK (0xFU << 16)
 
-/* Standard filter element (RM0440 section 44.3, "Standard message ID
+/* Standard filter element (RM0440 section 44.3.3, "Standard message ID
  * filter element"): SFT 31:30, SFEC 29:27, SFID1 26:16, SFID2 10:0. */
 #define FDCAN_SFT_CLASSIC (2U << 30)  /* SFID1 = filter, SFID2 = mask */
 #define FDCAN_SFEC_FIFO0 (1U << 27)   /* store in RX FIFO 0 on a match */

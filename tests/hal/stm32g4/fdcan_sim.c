@@ -17,7 +17,7 @@
  *   - TX FIFO: TXBAR of the put index queues that buffer (other bits:
  *     counted misuse); sent oldest first, TXBTO and IR.TC (with TXBTIE),
  *     IR.TFE once empty;
- *   - filters exactly as the element descriptions of section 44.3: range,
+ *   - filters exactly as the element descriptions of section 44.3.3: range,
  *     dual, classic, disabled; store FIFO 0/1, reject, priority; the first
  *     matching enabled element decides, else RXGFC.ANFS/ANFE; RRFS/RRFE
  *     reject remote frames; XIDAM ANDed into extended ids first;
@@ -232,7 +232,7 @@ static hal_can_frame_t frame_of_txb(uint32_t c, uint32_t b)
 	return f;
 }
 
-/* ---- filters (section 44.3, filter element descriptions) ---------------------------- */
+/* ---- filters (RM0440 section 44.3.3, filter element descriptions) ---------------------------- */
 
 /* 0: FIFO 0, 1: FIFO 1, 2: reject */
 static uint32_t std_filter(uint32_t c, uint32_t id)
