@@ -30,7 +30,7 @@ build/test/tests/hal/stm32g4/conf_fdcan: tests/hal/conformance.c tests/hal/stm32
 build/test/tests/hal/stm32g4/test_fdcan_timing: tests/hal/stm32g4/test_fdcan_timing.c \
 		hal/stm32g4/fdcan_timing.c hal/stm32g4/fdcan.h
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -O1 -g $(SAN) $(FW_INC) -Ihal/stm32g4 -o $@ tests/hal/stm32g4/test_fdcan_timing.c \
+	$(CC) $(WARN) -O1 -g $(SAN) $(FW_INC) -Ihal/stm32g4 -Ihal/stm32f4 -o $@ tests/hal/stm32g4/test_fdcan_timing.c \
 		hal/stm32g4/fdcan_timing.c -lcmocka
 
 TEST_PROGS += build/test/tests/hal/stm32g4/test_fdcan build/test/tests/hal/stm32g4/conf_fdcan \

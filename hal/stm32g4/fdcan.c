@@ -152,11 +152,12 @@ static int reg_wait(uint8_t bus, uint32_t off, uint32_t mask, uint32_t value, bo
 	}
 }
 
-/* The FDCAN kernel clock: the chip selects PCLK1 (RCC_CCIPR.FDCANSEL),
- * so it runs at APB1's rate; FDCAN_CKDIV stays at /1. */
+/* The FDCAN kernel clock as the chip selected it (RCC_CCIPR.FDCANSEL: the
+ * crystal on the G474 board, PCLK1 after a fall-back to HSI16);
+ * FDCAN_CKDIV stays at /1. */
 static uint32_t kernel_hz(void)
 {
-	return chip_apb1_hz();
+	return chip_fdcan_kernel_hz();
 }
 
 /* ---- message RAM elements --------------------------------------------------- */
@@ -677,6 +678,11 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 	}
 	if (n_ext > SRAMCAN_FLE_NBR) {
 		return SQ_ENOTSUP; /* 8 extended filter elements: nothing changed */
+	}
+	if (!can_bus[bus].started) {
+		/* a controller that never acknowledged INIT (no kernel clock, or
+		 * QEMU, which maps no FDCAN message RAM): its RAM is not touched */
+		return SQ_ENETDOWN;
 	}
 	filters_write(bus, filters, count);
 	return SQ_OK;

@@ -30,27 +30,12 @@ typedef struct {
 int fdcan_bit_timing(uint32_t kernel_hz, uint32_t nominal_bps, uint32_t data_bps,
 		     fdcan_timing_t *t);
 
-/* The board's controller-neutral calls (the same three as the bxCAN
- * driver's), implemented here for FDCAN. */
-
-/* Start `bus` at bitrate_bps (nominal; the data phase at
- * FDCAN_DEFAULT_DATA_BITRATE) in its current mode (NORMAL after reset),
- * accepting every frame until hal_can_set_rx_filter(). SQ_OK; SQ_EINVAL
- * (rate not exact: nothing touched); SQ_EAGAIN (the controller did not
- * acknowledge INIT or did not join the bus: HAL_FAULT_CAN_INIT raised);
- * SQ_ENODEV. */
-int can_ctrl_start(uint8_t bus, uint32_t bitrate_bps);
-
-/* Bring-up self-test, before the bus is joined: internal loopback
- * (CCCR.TEST, TEST.LBCK with CCCR.MON: nothing reaches the pin, not even
- * an ACK), one FD frame with BRS sent to itself. Leaves the controller in
- * initialisation mode; can_ctrl_start() follows. SQ_OK (the frame came back
- * unchanged); SQ_EIO (no frame or a different one); SQ_EAGAIN (controller
- * absent or without clock); SQ_ENODEV. */
-int can_ctrl_selftest_loopback(uint8_t bus);
-
-/* A received frame waits in some bus's ring (hal_idle_until does not sleep). */
-bool can_ctrl_rx_pending(void);
+/* The board's controller-neutral calls (can_ctrl.h), implemented in
+ * fdcan.c: the data phase of BRS frames runs at FDCAN_DEFAULT_DATA_BITRATE;
+ * the self-test loopback is the internal one (CCCR.TEST, TEST.LBCK with
+ * CCCR.MON: nothing reaches the pin, not even an ACK) with one FD frame with
+ * BRS, and leaves the controller in initialisation mode. */
+#include "can_ctrl.h"
 
 void FDCAN1_IT0_IRQHandler(void);
 void FDCAN2_IT0_IRQHandler(void);

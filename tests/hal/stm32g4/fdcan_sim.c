@@ -804,7 +804,7 @@ void stm32_fault_raise(uint32_t hal_fault_bits)
 	faults |= hal_fault_bits;
 }
 
-uint32_t chip_apb1_hz(void)
+uint32_t chip_fdcan_kernel_hz(void)
 {
 	return kernel_clock_hz;
 }

@@ -30,7 +30,7 @@
 /* Everything back to reset (registers, RAM, wires, clock, NVIC, counters)
  * and the driver's own state (fdcan_sim_driver_reset). */
 void sim_reset(void);
-/* The FDCAN kernel clock chip_apb1_hz() reports (170 MHz after reset). */
+/* The FDCAN kernel clock chip_fdcan_kernel_hz() reports (170 MHz after reset). */
 void sim_set_kernel_hz(uint32_t hz);
 
 /* Both instances on one wire: what one sends the other receives (and

@@ -11,6 +11,8 @@
 
 #include "cortex_m.h"
 #include "chip_api.h"
+/* the FDCAN kernel clock (the real chip.h declares it too): fdcan_sim.c */
+uint32_t chip_fdcan_kernel_hz(void);
 
 #define CHIP_NAME "STM32G474 (simulated FDCAN)"
 #define CHIP_IRQ_FDCAN1_IT0 21U
