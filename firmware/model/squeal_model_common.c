@@ -34,20 +34,16 @@ void squeal_model_default_params(squeal_params_t *params)
 
 const char *squeal_model_state_name(squeal_state_t state)
 {
-	switch (state) {
-	case SQUEAL_STATE_STABLE:
-		return "stable";
-	case SQUEAL_STATE_BISTABLE:
-		return "bistable";
-	case SQUEAL_STATE_UNSTABLE:
-		return "unstable";
-	case SQUEAL_STATE_NOT_SLIDING:
-		return "not_sliding";
-	case SQUEAL_STATE_INVALID:
-		return "invalid";
-	default:
-		return "?";
+	/* the classes 0 .. SQUEAL_STATE_NAMED - 1, in their values' order:
+	 * the one spelling of these names (the bus's are the same) */
+	static const char *const class_names[SQUEAL_STATE_NAMED] = {
+		"stable", "bistable", "unstable", "not_sliding"
+	};
+
+	if ((unsigned int)state < SQUEAL_STATE_NAMED) {
+		return class_names[state];
 	}
+	return (state == SQUEAL_STATE_INVALID) ? "invalid" : "?";
 }
 
 void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state)

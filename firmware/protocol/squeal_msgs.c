@@ -8,6 +8,8 @@
  */
 #include "squeal_msgs.h"
 
+#include "squeal_model.h"
+
 #include "sq_contract.h"
 
 #include <limits.h>
@@ -90,7 +92,9 @@ const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT] = {
 	       (int32_t)MSG_PAD_FORCE_N_MAX),
 
 	E2E_SIGS(MSG_SQUEAL_STATUS_ID, "SquealStatus"),
-	UNS(MSG_SQUEAL_STATUS_ID, "SquealState", "", 12U, 4U, 1, 1, 15),
+	/* the highest state is FAULT (what the value table allows: pack) */
+	UNS(MSG_SQUEAL_STATUS_ID, "SquealState", "", 12U, 4U, 1, 1,
+	    (int32_t)MSG_SQUEAL_STATE_FAULT),
 	UNS(MSG_SQUEAL_STATUS_ID, "WarningLevel", "", 16U, 4U, 1, 1, 3),
 	UNS_NA(MSG_SQUEAL_STATUS_ID, "BasinRatio", "", 24U, 16U, 1, 10000,
 	       (int32_t)MSG_BASIN_RATIO_MAX),
@@ -361,8 +365,7 @@ int msg_pad_force_unpack(const uint8_t *data, uint8_t dlc, msg_pad_force_t *msg)
 /* SquealState has a value table: only its entries may be sent. */
 static bool squeal_state_valid(uint8_t state)
 {
-	return state <= MSG_SQUEAL_STATE_NOT_SLIDING ||
-	       state == MSG_SQUEAL_STATE_FAULT;
+	return (state < SQUEAL_STATE_NAMED) || (state == MSG_SQUEAL_STATE_FAULT);
 }
 
 int msg_squeal_status_pack(const msg_squeal_status_t *msg, uint8_t data[8],
@@ -613,14 +616,11 @@ int msg_pad_force_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
 
 const char *msg_squeal_state_name(uint8_t state)
 {
-	/* the model's states 0..3, in SquealState's order, then FAULT (15) */
-	static const char *const model_states[4] = {
-		"stable", "bistable", "unstable", "not_sliding"
-	};
 	const char *name;
 
-	if (state <= MSG_SQUEAL_STATE_NOT_SLIDING) {
-		name = model_states[state];
+	if (state < SQUEAL_STATE_NAMED) {
+		/* the model's classes: their names are the model's */
+		name = squeal_model_state_name((squeal_state_t)state);
 	} else if (state == MSG_SQUEAL_STATE_FAULT) {
 		name = "fault";
 	} else {
@@ -631,7 +631,7 @@ const char *msg_squeal_state_name(uint8_t state)
 
 uint32_t msg_squeal_state_slot(uint32_t state)
 {
-	return (state <= MSG_SQUEAL_STATE_NOT_SLIDING) ? state : MSG_SQUEAL_STATE_SLOT_FAULT;
+	return (state < SQUEAL_STATE_NAMED) ? state : MSG_SQUEAL_STATE_SLOT_FAULT;
 }
 
 const msg_desc_t *msg_desc_find(uint16_t id)

@@ -33,6 +33,7 @@
 #include <stdint.h>
 
 #include "e2e_p01.h"
+#include "squeal_state.h"
 
 #define MSG_MAX_DLC 8U
 
@@ -69,12 +70,13 @@ typedef struct {
 #define MSG_SQUEAL_STATUS_DLC       8U
 #define MSG_SQUEAL_STATUS_PERIOD_MS 10U
 #define MSG_SQUEAL_STATUS_DATA_ID   0x3A01U
-/* SquealState values (VAL_ table; equal to squeal_state_t's) */
-#define MSG_SQUEAL_STATE_STABLE      0U
-#define MSG_SQUEAL_STATE_BISTABLE    1U
-#define MSG_SQUEAL_STATE_UNSTABLE    2U
-#define MSG_SQUEAL_STATE_NOT_SLIDING 3U
-#define MSG_SQUEAL_STATE_FAULT       15U
+/* SquealState values (VAL_ table): the model's squeal_state_t, whose
+ * INVALID is the bus's FAULT (squeal_state.h defines them once) */
+#define MSG_SQUEAL_STATE_STABLE      ((unsigned int)SQUEAL_STATE_STABLE)
+#define MSG_SQUEAL_STATE_BISTABLE    ((unsigned int)SQUEAL_STATE_BISTABLE)
+#define MSG_SQUEAL_STATE_UNSTABLE    ((unsigned int)SQUEAL_STATE_UNSTABLE)
+#define MSG_SQUEAL_STATE_NOT_SLIDING ((unsigned int)SQUEAL_STATE_NOT_SLIDING)
+#define MSG_SQUEAL_STATE_FAULT       ((unsigned int)SQUEAL_STATE_INVALID)
 /* WarningLevel values */
 #define MSG_WARNING_LEVEL_NONE       0U
 #define MSG_WARNING_LEVEL_ADVISORY   1U
@@ -309,7 +311,7 @@ const char *msg_squeal_state_name(uint8_t state);
  * a receiver treats as a fault) is slot MSG_SQUEAL_STATE_SLOT_FAULT. Host
  * tools that count time or changes per state index their tables with it.
  */
-#define MSG_SQUEAL_STATE_SLOTS      5U
+#define MSG_SQUEAL_STATE_SLOTS      (SQUEAL_STATE_NAMED + 1U)
 #define MSG_SQUEAL_STATE_SLOT_FAULT (MSG_SQUEAL_STATE_SLOTS - 1U)
 uint32_t msg_squeal_state_slot(uint32_t state);
 
