@@ -25,15 +25,6 @@
 
 #include "sq_contract.h"
 
-/* Domain limits (see squeal_model.h). */
-#define MASS_MAX_KG 10000.0f
-#define OMEGA0_MAX_RADPS 500000.0f
-#define DAMPING_MAX 1.0f
-#define MU_MAX 1.5f
-#define SLOPE_MAX_SPM 20.0f
-#define V0_MAX_MPS 100.0f
-#define FORCE_MAX_N 500000.0f
-
 /* 0.5 ln(2 / pi): the constant of H(s) = G(s) - s for large s */
 #define HALF_LN_2_OVER_PI (-0.225791352644727f)
 /* Below this s, G is summed from its power series; above, the asymptotic
@@ -83,35 +74,6 @@ static const float series_ratio_ds[SERIES_MAX_TERMS] = {
 	2.973535447e-04f, 2.873563208e-04f, 2.778549679e-04f, 2.688172099e-04f,
 	2.602133609e-04f, 2.520161215e-04f, 2.442002587e-04f, 2.367424313e-04f,
 };
-
-static bool in_range(float x, float lo, float hi)
-{
-	return sq_isfinitef(x) && (x >= lo) && (x <= hi);
-}
-
-int squeal_model_params_check(const squeal_params_t *params)
-{
-	HAL_REQUIRE(params != NULL);
-	if (!in_range(params->mass_kg, FLT_TRUE_MIN, MASS_MAX_KG) ||
-	    !in_range(params->omega0_radps, FLT_TRUE_MIN, OMEGA0_MAX_RADPS) ||
-	    !in_range(params->damping, FLT_TRUE_MIN, DAMPING_MAX) ||
-	    !in_range(params->mu_inf, 0.0f, MU_MAX) ||
-	    !in_range(params->delta_mu, -MU_MAX, MU_MAX) ||
-	    !in_range(params->slope_spm, 0.0f, SLOPE_MAX_SPM) ||
-	    !(params->mu_inf + params->delta_mu >= 0.0f)) {
-		return SQ_EINVAL;
-	}
-	return SQ_OK;
-}
-
-int squeal_model_point_check(const squeal_point_t *point)
-{
-	if (!in_range(point->v0_mps, 0.0f, V0_MAX_MPS) ||
-	    !in_range(point->force_n, 0.0f, FORCE_MAX_N)) {
-		return SQ_EINVAL;
-	}
-	return SQ_OK;
-}
 
 /*
  * G(x) = ln(2 I1(x)/x) and its derivative.
@@ -276,24 +238,22 @@ static void log_terms_float(const squeal_params_t *p, const squeal_point_t *poin
 static inline void stable_border_float(squeal_log_terms_t *t, squeal_criterion_t criterion)
 {
 	const float s = t->s;
+	float rhs;
+	float dh;
 
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
 		/* ln 2Q >= ln(1 + s^2/8) */
-		t->stable_lhs = t->c2 + s;
-		t->stable_rhs = sq_log1pf(0.125f * s * s);
-		t->stable_dh = 0.25f * s / (1.0f + 0.125f * s * s) - 1.0f;
+		rhs = sq_log1pf(0.125f * s * s);
+		dh = 0.25f * s / (1.0f + 0.125f * s * s) - 1.0f;
 	} else {
 		float g;
 		float dg;
-		float h;
 
 		/* c2 >= H(s) */
-		squeal_model_bessel_g(s, &g, &dg, &h);
-		t->stable_lhs = t->c2;
-		t->stable_rhs = h;
-		t->stable_dh = dg - 1.0f;
+		squeal_model_bessel_g(s, &g, &dg, &rhs);
+		dh = dg - 1.0f;
 	}
-	t->has_border = true;
+	squeal_model_border_set(t, criterion, rhs, dh);
 }
 
 void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
@@ -341,20 +301,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
 	fill_cycle(p, point, lq2, criterion, out);
 
-	/* The class is decided by the border comparison above; the basin ratio
-	 * comes from the solved cycle. Within the solver's last bit they could
-	 * disagree: keep rho < 1 exactly for bistable, >= 1 for stable. */
-	if ((out->flags & SQUEAL_HAS_BASIN) != 0U) {
-		if (!stable && !(out->basin_ratio < 1.0f)) {
-			out->basin_ratio = 1.0f - FLT_EPSILON / 2.0f;
-		} else if (!stable && !(out->basin_ratio > 0.0f)) {
-			out->basin_ratio = FLT_TRUE_MIN;
-		} else if (stable && (out->basin_ratio < 1.0f)) {
-			out->basin_ratio = 1.0f;
-		} else {
-			/* rho already on the side of its class */
-		}
-	}
+	squeal_model_basin_side(out, stable);
 }
 
 #endif /* !SQUEAL_NUMERIC_FIXED */
