@@ -239,13 +239,6 @@ static inline void stable_border_fixed(squeal_log_terms_t *t, squeal_criterion_t
 	squeal_model_border_set(t, criterion, rhs, dh);
 }
 
-void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
-{
-	if (!t->has_border) {
-		stable_border_fixed(t, criterion);
-	}
-}
-
 void squeal_model_classify_sliding(const squeal_params_t *p,
 				   const squeal_point_t *point,
 				   squeal_criterion_t criterion,
@@ -314,6 +307,15 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 	out->flags |= sat ? SQUEAL_SAT_BASIN : 0U;
 
 	squeal_model_basin_side(out, stable);
+}
+
+/* The border an unstable point's classification stopped before, for the
+ * uncertainty propagation (squeal_model_internal.h). */
+void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+{
+	if (!t->has_border) {
+		stable_border_fixed(t, criterion);
+	}
 }
 
 #endif /* SQUEAL_NUMERIC_FIXED */

@@ -13,6 +13,7 @@
 #include "sq_contract.h"
 
 #include <limits.h>
+#include <stddef.h>
 
 #include "sq_status.h"
 
@@ -186,32 +187,158 @@ const msg_desc_t msg_table[MSG_COUNT] = {
 	  N_D2 },
 };
 
+/* ---- where each signal's raw value lives in its message's struct -------- */
+
+/* Indices into msg_table, in its order. */
+enum { IX_DISC_SPEED, IX_PAD_FORCE, IX_SQUEAL_STATUS, IX_SQUEAL_DETAIL, IX_SQUEAL_DIAG,
+       IX_SQUEAL_DETAIL2 };
+
+typedef enum {
+	FIELD_U8,
+	FIELD_U16,
+	FIELD_S16,
+	FIELD_U32, /* a value beyond INT32_MAX is out of every range */
+	FIELD_BIT  /* bit `bit` of a uint16_t (SquealDiag's fault_bits) */
+} field_kind_t;
+
+typedef struct {
+	uint8_t offset; /* of the field in its message's struct */
+	uint8_t kind;   /* field_kind_t */
+	uint8_t bit;    /* FIELD_BIT */
+} sig_field_t;
+
+#define FLD(type, field, kind) { (uint8_t)offsetof(type, field), (uint8_t)(kind), 0U }
+#define FLD_E2E(type) FLD(type, crc, FIELD_U8), FLD(type, counter, FIELD_U8)
+#define FLD_FAULT(bit) { (uint8_t)offsetof(msg_squeal_diag_t, fault_bits), (uint8_t)FIELD_BIT, (bit) }
+
+/* In msg_sig_table's order: the one map from signals to struct fields. */
+static const sig_field_t sig_field[] = {
+	FLD_E2E(msg_disc_speed_t),
+	FLD(msg_disc_speed_t, disc_speed_radps, FIELD_U16),
+
+	FLD_E2E(msg_pad_force_t),
+	FLD(msg_pad_force_t, pad_force_n, FIELD_U16),
+
+	FLD_E2E(msg_squeal_status_t),
+	FLD(msg_squeal_status_t, squeal_state, FIELD_U8),
+	FLD(msg_squeal_status_t, warning_level, FIELD_U8),
+	FLD(msg_squeal_status_t, basin_ratio, FIELD_U16),
+	FLD(msg_squeal_status_t, hopf_margin_mps, FIELD_S16),
+	FLD(msg_squeal_status_t, border_margin_sigma, FIELD_U8),
+
+	FLD_E2E(msg_squeal_detail_t),
+	FLD(msg_squeal_detail_t, v0_mps, FIELD_U16),
+	FLD(msg_squeal_detail_t, hopf_speed_mps, FIELD_U16),
+	FLD(msg_squeal_detail_t, trigger_velocity_mps, FIELD_U16),
+	FLD(msg_squeal_detail_t, vehicle_speed_border_kph, FIELD_U16),
+
+	FLD_E2E(msg_squeal_diag_t),
+	FLD(msg_squeal_diag_t, page, FIELD_U8),
+	FLD_FAULT(0U), FLD_FAULT(1U), FLD_FAULT(2U), FLD_FAULT(3U),
+	FLD_FAULT(4U), FLD_FAULT(5U), FLD_FAULT(6U), FLD_FAULT(7U),
+	FLD_FAULT(8U), FLD_FAULT(9U), FLD_FAULT(10U), FLD_FAULT(11U),
+	FLD(msg_squeal_diag_t, uptime_s, FIELD_U32),
+	FLD(msg_squeal_diag_t, bus_off_count, FIELD_U8),
+	FLD(msg_squeal_diag_t, worst_task_time_us, FIELD_U16),
+	FLD(msg_squeal_diag_t, rx_overrun_count, FIELD_U16),
+	FLD(msg_squeal_diag_t, e2e_error_count_speed, FIELD_U16),
+	FLD(msg_squeal_diag_t, e2e_error_count_force, FIELD_U16),
+	FLD(msg_squeal_diag_t, tx_overflow_count, FIELD_U16),
+	FLD(msg_squeal_diag_t, rx_bad_frame_count, FIELD_U16),
+	FLD(msg_squeal_diag_t, hse_freq_100khz, FIELD_U8),
+	FLD(msg_squeal_diag_t, reset_cause, FIELD_U8),
+	FLD(msg_squeal_diag_t, bor_level, FIELD_U8),
+	FLD(msg_squeal_diag_t, loopback_can1, FIELD_U8),
+	FLD(msg_squeal_diag_t, loopback_can2, FIELD_U8),
+	FLD(msg_squeal_diag_t, stack_high_water_b, FIELD_U16),
+
+	FLD_E2E(msg_squeal_detail2_t),
+	FLD(msg_squeal_detail2_t, force_n, FIELD_U16),
+	FLD(msg_squeal_detail2_t, hopf_force_n, FIELD_U16),
+	FLD(msg_squeal_detail2_t, lc_amplitude_um, FIELD_U16),
+};
+
+_Static_assert(sizeof sig_field / sizeof sig_field[0] == MSG_SIG_COUNT,
+	       "one field per signal of msg_sig_table");
+
+/* the most signals of one message (SquealDiag's), for a frame's raw values */
+#define SIGS_PER_MSG_MAX N_DG
+_Static_assert((N_DS <= N_DG) && (N_PF <= N_DG) && (N_ST <= N_DG) && (N_DT <= N_DG) &&
+	       (N_D2 <= N_DG), "SquealDiag has the most signals");
+
+/* A field's raw signal value (the field is of f's kind: the table says so). */
+static int32_t field_get(const void *msg, const sig_field_t *f)
+{
+	const void *at = (const uint8_t *)msg + f->offset;
+	int32_t raw;
+
+	switch ((field_kind_t)f->kind) {
+	case FIELD_U8:
+		raw = *(const uint8_t *)at;
+		break;
+	case FIELD_U16:
+		raw = *(const uint16_t *)at;
+		break;
+	case FIELD_S16:
+		raw = *(const int16_t *)at;
+		break;
+	case FIELD_BIT:
+		raw = (int32_t)(((uint32_t)*(const uint16_t *)at >> f->bit) & 1U);
+		break;
+	default: {
+		const uint32_t v = *(const uint32_t *)at;
+
+		raw = (v > (uint32_t)INT32_MAX) ? -1 : (int32_t)v;
+		break;
+	}
+	}
+	return raw;
+}
+
+/* Store a received raw value (of the signal's range) into its field. */
+static void field_set(void *msg, const sig_field_t *f, int32_t raw)
+{
+	void *at = (uint8_t *)msg + f->offset;
+
+	switch ((field_kind_t)f->kind) {
+	case FIELD_U8:
+		*(uint8_t *)at = (uint8_t)raw;
+		break;
+	case FIELD_U16:
+		*(uint16_t *)at = (uint16_t)raw;
+		break;
+	case FIELD_S16:
+		*(int16_t *)at = (int16_t)raw;
+		break;
+	case FIELD_BIT:
+		if (raw != 0) {
+			*(uint16_t *)at = (uint16_t)(*(uint16_t *)at | (1U << f->bit));
+		}
+		break;
+	default:
+		*(uint32_t *)at = (uint32_t)raw;
+		break;
+	}
+}
+
 /* ---- bit access ---------------------------------------------------------- */
 
-/* Intel layout: bit k of the value goes to frame bit start+k, frame bit b
- * being bit (b % 8) of byte b / 8. Bitwise on purpose: obviously right,
- * and at most 64 steps per frame. */
 /*
  * Intel (little-endian) signal access, whole bytes at a time: a signal of
  * len <= 31 bits starting at bit `start` touches at most 5 bytes, which are
- * gathered into one 64-bit word, masked and scattered back.
+ * gathered into one 64-bit word. put_bits ORs into a zeroed frame: the
+ * signals of a message do not overlap.
  */
 static void put_bits(uint8_t data[MSG_MAX_DLC], uint8_t start, uint8_t len,
 		     uint32_t value)
 {
 	const unsigned int first = (unsigned int)start / 8U;
 	const unsigned int last = ((unsigned int)start + len - 1U) / 8U;
-	const unsigned int sh = (unsigned int)start % 8U;
-	const uint64_t mask = (((uint64_t)1U << len) - 1U) << sh;
-	uint64_t w = 0U;
+	uint64_t w = ((uint64_t)value & (((uint64_t)1U << len) - 1U)) << ((unsigned int)start % 8U);
 	unsigned int b;
 
-	for (b = last + 1U; b > first; b--) {
-		w = (w << 8) | data[b - 1U];
-	}
-	w = (w & ~mask) | (((uint64_t)value << sh) & mask);
 	for (b = first; b <= last; b++) {
-		data[b] = (uint8_t)(w & 0xFFU);
+		data[b] = (uint8_t)(data[b] | (w & 0xFFU));
 		w >>= 8;
 	}
 }
@@ -249,116 +376,94 @@ static bool sig_in_range(const msg_sig_desc_t *s, int32_t raw)
 	return (s->flags & MSG_SIG_HAS_NA) != 0U && raw == s->na_raw;
 }
 
-static bool sig_on_page(const msg_sig_desc_t *s, uint8_t page)
+/* A signal of this frame: not multiplexed, or on the multiplexor's page
+ * (every multiplexor comes before the signals it selects). */
+static bool sig_on_page(const msg_sig_desc_t *s, int32_t page)
 {
-	return (s->flags & MSG_SIG_MUXED) == 0U || s->mux_value == page;
+	return (s->flags & MSG_SIG_MUXED) == 0U || (int32_t)s->mux_value == page;
+}
+
+/* ---- pack/unpack: one path for every message ----------------------------- */
+
+/*
+ * Message m from its struct: every field of the frame's page range-checked
+ * (fields_ok: the message's own value rules), then a zeroed frame with the
+ * signals written; data untouched on an error.
+ */
+static int pack_msg(const msg_desc_t *m, const void *msg, bool fields_ok,
+		    uint8_t data[MSG_MAX_DLC], uint8_t *dlc)
+{
+	uint8_t frame[MSG_MAX_DLC] = { 0 };
+	int32_t page = 0;
+	unsigned int i;
+
+	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
+	if (!fields_ok) {
+		return SQ_ERANGE;
+	}
+	for (i = m->sig_first; i < (unsigned int)m->sig_first + m->sig_count; i++) {
+		const msg_sig_desc_t *s = &msg_sig_table[i];
+		int32_t raw;
+
+		if (!sig_on_page(s, page)) {
+			continue;
+		}
+		raw = field_get(msg, &sig_field[i]);
+		if (!sig_in_range(s, raw)) {
+			return SQ_ERANGE;
+		}
+		if ((s->flags & MSG_SIG_MUXOR) != 0U) {
+			page = raw;
+		}
+		/* two's complement of negative raw values: well defined */
+		put_bits(frame, s->start_bit, s->length, (uint32_t)raw);
+	}
+	for (i = 0U; i < MSG_MAX_DLC; i++) {
+		data[i] = frame[i];
+	}
+	*dlc = m->dlc;
+	return SQ_OK;
 }
 
 /*
- * Range-check raw[0..count-1] against the signals first..first+count-1,
- * then write a zeroed frame. Multiplexed signals not on page are skipped.
+ * A received frame of message m into its struct (size bytes), written only
+ * when the frame is well formed: its DLC, a counter below 15, a multiplexor
+ * in its range. The fields of another page are 0.
  */
-static int pack_sigs(unsigned int first, unsigned int count,
-		     const int32_t *raw, uint8_t page, uint8_t frame_dlc,
-		     uint8_t data[MSG_MAX_DLC], uint8_t *dlc)
+static int unpack_msg(const msg_desc_t *m, const uint8_t *data, uint8_t dlc,
+		      void *msg, size_t size)
 {
+	int32_t raw[SIGS_PER_MSG_MAX];
+	int32_t page = 0;
 	unsigned int i;
 
-	for (i = 0U; i < count; i++) {
-		const msg_sig_desc_t *s = &msg_sig_table[first + i];
-
-		if (sig_on_page(s, page) && !sig_in_range(s, raw[i])) {
-			return SQ_ERANGE;
-		}
-	}
-	for (i = 0U; i < MSG_MAX_DLC; i++) {
-		data[i] = 0U;
-	}
-	for (i = 0U; i < count; i++) {
-		const msg_sig_desc_t *s = &msg_sig_table[first + i];
-
-		if (sig_on_page(s, page)) {
-			/* two's complement of negative raw values: well defined */
-			put_bits(data, s->start_bit, s->length, (uint32_t)raw[i]);
-		}
-	}
-	*dlc = frame_dlc;
-	return SQ_OK;
-}
-
-/* Read the signals of a frame; counter 15 is malformed. */
-static int unpack_sigs(unsigned int first, unsigned int count,
-		       const uint8_t *data, uint8_t dlc, uint8_t frame_dlc,
-		       int32_t *raw)
-{
-	unsigned int i;
-
-	if (data == NULL || dlc != frame_dlc) {
+	HAL_REQUIRE(msg != NULL);
+	if (data == NULL || dlc != m->dlc) {
 		return SQ_EBADMSG;
 	}
-	for (i = 0U; i < count; i++) {
-		raw[i] = sig_read(&msg_sig_table[first + i], data);
+	for (i = 0U; i < m->sig_count; i++) {
+		const msg_sig_desc_t *s = &msg_sig_table[m->sig_first + i];
+
+		raw[i] = sig_read(s, data);
+		if ((s->flags & MSG_SIG_MUXOR) != 0U) {
+			if (raw[i] > s->raw_max) {
+				return SQ_EBADMSG; /* a page the DBC does not have */
+			}
+			page = raw[i];
+		}
 	}
-	/* signals first+1 is always the E2E counter */
+	/* signal sig_first + 1 is always the E2E counter */
 	if (raw[1] > (int32_t)E2E_P01_COUNTER_MAX) {
 		return SQ_EBADMSG;
 	}
-	return SQ_OK;
-}
-
-/* ---- per-message mapping ------------------------------------------------- */
-
-int msg_disc_speed_pack(const msg_disc_speed_t *msg, uint8_t data[8], uint8_t *dlc)
-{
-	int32_t raw[N_DS];
-
-	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
-	raw[0] = msg->crc;
-	raw[1] = msg->counter;
-	raw[2] = msg->disc_speed_radps;
-	return pack_sigs(SIG_DS_CRC, N_DS, raw, 0U, MSG_DISC_SPEED_DLC, data, dlc);
-}
-
-int msg_disc_speed_unpack(const uint8_t *data, uint8_t dlc, msg_disc_speed_t *msg)
-{
-	int32_t raw[N_DS];
-	int rc;
-
-	HAL_REQUIRE(msg != NULL);
-	rc = unpack_sigs(SIG_DS_CRC, N_DS, data, dlc, MSG_DISC_SPEED_DLC, raw);
-	if (rc != SQ_OK) {
-		return rc;
+	for (i = 0U; i < size; i++) {
+		((uint8_t *)msg)[i] = 0U;
 	}
-	msg->crc = (uint8_t)raw[0];
-	msg->counter = (uint8_t)raw[1];
-	msg->disc_speed_radps = (uint16_t)raw[2];
-	return SQ_OK;
-}
-
-int msg_pad_force_pack(const msg_pad_force_t *msg, uint8_t data[8], uint8_t *dlc)
-{
-	int32_t raw[N_PF];
-
-	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
-	raw[0] = msg->crc;
-	raw[1] = msg->counter;
-	raw[2] = msg->pad_force_n;
-	return pack_sigs(SIG_PF_CRC, N_PF, raw, 0U, MSG_PAD_FORCE_DLC, data, dlc);
-}
-
-int msg_pad_force_unpack(const uint8_t *data, uint8_t dlc, msg_pad_force_t *msg)
-{
-	int32_t raw[N_PF];
-	int rc;
-
-	HAL_REQUIRE(msg != NULL);
-	rc = unpack_sigs(SIG_PF_CRC, N_PF, data, dlc, MSG_PAD_FORCE_DLC, raw);
-	if (rc != SQ_OK) {
-		return rc;
+	for (i = 0U; i < m->sig_count; i++) {
+		if (sig_on_page(&msg_sig_table[m->sig_first + i], page)) {
+			field_set(msg, &sig_field[m->sig_first + i], raw[i]);
+		}
 	}
-	msg->crc = (uint8_t)raw[0];
-	msg->counter = (uint8_t)raw[1];
-	msg->pad_force_n = (uint16_t)raw[2];
 	return SQ_OK;
 }
 
@@ -368,249 +473,52 @@ static bool squeal_state_valid(uint8_t state)
 	return (state < SQUEAL_STATE_NAMED) || (state == MSG_SQUEAL_STATE_FAULT);
 }
 
-int msg_squeal_status_pack(const msg_squeal_status_t *msg, uint8_t data[8],
-			   uint8_t *dlc)
-{
-	int32_t raw[N_ST];
-
-	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
-	if (!squeal_state_valid(msg->squeal_state)) {
-		return SQ_ERANGE;
+/* A message's pack and unpack (squeal_msgs.h); fields_ok: its own value
+ * rules beyond the signals' ranges, on a non-NULL msg. */
+#define MSG_CODEC(name, ix, fields_ok)                                                  \
+	int msg_##name##_pack(const msg_##name##_t *msg, uint8_t data[8], uint8_t *dlc)  \
+	{                                                                               \
+		return pack_msg(&msg_table[ix], msg, (msg == NULL) || (fields_ok), data, dlc); \
+	}                                                                               \
+	int msg_##name##_unpack(const uint8_t *data, uint8_t dlc, msg_##name##_t *msg)   \
+	{                                                                               \
+		return unpack_msg(&msg_table[ix], data, dlc, msg, sizeof *msg);          \
 	}
-	raw[0] = msg->crc;
-	raw[1] = msg->counter;
-	raw[2] = msg->squeal_state;
-	raw[3] = msg->warning_level;
-	raw[4] = msg->basin_ratio;
-	raw[5] = msg->hopf_margin_mps;
-	raw[6] = msg->border_margin_sigma;
-	return pack_sigs(SIG_ST_CRC, N_ST, raw, 0U, MSG_SQUEAL_STATUS_DLC, data,
-			 dlc);
-}
 
-int msg_squeal_status_unpack(const uint8_t *data, uint8_t dlc,
-			     msg_squeal_status_t *msg)
-{
-	int32_t raw[N_ST];
-	int rc;
-
-	HAL_REQUIRE(msg != NULL);
-	rc = unpack_sigs(SIG_ST_CRC, N_ST, data, dlc, MSG_SQUEAL_STATUS_DLC, raw);
-	if (rc != SQ_OK) {
-		return rc;
-	}
-	msg->crc = (uint8_t)raw[0];
-	msg->counter = (uint8_t)raw[1];
-	msg->squeal_state = (uint8_t)raw[2];
-	msg->warning_level = (uint8_t)raw[3];
-	msg->basin_ratio = (uint16_t)raw[4];
-	msg->hopf_margin_mps = (int16_t)raw[5];
-	msg->border_margin_sigma = (uint8_t)raw[6];
-	return SQ_OK;
-}
-
-int msg_squeal_detail_pack(const msg_squeal_detail_t *msg, uint8_t data[8],
-			   uint8_t *dlc)
-{
-	int32_t raw[N_DT];
-
-	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
-	raw[0] = msg->crc;
-	raw[1] = msg->counter;
-	raw[2] = msg->v0_mps;
-	raw[3] = msg->hopf_speed_mps;
-	raw[4] = msg->trigger_velocity_mps;
-	raw[5] = msg->vehicle_speed_border_kph;
-	return pack_sigs(SIG_DT_CRC, N_DT, raw, 0U, MSG_SQUEAL_DETAIL_DLC, data,
-			 dlc);
-}
-
-int msg_squeal_detail_unpack(const uint8_t *data, uint8_t dlc,
-			     msg_squeal_detail_t *msg)
-{
-	int32_t raw[N_DT];
-	int rc;
-
-	HAL_REQUIRE(msg != NULL);
-	rc = unpack_sigs(SIG_DT_CRC, N_DT, data, dlc, MSG_SQUEAL_DETAIL_DLC, raw);
-	if (rc != SQ_OK) {
-		return rc;
-	}
-	msg->crc = (uint8_t)raw[0];
-	msg->counter = (uint8_t)raw[1];
-	msg->v0_mps = (uint16_t)raw[2];
-	msg->hopf_speed_mps = (uint16_t)raw[3];
-	msg->trigger_velocity_mps = (uint16_t)raw[4];
-	msg->vehicle_speed_border_kph = (uint16_t)raw[5];
-	return SQ_OK;
-}
-
-int msg_squeal_detail2_pack(const msg_squeal_detail2_t *msg, uint8_t data[8],
-			    uint8_t *dlc)
-{
-	int32_t raw[N_D2];
-
-	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
-	raw[0] = msg->crc;
-	raw[1] = msg->counter;
-	raw[2] = msg->force_n;
-	raw[3] = msg->hopf_force_n;
-	raw[4] = msg->lc_amplitude_um;
-	return pack_sigs(SIG_D2_CRC, N_D2, raw, 0U, MSG_SQUEAL_DETAIL2_DLC, data,
-			 dlc);
-}
-
-int msg_squeal_detail2_unpack(const uint8_t *data, uint8_t dlc,
-			      msg_squeal_detail2_t *msg)
-{
-	int32_t raw[N_D2];
-	int rc;
-
-	HAL_REQUIRE(msg != NULL);
-	rc = unpack_sigs(SIG_D2_CRC, N_D2, data, dlc, MSG_SQUEAL_DETAIL2_DLC, raw);
-	if (rc != SQ_OK) {
-		return rc;
-	}
-	msg->crc = (uint8_t)raw[0];
-	msg->counter = (uint8_t)raw[1];
-	msg->force_n = (uint16_t)raw[2];
-	msg->hopf_force_n = (uint16_t)raw[3];
-	msg->lc_amplitude_um = (uint16_t)raw[4];
-	return SQ_OK;
-}
-
-#define DG(sig) ((sig) - SIG_DG_CRC)
-
-int msg_squeal_diag_pack(const msg_squeal_diag_t *msg, uint8_t data[8],
-			 uint8_t *dlc)
-{
-	int32_t raw[N_DG];
-	unsigned int i;
-
-	HAL_REQUIRE((msg != NULL) && (data != NULL) && (dlc != NULL));
-	if ((msg->fault_bits & ~MSG_FAULT_ALL) != 0U) {
-		return SQ_ERANGE;
-	}
-	raw[DG(SIG_DG_CRC)] = msg->crc;
-	raw[DG(SIG_DG_COUNTER)] = msg->counter;
-	raw[DG(SIG_DG_PAGE)] = msg->page;
-	for (i = 0U; i < (unsigned int)(SIG_DG_UPTIME - SIG_DG_FAULT0); i++) {
-		raw[DG(SIG_DG_FAULT0) + i] = (int32_t)((msg->fault_bits >> i) & 1U);
-	}
-	/* 24-bit field: a larger value is out of range, not truncated */
-	raw[DG(SIG_DG_UPTIME)] = msg->uptime_s > MSG_UPTIME_S_MAX ?
-		-1 : (int32_t)msg->uptime_s;
-	raw[DG(SIG_DG_BUS_OFF)] = msg->bus_off_count;
-	raw[DG(SIG_DG_TASK_TIME)] = msg->worst_task_time_us;
-	raw[DG(SIG_DG_RX_OVERRUN)] = msg->rx_overrun_count;
-	raw[DG(SIG_DG_E2E_SPEED)] = msg->e2e_error_count_speed;
-	raw[DG(SIG_DG_E2E_FORCE)] = msg->e2e_error_count_force;
-	raw[DG(SIG_DG_TX_OVERFLOW)] = msg->tx_overflow_count;
-	raw[DG(SIG_DG_RX_BAD_FRAME)] = msg->rx_bad_frame_count;
-	raw[DG(SIG_DG_HSE)] = msg->hse_freq_100khz;
-	raw[DG(SIG_DG_RESET)] = msg->reset_cause;
-	raw[DG(SIG_DG_BOR)] = msg->bor_level;
-	raw[DG(SIG_DG_LB1)] = msg->loopback_can1;
-	raw[DG(SIG_DG_LB2)] = msg->loopback_can2;
-	raw[DG(SIG_DG_STACK)] = msg->stack_high_water_b;
-	return pack_sigs(SIG_DG_CRC, N_DG, raw, msg->page, MSG_SQUEAL_DIAG_DLC,
-			 data, dlc);
-}
-
-int msg_squeal_diag_unpack(const uint8_t *data, uint8_t dlc,
-			   msg_squeal_diag_t *msg)
-{
-	int32_t raw[N_DG];
-	msg_squeal_diag_t out = { 0 };
-	unsigned int i;
-	int rc;
-
-	HAL_REQUIRE(msg != NULL);
-	rc = unpack_sigs(SIG_DG_CRC, N_DG, data, dlc, MSG_SQUEAL_DIAG_DLC, raw);
-	if (rc != SQ_OK) {
-		return rc;
-	}
-	if (raw[DG(SIG_DG_PAGE)] >= (int32_t)MSG_DIAG_PAGE_COUNT) {
-		return SQ_EBADMSG;
-	}
-	out.crc = (uint8_t)raw[DG(SIG_DG_CRC)];
-	out.counter = (uint8_t)raw[DG(SIG_DG_COUNTER)];
-	out.page = (uint8_t)raw[DG(SIG_DG_PAGE)];
-	for (i = 0U; i < (unsigned int)(SIG_DG_UPTIME - SIG_DG_FAULT0); i++) {
-		if (raw[DG(SIG_DG_FAULT0) + i] != 0) {
-			out.fault_bits = (uint16_t)(out.fault_bits | (1U << i));
-		}
-	}
-	switch (out.page) {
-	case MSG_DIAG_PAGE_UPTIME:
-		out.uptime_s = (uint32_t)raw[DG(SIG_DG_UPTIME)];
-		out.bus_off_count = (uint8_t)raw[DG(SIG_DG_BUS_OFF)];
-		break;
-	case MSG_DIAG_PAGE_TASK:
-		out.worst_task_time_us = (uint16_t)raw[DG(SIG_DG_TASK_TIME)];
-		out.rx_overrun_count = (uint16_t)raw[DG(SIG_DG_RX_OVERRUN)];
-		break;
-	case MSG_DIAG_PAGE_E2E:
-		out.e2e_error_count_speed = (uint16_t)raw[DG(SIG_DG_E2E_SPEED)];
-		out.e2e_error_count_force = (uint16_t)raw[DG(SIG_DG_E2E_FORCE)];
-		break;
-	case MSG_DIAG_PAGE_FRAMES:
-		out.tx_overflow_count = (uint16_t)raw[DG(SIG_DG_TX_OVERFLOW)];
-		out.rx_bad_frame_count = (uint16_t)raw[DG(SIG_DG_RX_BAD_FRAME)];
-		break;
-	default:
-		out.hse_freq_100khz = (uint8_t)raw[DG(SIG_DG_HSE)];
-		out.reset_cause = (uint8_t)raw[DG(SIG_DG_RESET)];
-		out.bor_level = (uint8_t)raw[DG(SIG_DG_BOR)];
-		out.loopback_can1 = (uint8_t)raw[DG(SIG_DG_LB1)];
-		out.loopback_can2 = (uint8_t)raw[DG(SIG_DG_LB2)];
-		out.stack_high_water_b = (uint16_t)raw[DG(SIG_DG_STACK)];
-		break;
-	}
-	*msg = out;
-	return SQ_OK;
-}
+MSG_CODEC(disc_speed, IX_DISC_SPEED, true)
+MSG_CODEC(pad_force, IX_PAD_FORCE, true)
+MSG_CODEC(squeal_status, IX_SQUEAL_STATUS, squeal_state_valid(msg->squeal_state))
+MSG_CODEC(squeal_detail, IX_SQUEAL_DETAIL, true)
+MSG_CODEC(squeal_detail2, IX_SQUEAL_DETAIL2, true)
+MSG_CODEC(squeal_diag, IX_SQUEAL_DIAG, (msg->fault_bits & ~MSG_FAULT_ALL) == 0U)
 
 /* ---- receive: E2E check, then unpack only a usable frame ------------------ */
 
-static int receive_check(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
-			 const uint8_t *data, uint8_t dlc)
+static int receive_msg(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx, const uint8_t *data,
+		       uint8_t dlc, const msg_desc_t *m, void *msg, size_t size)
 {
-	e2e_p01_status_t st = e2e_p01_check(cfg, rx, data, dlc);
+	e2e_p01_status_t st;
 
+	HAL_REQUIRE((cfg != NULL) && (rx != NULL) && (msg != NULL));
+	st = e2e_p01_check(cfg, rx, data, dlc);
 	if (st == E2E_P01_STATUS_NONEWDATA) {
 		return SQ_EAGAIN;
 	}
-	return e2e_p01_status_usable(st) ? SQ_OK : SQ_EBADMSG;
-}
-
-int msg_disc_speed_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
-			   const uint8_t *data, uint8_t dlc,
-			   msg_disc_speed_t *msg)
-{
-	int rc;
-
-	HAL_REQUIRE((cfg != NULL) && (rx != NULL) && (msg != NULL));
-	rc = receive_check(cfg, rx, data, dlc);
-	if (rc != SQ_OK) {
-		return rc;
+	if (!e2e_p01_status_usable(st)) {
+		return SQ_EBADMSG;
 	}
-	return msg_disc_speed_unpack(data, dlc, msg);
+	return unpack_msg(m, data, dlc, msg, size);
 }
 
-int msg_pad_force_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
-			  const uint8_t *data, uint8_t dlc,
-			  msg_pad_force_t *msg)
-{
-	int rc;
-
-	HAL_REQUIRE((cfg != NULL) && (rx != NULL) && (msg != NULL));
-	rc = receive_check(cfg, rx, data, dlc);
-	if (rc != SQ_OK) {
-		return rc;
+#define MSG_RECEIVE(name, ix)                                                          \
+	int msg_##name##_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,         \
+				 const uint8_t *data, uint8_t dlc, msg_##name##_t *msg) \
+	{                                                                              \
+		return receive_msg(cfg, rx, data, dlc, &msg_table[ix], msg, sizeof *msg); \
 	}
-	return msg_pad_force_unpack(data, dlc, msg);
-}
+
+MSG_RECEIVE(disc_speed, IX_DISC_SPEED)
+MSG_RECEIVE(pad_force, IX_PAD_FORCE)
 
 /* ---- descriptor access --------------------------------------------------- */
 

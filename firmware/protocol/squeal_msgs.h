@@ -224,18 +224,16 @@ typedef struct {
  * not checked either: use msg_*_receive() or e2e_p01_check() first.
  * SquealDiag fills the fields of the received page, the others are 0.
  */
-int msg_disc_speed_pack(const msg_disc_speed_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_disc_speed_unpack(const uint8_t *data, uint8_t dlc, msg_disc_speed_t *msg);
-int msg_pad_force_pack(const msg_pad_force_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_pad_force_unpack(const uint8_t *data, uint8_t dlc, msg_pad_force_t *msg);
-int msg_squeal_status_pack(const msg_squeal_status_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_squeal_status_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_status_t *msg);
-int msg_squeal_detail_pack(const msg_squeal_detail_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_squeal_detail_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_detail_t *msg);
-int msg_squeal_detail2_pack(const msg_squeal_detail2_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_squeal_detail2_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_detail2_t *msg);
-int msg_squeal_diag_pack(const msg_squeal_diag_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_squeal_diag_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_diag_t *msg);
+#define MSG_CODEC_DECLARE(name)                                                        \
+	int msg_##name##_pack(const msg_##name##_t *msg, uint8_t data[8], uint8_t *dlc); \
+	int msg_##name##_unpack(const uint8_t *data, uint8_t dlc, msg_##name##_t *msg)
+/* msg_disc_speed_pack() / msg_disc_speed_unpack(), and so on */
+MSG_CODEC_DECLARE(disc_speed);
+MSG_CODEC_DECLARE(pad_force);
+MSG_CODEC_DECLARE(squeal_status);
+MSG_CODEC_DECLARE(squeal_detail);
+MSG_CODEC_DECLARE(squeal_detail2);
+MSG_CODEC_DECLARE(squeal_diag);
 
 /*
  * Receive an input: E2E-check the frame (rx is updated whatever happens;
