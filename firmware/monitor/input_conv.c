@@ -89,15 +89,17 @@ static int big_cmp(const big_t *a, const big_t *b)
 	return 0;
 }
 
-/* a *= m; the operands stay within the budget above (a carry out of the
- * top word would be a sizing mistake: programming error) */
-static void big_mul_u32(big_t *a, uint32_t m)
+/* a = a m + b (b NULL: 0), one pass for a product and a sum; the operands
+ * stay within the budget above (a carry out of the top word would be a
+ * sizing mistake: programming error). Each step's t <= (2^32 - 1)^2 +
+ * 2 (2^32 - 1) < 2^64. */
+static void big_mul_add(big_t *a, uint32_t m, const big_t *b)
 {
 	uint64_t carry = 0U;
 	uint32_t i;
 
 	for (i = 0U; i < BIG_LIMBS; i++) {
-		const uint64_t t = ((uint64_t)a->w[i] * m) + carry;
+		const uint64_t t = ((uint64_t)a->w[i] * m) + ((b != NULL) ? b->w[i] : 0U) + carry;
 
 		a->w[i] = (uint32_t)t;
 		carry = t >> 32;
@@ -105,18 +107,15 @@ static void big_mul_u32(big_t *a, uint32_t m)
 	HAL_REQUIRE(carry == 0U);
 }
 
+/* a *= m */
+static void big_mul_u32(big_t *a, uint32_t m)
+{
+	big_mul_add(a, m, NULL);
+}
+
 static void big_add(big_t *a, const big_t *b)
 {
-	uint64_t carry = 0U;
-	uint32_t i;
-
-	for (i = 0U; i < BIG_LIMBS; i++) {
-		const uint64_t t = (uint64_t)a->w[i] + b->w[i] + carry;
-
-		a->w[i] = (uint32_t)t;
-		carry = t >> 32;
-	}
-	HAL_REQUIRE(carry == 0U);
+	big_mul_add(a, 1U, b);
 }
 
 /* a -= b, a >= b */
