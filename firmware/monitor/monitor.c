@@ -167,34 +167,6 @@ static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
 		f->timestamp_us : me->now_us;
 }
 
-/* The counter of each verdict. */
-static uint32_t *verdict_counter(input_counters_t *c, input_rx_reason_t why)
-{
-	uint32_t *n;
-
-	switch (why) {
-	case INPUT_RX_OK:
-		n = &c->used;
-		break;
-	case INPUT_RX_DLC:
-		n = &c->bad_dlc;
-		break;
-	case INPUT_RX_CRC:
-		n = &c->e2e_wrong_crc;
-		break;
-	case INPUT_RX_COUNTER:
-		n = &c->e2e_wrong_sequence;
-		break;
-	case INPUT_RX_REPEATED:
-		n = &c->e2e_repeated;
-		break;
-	default:
-		n = &c->implausible; /* na, qualifier, range, step */
-		break;
-	}
-	return n;
-}
-
 /* A used raw value in the monitor's units: v0 [um/s] or N [mN]. */
 static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64_t raw)
 {
@@ -212,6 +184,12 @@ static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64
 	return value;
 }
 
+/* The uint32_t counter at this offset (offsetof) of c. */
+static uint32_t *counter_at(input_counters_t *c, uint8_t offset)
+{
+	return (uint32_t *)(void *)((uint8_t *)c + offset);
+}
+
 /*
  * One frame of one input: the input stage's verdict, recorded. Nothing
  * here checks the frame again: the verdict's counter and fault, the last
@@ -222,31 +200,37 @@ static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 			const hal_can_frame_t *f)
 {
 	/*
-	 * The fault each verdict raises. A frame that fails its length or its
-	 * protection is an E2E fault; one that passed the protection but carries
-	 * no usable value ("not available", qualifier, range, step) makes the input
-	 * implausible until a usable value arrives; a repeated counter is no new
-	 * data, not an error: a frozen sender goes stale.
+	 * The fault each verdict raises and the counter it counts in. A frame
+	 * that fails its length or its protection is an E2E fault; one that
+	 * passed the protection but carries no usable value ("not available",
+	 * qualifier, range, step) makes the input implausible until a usable
+	 * value arrives; a repeated counter is no new data, not an error: a
+	 * frozen sender goes stale.
 	 */
-	static const uint8_t verdict_fault[INPUT_RX_REASON_COUNT] = {
-		0U,                            /* ok        */
-		(uint8_t)INPUT_FAULT_E2E,      /* dlc       */
-		(uint8_t)INPUT_FAULT_E2E,      /* crc       */
-		(uint8_t)INPUT_FAULT_E2E,      /* counter   */
-		0U,                            /* repeated  */
-		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* na     */
-		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* qualifier */
-		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* range  */
-		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* step   */
+#define VERDICT(fault, counter) { (uint8_t)(fault), (uint8_t)offsetof(input_counters_t, counter) }
+	static const struct {
+		uint8_t fault;
+		uint8_t counter; /* offset of its uint32_t in input_counters_t */
+	} verdict[INPUT_RX_REASON_COUNT] = {
+		VERDICT(0U, used),                                   /* ok        */
+		VERDICT(INPUT_FAULT_E2E, bad_dlc),                   /* dlc       */
+		VERDICT(INPUT_FAULT_E2E, e2e_wrong_crc),             /* crc       */
+		VERDICT(INPUT_FAULT_E2E, e2e_wrong_sequence),        /* counter   */
+		VERDICT(0U, e2e_repeated),                           /* repeated  */
+		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* na        */
+		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* qualifier */
+		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* range     */
+		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* step      */
 	};
+#undef VERDICT
 	/* the reason is an input_rx_reason_t below INPUT_RX_REASON_COUNT */
 	const input_rx_result_t r = input_rx_judge(cfg, &in->rx, f);
 	const input_rx_reason_t why = (input_rx_reason_t)r.reason;
-	const uint32_t fault = verdict_fault[r.reason];
+	const uint32_t fault = verdict[r.reason].fault;
 	const uint64_t t_us = frame_time(me, f);
 
 	sat_inc(&in->count.frames);
-	sat_inc(verdict_counter(&in->count, why));
+	sat_inc(counter_at(&in->count, verdict[r.reason].counter));
 	sat_inc(&in->count.verdict[r.reason]);
 	in->faults |= fault;
 	if ((fault != INPUT_FAULT_E2E) && (r.e2e_status != (uint8_t)E2E_P01_STATUS_NONEWDATA)) {
