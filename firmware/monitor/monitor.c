@@ -137,7 +137,7 @@ int monitor_set_selftest(monitor_t *me, const monitor_selftest_t *st)
 	return SQ_OK;
 }
 
-/* ---- inputs --------------------------------------------------------------- */
+/* ---- inputs -------------------------------------------------------------- */
 
 /* Filter one used value and mark it fresh. */
 static void input_accept(monitor_t *me, input_t *in, int32_t value,
@@ -318,7 +318,49 @@ static void input_tick(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg)
 	}
 }
 
-/* ---- classification, debounce, warnings ---------------------------------- */
+/* ---- classify ------------------------------------------------------------ */
+
+/*
+ * One classification of the fresh input pair, with its uncertainty in the
+ * same pass when deviations are calibrated (model_adapter_eval_sd: the
+ * model's case and terms once, the corner's own criterion's borders).
+ * sig->state is a class (STABLE, BISTABLE, UNSTABLE) when sig holds this
+ * classification's borders, INVALID when nothing was propagated.
+ */
+static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig)
+{
+	const int32_t v0 = me->speed.value;
+	const int32_t force = me->force.value;
+	uint8_t cls;
+	int rc = SQ_OK;
+
+	sat_inc(&me->count.classifications);
+	me->speed.fresh = false;
+	me->force.fresh = false;
+	sig->state = SQUEAL_STATE_INVALID;
+	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
+		/* below the thresholds: not sliding, without the model */
+		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
+	} else if (me->sigma_on) {
+		rc = model_adapter_eval_sd(&me->params, &me->sd, (squeal_criterion_t)me->corner.criterion,
+					   v0, force, &me->eval, sig);
+	} else {
+		rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
+					v0, force, &me->eval);
+	}
+	if (rc != SQ_OK) {
+		/* the model refused the point: no class */
+		sat_inc(&me->count.model_invalid);
+		me->have_eval = false;
+		cls = MONITOR_STATE_FAULT;
+	} else {
+		me->have_eval = true;
+		cls = (uint8_t)me->eval.state;
+	}
+	return cls;
+}
+
+/* ---- debounce ------------------------------------------------------------ */
 
 static uint32_t abs32(int32_t v)
 {
@@ -379,45 +421,7 @@ static void debounce(monitor_t *me, uint8_t cls)
 	}
 }
 
-/*
- * One classification of the fresh input pair, with its uncertainty in the
- * same pass when deviations are calibrated (model_adapter_eval_sd: the
- * model's case and terms once, the corner's own criterion's borders).
- * sig->state is a class (STABLE, BISTABLE, UNSTABLE) when sig holds this
- * classification's borders, INVALID when nothing was propagated.
- */
-static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig)
-{
-	const int32_t v0 = me->speed.value;
-	const int32_t force = me->force.value;
-	uint8_t cls;
-	int rc = SQ_OK;
-
-	sat_inc(&me->count.classifications);
-	me->speed.fresh = false;
-	me->force.fresh = false;
-	sig->state = SQUEAL_STATE_INVALID;
-	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
-		/* below the thresholds: not sliding, without the model */
-		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
-	} else if (me->sigma_on) {
-		rc = model_adapter_eval_sd(&me->params, &me->sd, (squeal_criterion_t)me->corner.criterion,
-					   v0, force, &me->eval, sig);
-	} else {
-		rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
-					v0, force, &me->eval);
-	}
-	if (rc != SQ_OK) {
-		/* the model refused the point: no class */
-		sat_inc(&me->count.model_invalid);
-		me->have_eval = false;
-		cls = MONITOR_STATE_FAULT;
-	} else {
-		me->have_eval = true;
-		cls = (uint8_t)me->eval.state;
-	}
-	return cls;
-}
+/* ---- uncertainty and warning level of the debounced class ---------------- */
 
 /*
  * The uncertainty of the debounced class (issue 12, docs/uncertainty.md):
@@ -476,7 +480,18 @@ static uint8_t warning_level(const monitor_t *me)
 	}
 }
 
-/* ---- transmit ------------------------------------------------------------- */
+/* Warning level of the debounced state; a change is sent at once. */
+static void update_warning(monitor_t *me)
+{
+	const uint8_t warning = warning_level(me);
+
+	if (warning != me->warning) {
+		me->warning = warning;
+		me->status_now = true;
+	}
+}
+
+/* ---- encode: transmit ---------------------------------------------------- */
 
 static void tx_push(monitor_t *me, uint16_t id, const uint8_t *data, uint8_t dlc)
 {
@@ -752,28 +767,6 @@ static bool due(uint64_t *next_us, uint64_t now_us, uint16_t period_ms)
 	return true;
 }
 
-bool monitor_wants_classify(const monitor_t *me)
-{
-	return (me != NULL) && me->speed.fresh && me->force.fresh &&
-	       (me->speed.faults == 0U) && (me->force.faults == 0U);
-}
-
-void monitor_step(monitor_t *me, uint64_t now_us)
-{
-	monitor_step_slot(me, now_us, true);
-}
-
-/* Warning level of the debounced state; a change is sent at once. */
-static void update_warning(monitor_t *me)
-{
-	const uint8_t warning = warning_level(me);
-
-	if (warning != me->warning) {
-		me->warning = warning;
-		me->status_now = true;
-	}
-}
-
 /* The periodic messages due now (and SquealStatus at once on a change). */
 static void encode(monitor_t *me)
 {
@@ -787,6 +780,14 @@ static void encode(monitor_t *me)
 	if (due(&me->next_diag_us, me->now_us, me->cal->diag_period_ms)) {
 		send_diag(me);
 	}
+}
+
+/* ---- the step ------------------------------------------------------------ */
+
+bool monitor_wants_classify(const monitor_t *me)
+{
+	return (me != NULL) && me->speed.fresh && me->force.fresh &&
+	       (me->speed.faults == 0U) && (me->force.faults == 0U);
 }
 
 /*
@@ -808,8 +809,9 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 	input_tick(me, &me->force, &me->force_rx);
 
 	if ((me->speed.faults != 0U) || (me->force.faults != 0U)) {
-		set_state(me, MONITOR_STATE_FAULT);
+		/* no class (classify), FAULT at once (debounce), so no margin */
 		me->have_eval = false;
+		set_state(me, MONITOR_STATE_FAULT);
 		update_uncertainty(me, NULL, false);
 	} else if (may_classify && me->speed.fresh && me->force.fresh) {
 		squeal_sigma_result_t sig;
@@ -827,6 +829,11 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 	}
 	update_warning(me);
 	encode(me);
+}
+
+void monitor_step(monitor_t *me, uint64_t now_us)
+{
+	monitor_step_slot(me, now_us, true);
 }
 
 int monitor_peek_tx(const monitor_t *me, hal_can_frame_t *frame)
