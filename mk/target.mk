@@ -27,7 +27,7 @@ LDS_stm32f103 := linker/stm32f103xb.ld
 HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
 HAL_INC_stm32f103 := -Ihal/stm32f103/stm32f103xb -Ihal/stm32f4
 HAL_GENERIC := startup.c systick.c bxcan.c bxcan_timing.c iwdg.c calib_flash.c board.c selftest.c \
-	platform_faults.c libc_min.c
+	platform_faults.c libc_min.c chip_common.c
 # the rules every backend shares (hal/common/: frame and filter checks, the
 # bus-state change)
 HAL_COMMON := $(sort $(wildcard hal/common/*.c))

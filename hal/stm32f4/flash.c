@@ -17,7 +17,6 @@ extern const uint8_t __calib_first_sector[];
  * max 100 us; bounds with margin. */
 #define ERASE_TIMEOUT_US  2000000UL
 #define PROGRAM_TIMEOUT_US   1000UL
-#define IDLE_TIMEOUT_US     10000UL
 
 static uint32_t saved_acr;
 
@@ -27,18 +26,7 @@ static int f4_flash_unlock(void)
 {
 	saved_acr = FLASH_ACR;
 	FLASH_ACR = saved_acr & ~FLASH_ACR_DCEN;
-	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, IDLE_TIMEOUT_US) != SQ_OK) {
-		return SQ_EIO;
-	}
-	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
-		FLASH_KEYR = FLASH_KEY1;
-		FLASH_KEYR = FLASH_KEY2;
-	}
-	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
-		return SQ_EIO; /* wrong sequence locks it until reset */
-	}
-	FLASH_SR = FLASH_SR_ERRORS | FLASH_SR_EOP; /* write 1 to clear */
-	return SQ_OK;
+	return chip_flash_unlock();
 }
 
 static void flash_lock_and_flush(void)

@@ -30,7 +30,9 @@ extern uint32_t _sccm, _eccm;
 int main(void);
 void Reset_Handler(void) __attribute__((noreturn));
 void Fault_Handler(void) __attribute__((naked));
-void Default_Handler(void) __attribute__((naked));
+/* An unexpected interrupt is recorded like a fault: the same handler (the
+ * record's vector tells them apart). */
+void Default_Handler(void) __attribute__((alias("Fault_Handler")));
 void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return, uint32_t msp) __attribute__((noreturn, used));
 
 /* The fault handlers' own stack, in .bss above the main stack: an overflow
@@ -165,21 +167,6 @@ void Reset_Handler(void)
 
 /* Hand the stacked exception frame (MSP or PSP) to C. */
 void Fault_Handler(void)
-{
-	__asm__ volatile("tst lr, #4\n\t"
-			 "ite eq\n\t"
-			 "mrseq r0, msp\n\t"
-			 "mrsne r0, psp\n\t"
-			 "mov r1, lr\n\t"
-			 "mrs r2, msp\n\t"
-			 /* a good stack before any C */
-			 "movw r3, #:lower16:stm32_fault_stack+512\n\t"
-			 "movt r3, #:upper16:stm32_fault_stack+512\n\t"
-			 "msr msp, r3\n\t"
-			 "b stm32_fault_entry\n\t");
-}
-
-void Default_Handler(void)
 {
 	__asm__ volatile("tst lr, #4\n\t"
 			 "ite eq\n\t"

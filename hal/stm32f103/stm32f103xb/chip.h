@@ -95,6 +95,7 @@
 #define FLASH_SR_PGERR    (1U << 2)
 #define FLASH_SR_WRPRTERR (1U << 4)
 #define FLASH_SR_EOP      (1U << 5)
+#define FLASH_SR_ERRORS   (FLASH_SR_PGERR | FLASH_SR_WRPRTERR)
 #define FLASH_CR_PG   (1U << 0)
 #define FLASH_CR_PER  (1U << 1)
 #define FLASH_CR_STRT (1U << 6)
