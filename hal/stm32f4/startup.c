@@ -277,17 +277,7 @@ void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return, uint32_t msp)
 bool stm32_fault_record_take(stm32_fault_record_t *out)
 {
 	if (fault_noinit.magic == STM32_FAULT_MAGIC) {
-		last_fault.magic = fault_noinit.magic;
-		last_fault.vector = fault_noinit.vector;
-		last_fault.pc = fault_noinit.pc;
-		last_fault.lr = fault_noinit.lr;
-		last_fault.cfsr = fault_noinit.cfsr;
-		last_fault.hfsr = fault_noinit.hfsr;
-		last_fault.fault_addr = fault_noinit.fault_addr;
-		last_fault.count = fault_noinit.count;
-		last_fault.file = fault_noinit.file;
-		last_fault.line = fault_noinit.line;
-		last_fault.msp = fault_noinit.msp;
+		last_fault = fault_noinit; /* every field, out of the volatile record */
 		last_fault_valid = true;
 		/* Keep the count for the next fault, but never report this one
 		 * again after a later, ordinary reset. */
