@@ -41,13 +41,16 @@
  * one correctly rounded float division of two exact integers each. */
 #define RATIO_S(k)  (1.0f / (float)(((k) + 1) * ((k) + 2)))
 #define RATIO_DS(k) (1.0f / (float)(((k) + 1) * ((k) + 3)))
-#define RATIOS_4(r, k)  r(k), r((k) + 1), r((k) + 2), r((k) + 3)
-#define RATIOS_16(r, k) RATIOS_4(r, k), RATIOS_4(r, (k) + 4), RATIOS_4(r, (k) + 8), \
-	RATIOS_4(r, (k) + 12)
-#define RATIOS_64(r) RATIOS_16(r, 0), RATIOS_16(r, 16), RATIOS_16(r, 32), RATIOS_16(r, 48)
-_Static_assert(SERIES_MAX_TERMS == 64, "RATIOS_64 fills the series tables");
-static const float series_ratio_s[SERIES_MAX_TERMS] = { RATIOS_64(RATIO_S) };
-static const float series_ratio_ds[SERIES_MAX_TERMS] = { RATIOS_64(RATIO_DS) };
+#define RATIOS_1(k)  { RATIO_S(k), RATIO_DS(k) }
+#define RATIOS_4(k)  RATIOS_1(k), RATIOS_1((k) + 1), RATIOS_1((k) + 2), RATIOS_1((k) + 3)
+#define RATIOS_16(k) RATIOS_4(k), RATIOS_4((k) + 4), RATIOS_4((k) + 8), RATIOS_4((k) + 12)
+_Static_assert(SERIES_MAX_TERMS == 64, "four RATIOS_16 fill the series table");
+static const struct {
+	float s;  /* 1 / ((k+1)(k+2)) */
+	float ds; /* 1 / ((k+1)(k+3)) */
+} series_ratio[SERIES_MAX_TERMS] = {
+	RATIOS_16(0), RATIOS_16(16), RATIOS_16(32), RATIOS_16(48)
+};
 
 /*
  * G(x) = ln(2 I1(x)/x) and its derivative.
@@ -70,10 +73,10 @@ void squeal_model_bessel_g(float x, float *g_out, float *dg_out, float *h_out)
 		int32_t k;
 
 		for (k = 0; k < SERIES_MAX_TERMS; k++) {
-			term *= t * series_ratio_s[k];
+			term *= t * series_ratio[k].s;
 			sm1 += term;
 			ds += dterm;
-			dterm *= t * series_ratio_ds[k];
+			dterm *= t * series_ratio[k].ds;
 			if (term <= sm1 * 1.0e-9f) {
 				break;
 			}
