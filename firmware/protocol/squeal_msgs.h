@@ -72,11 +72,11 @@ typedef struct {
 #define MSG_SQUEAL_STATUS_DATA_ID   0x3A01U
 /* SquealState values (VAL_ table): the model's squeal_state_t, whose
  * INVALID is the bus's FAULT (squeal_state.h defines them once) */
-#define MSG_SQUEAL_STATE_STABLE      ((unsigned int)SQUEAL_STATE_STABLE)
-#define MSG_SQUEAL_STATE_BISTABLE    ((unsigned int)SQUEAL_STATE_BISTABLE)
-#define MSG_SQUEAL_STATE_UNSTABLE    ((unsigned int)SQUEAL_STATE_UNSTABLE)
-#define MSG_SQUEAL_STATE_NOT_SLIDING ((unsigned int)SQUEAL_STATE_NOT_SLIDING)
-#define MSG_SQUEAL_STATE_FAULT       ((unsigned int)SQUEAL_STATE_INVALID)
+#define MSG_SQUEAL_STATE_STABLE      ((uint8_t)SQUEAL_STATE_STABLE)
+#define MSG_SQUEAL_STATE_BISTABLE    ((uint8_t)SQUEAL_STATE_BISTABLE)
+#define MSG_SQUEAL_STATE_UNSTABLE    ((uint8_t)SQUEAL_STATE_UNSTABLE)
+#define MSG_SQUEAL_STATE_NOT_SLIDING ((uint8_t)SQUEAL_STATE_NOT_SLIDING)
+#define MSG_SQUEAL_STATE_FAULT       ((uint8_t)SQUEAL_STATE_INVALID)
 /* WarningLevel values */
 #define MSG_WARNING_LEVEL_NONE       0U
 #define MSG_WARNING_LEVEL_ADVISORY   1U
