@@ -266,27 +266,33 @@ _Static_assert(sizeof sig_field / sizeof sig_field[0] == MSG_SIG_COUNT,
 _Static_assert((N_DS <= N_DG) && (N_PF <= N_DG) && (N_ST <= N_DG) && (N_DT <= N_DG) &&
 	       (N_D2 <= N_DG), "SquealDiag has the most signals");
 
-/* A field's raw signal value (the field is of f's kind: the table says so). */
-static int32_t field_get(const void *msg, const sig_field_t *f)
+/* A field's raw signal value, from the bytes of its message's struct (the
+ * field is of f's kind and alignment: the table says so). */
+static int32_t sig_field_get(const uint8_t *msg, const sig_field_t *f)
 {
-	const void *at = (const uint8_t *)msg + f->offset;
+	const uint8_t *at = &msg[f->offset];
 	int32_t raw;
 
 	switch ((field_kind_t)f->kind) {
 	case FIELD_U8:
-		raw = *(const uint8_t *)at;
+		raw = (int32_t)*at;
 		break;
 	case FIELD_U16:
-		raw = *(const uint16_t *)at;
-		break;
 	case FIELD_S16:
-		raw = *(const int16_t *)at;
+	case FIELD_BIT: {
+		const uint16_t v = *(const uint16_t *)(const void *)at;
+
+		if ((field_kind_t)f->kind == FIELD_S16) {
+			raw = (int32_t)(int16_t)v; /* two's complement: well defined */
+		} else if ((field_kind_t)f->kind == FIELD_BIT) {
+			raw = (int32_t)(((uint32_t)v >> f->bit) & 1U);
+		} else {
+			raw = (int32_t)v;
+		}
 		break;
-	case FIELD_BIT:
-		raw = (int32_t)(((uint32_t)*(const uint16_t *)at >> f->bit) & 1U);
-		break;
+	}
 	default: {
-		const uint32_t v = *(const uint32_t *)at;
+		const uint32_t v = *(const uint32_t *)(const void *)at;
 
 		raw = (v > (uint32_t)INT32_MAX) ? -1 : (int32_t)v;
 		break;
@@ -296,28 +302,25 @@ static int32_t field_get(const void *msg, const sig_field_t *f)
 }
 
 /* Store a received raw value (of the signal's range) into its field. */
-static void field_set(void *msg, const sig_field_t *f, int32_t raw)
+static void sig_field_put(uint8_t *msg, const sig_field_t *f, int32_t raw)
 {
-	void *at = (uint8_t *)msg + f->offset;
+	uint8_t *at = &msg[f->offset];
 
-	switch ((field_kind_t)f->kind) {
-	case FIELD_U8:
-		*(uint8_t *)at = (uint8_t)raw;
-		break;
-	case FIELD_U16:
-		*(uint16_t *)at = (uint16_t)raw;
-		break;
-	case FIELD_S16:
-		*(int16_t *)at = (int16_t)raw;
-		break;
-	case FIELD_BIT:
-		if (raw != 0) {
-			*(uint16_t *)at = (uint16_t)(*(uint16_t *)at | (1U << f->bit));
+	if ((field_kind_t)f->kind == FIELD_U8) {
+		*at = (uint8_t)raw;
+	} else if ((field_kind_t)f->kind == FIELD_U32) {
+		*(uint32_t *)(void *)at = (uint32_t)raw;
+	} else {
+		uint16_t *v = (uint16_t *)(void *)at;
+
+		if ((field_kind_t)f->kind != FIELD_BIT) {
+			*v = (uint16_t)raw; /* FIELD_S16: two's complement */
+		} else {
+			/* bit 0's signal comes first: it starts the word afresh */
+			const uint32_t others = (f->bit == 0U) ? 0U : ((uint32_t)*v & ~(1U << f->bit));
+
+			*v = (uint16_t)(others | ((raw != 0) ? (1U << f->bit) : 0U));
 		}
-		break;
-	default:
-		*(uint32_t *)at = (uint32_t)raw;
-		break;
 	}
 }
 
@@ -390,7 +393,7 @@ static bool sig_on_page(const msg_sig_desc_t *s, int32_t page)
  * (fields_ok: the message's own value rules), then a zeroed frame with the
  * signals written; data untouched on an error.
  */
-static int pack_msg(const msg_desc_t *m, const void *msg, bool fields_ok,
+static int pack_msg(const msg_desc_t *m, const uint8_t *msg, bool fields_ok,
 		    uint8_t data[MSG_MAX_DLC], uint8_t *dlc)
 {
 	uint8_t frame[MSG_MAX_DLC] = { 0 };
@@ -408,7 +411,7 @@ static int pack_msg(const msg_desc_t *m, const void *msg, bool fields_ok,
 		if (!sig_on_page(s, page)) {
 			continue;
 		}
-		raw = field_get(msg, &sig_field[i]);
+		raw = sig_field_get(msg, &sig_field[i]);
 		if (!sig_in_range(s, raw)) {
 			return SQ_ERANGE;
 		}
@@ -426,12 +429,11 @@ static int pack_msg(const msg_desc_t *m, const void *msg, bool fields_ok,
 }
 
 /*
- * A received frame of message m into its struct (size bytes), written only
- * when the frame is well formed: its DLC, a counter below 15, a multiplexor
- * in its range. The fields of another page are 0.
+ * A received frame of message m into (every field of) its struct, written
+ * only when the frame is well formed: its DLC, a counter below 15, a
+ * multiplexor in its range. The fields of another page are 0.
  */
-static int unpack_msg(const msg_desc_t *m, const uint8_t *data, uint8_t dlc,
-		      void *msg, size_t size)
+static int unpack_msg(const msg_desc_t *m, const uint8_t *data, uint8_t dlc, uint8_t *msg)
 {
 	int32_t raw[SIGS_PER_MSG_MAX];
 	int32_t page = 0;
@@ -456,13 +458,9 @@ static int unpack_msg(const msg_desc_t *m, const uint8_t *data, uint8_t dlc,
 	if (raw[1] > (int32_t)E2E_P01_COUNTER_MAX) {
 		return SQ_EBADMSG;
 	}
-	for (i = 0U; i < size; i++) {
-		((uint8_t *)msg)[i] = 0U;
-	}
 	for (i = 0U; i < m->sig_count; i++) {
-		if (sig_on_page(&msg_sig_table[m->sig_first + i], page)) {
-			field_set(msg, &sig_field[m->sig_first + i], raw[i]);
-		}
+		sig_field_put(msg, &sig_field[m->sig_first + i],
+			      sig_on_page(&msg_sig_table[m->sig_first + i], page) ? raw[i] : 0);
 	}
 	return SQ_OK;
 }
@@ -478,11 +476,12 @@ static bool squeal_state_valid(uint8_t state)
 #define MSG_CODEC(name, ix, fields_ok)                                                  \
 	int msg_##name##_pack(const msg_##name##_t *msg, uint8_t data[8], uint8_t *dlc)  \
 	{                                                                               \
-		return pack_msg(&msg_table[ix], msg, (msg == NULL) || (fields_ok), data, dlc); \
+		return pack_msg(&msg_table[(ix)], (const uint8_t *)msg, (msg == NULL) || (fields_ok), \
+				data, dlc);                                             \
 	}                                                                               \
 	int msg_##name##_unpack(const uint8_t *data, uint8_t dlc, msg_##name##_t *msg)   \
 	{                                                                               \
-		return unpack_msg(&msg_table[ix], data, dlc, msg, sizeof *msg);          \
+		return unpack_msg(&msg_table[(ix)], data, dlc, (uint8_t *)msg);            \
 	}
 
 MSG_CODEC(disc_speed, IX_DISC_SPEED, true)
@@ -495,7 +494,7 @@ MSG_CODEC(squeal_diag, IX_SQUEAL_DIAG, (msg->fault_bits & ~MSG_FAULT_ALL) == 0U)
 /* ---- receive: E2E check, then unpack only a usable frame ------------------ */
 
 static int receive_msg(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx, const uint8_t *data,
-		       uint8_t dlc, const msg_desc_t *m, void *msg, size_t size)
+		       uint8_t dlc, const msg_desc_t *m, uint8_t *msg)
 {
 	e2e_p01_status_t st;
 
@@ -507,14 +506,14 @@ static int receive_msg(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx, const uint
 	if (!e2e_p01_status_usable(st)) {
 		return SQ_EBADMSG;
 	}
-	return unpack_msg(m, data, dlc, msg, size);
+	return unpack_msg(m, data, dlc, msg);
 }
 
 #define MSG_RECEIVE(name, ix)                                                          \
 	int msg_##name##_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,         \
 				 const uint8_t *data, uint8_t dlc, msg_##name##_t *msg) \
 	{                                                                              \
-		return receive_msg(cfg, rx, data, dlc, &msg_table[ix], msg, sizeof *msg); \
+		return receive_msg(cfg, rx, data, dlc, &msg_table[(ix)], (uint8_t *)msg); \
 	}
 
 MSG_RECEIVE(disc_speed, IX_DISC_SPEED)
