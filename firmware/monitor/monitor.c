@@ -184,6 +184,12 @@ static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64
 	return value;
 }
 
+/* What one verdict of the input stage does to its input. */
+typedef struct {
+	uint8_t fault;   /* INPUT_FAULT_* it raises (0: none)              */
+	uint8_t counter; /* offset of the uint32_t it counts in, in input_counters_t */
+} verdict_rule_t;
+
 /* The uint32_t counter at this offset (offsetof) of c. */
 static uint32_t *counter_at(input_counters_t *c, uint8_t offset)
 {
@@ -208,10 +214,7 @@ static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 	 * frozen sender goes stale.
 	 */
 #define VERDICT(fault, counter) { (uint8_t)(fault), (uint8_t)offsetof(input_counters_t, counter) }
-	static const struct {
-		uint8_t fault;
-		uint8_t counter; /* offset of its uint32_t in input_counters_t */
-	} verdict[INPUT_RX_REASON_COUNT] = {
+	static const verdict_rule_t verdict[INPUT_RX_REASON_COUNT] = {
 		VERDICT(0U, used),                                   /* ok        */
 		VERDICT(INPUT_FAULT_E2E, bad_dlc),                   /* dlc       */
 		VERDICT(INPUT_FAULT_E2E, e2e_wrong_crc),             /* crc       */
@@ -222,7 +225,6 @@ static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* range     */
 		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* step      */
 	};
-#undef VERDICT
 	/* the reason is an input_rx_reason_t below INPUT_RX_REASON_COUNT */
 	const input_rx_result_t r = input_rx_judge(cfg, &in->rx, f);
 	const input_rx_reason_t why = (input_rx_reason_t)r.reason;
