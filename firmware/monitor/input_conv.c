@@ -845,6 +845,28 @@ static uint32_t nlz64(uint64_t v)
 }
 
 /*
+ * One 32-bit quotient digit of div128by64: un / vn1 estimated, then
+ * corrected while it is too large against the next dividend digit un_next
+ * (at most twice), for the normalised divisor vn1 2^32 + vn0.
+ */
+static uint64_t div_digit(uint64_t un, uint64_t un_next, uint64_t vn1, uint64_t vn0)
+{
+	const uint64_t b = (uint64_t)1U << 32;
+	uint64_t q = un / vn1;
+	uint64_t rhat = un - (q * vn1);
+	uint32_t guard;
+
+	for (guard = 0U; (guard < 2U) && ((q >= b) || ((q * vn0) > ((b * rhat) + un_next))); guard++) {
+		q--;
+		rhat += vn1;
+		if (rhat >= b) {
+			break;
+		}
+	}
+	return q;
+}
+
+/*
  * (hi 2^64 + lo) / d for hi < d (the quotient fits 64 bits): Knuth's
  * algorithm D with 32-bit digits (Hacker's Delight, divlu), each digit
  * estimate corrected at most twice.
@@ -862,8 +884,6 @@ static uint64_t div128by64(uint64_t hi, uint64_t lo, uint64_t d)
 	uint64_t un21;
 	uint64_t q1;
 	uint64_t q0;
-	uint64_t rhat;
-	uint32_t guard;
 
 	HAL_REQUIRE((d != 0U) && (hi < d));
 	d <<= s;
@@ -878,25 +898,9 @@ static uint64_t div128by64(uint64_t hi, uint64_t lo, uint64_t d)
 	un10 = lo << s;
 	un1 = un10 >> 32;
 	un0 = un10 & 0xFFFFFFFFU;
-	q1 = un32 / vn1;
-	rhat = un32 - (q1 * vn1);
-	for (guard = 0U; (guard < 2U) && ((q1 >= b) || ((q1 * vn0) > ((b * rhat) + un1))); guard++) {
-		q1--;
-		rhat += vn1;
-		if (rhat >= b) {
-			break;
-		}
-	}
+	q1 = div_digit(un32, un1, vn1, vn0);
 	un21 = (un32 * b) + un1 - (q1 * d);
-	q0 = un21 / vn1;
-	rhat = un21 - (q0 * vn1);
-	for (guard = 0U; (guard < 2U) && ((q0 >= b) || ((q0 * vn0) > ((b * rhat) + un0))); guard++) {
-		q0--;
-		rhat += vn1;
-		if (rhat >= b) {
-			break;
-		}
-	}
+	q0 = div_digit(un21, un0, vn1, vn0);
 	return (q1 * b) + q0;
 }
 
