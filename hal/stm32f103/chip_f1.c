@@ -98,12 +98,10 @@ void chip_can_pins_init(uint8_t bus)
 	GPIO_ODR(GPIOB_BASE) |= 1U << 8;
 }
 
+/* chip_flash_wait_done, then EOP cleared (write 1) for the next step */
 static int flash_wait_done(uint32_t timeout_us)
 {
-	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, timeout_us) != SQ_OK) {
-		return SQ_EIO;
-	}
-	if ((FLASH_SR & FLASH_SR_ERRORS) != 0U) {
+	if (chip_flash_wait_done(timeout_us) != SQ_OK) {
 		return SQ_EIO;
 	}
 	FLASH_SR = FLASH_SR_EOP;

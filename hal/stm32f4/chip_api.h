@@ -32,6 +32,9 @@ int chip_flash_erase_slot(uint32_t slot);
 /* Flash idle, unlocked with the key sequence, its error flags cleared:
  * SQ_OK, or SQ_EIO (still busy, or still locked) (chip_common.c). */
 int chip_flash_unlock(void);
+/* The operation started finished within timeout_us without an error flag:
+ * SQ_OK, else SQ_EIO (chip_common.c). */
+int chip_flash_wait_done(uint32_t timeout_us);
 int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
 
 #endif /* CHIP_API_H */

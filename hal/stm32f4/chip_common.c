@@ -44,3 +44,11 @@ int chip_flash_unlock(void)
 	FLASH_SR = FLASH_SR_ERRORS | FLASH_SR_EOP; /* write 1 to clear */
 	return SQ_OK;
 }
+
+int chip_flash_wait_done(uint32_t timeout_us)
+{
+	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, timeout_us) != SQ_OK) {
+		return SQ_EIO;
+	}
+	return ((FLASH_SR & FLASH_SR_ERRORS) != 0U) ? SQ_EIO : SQ_OK;
+}

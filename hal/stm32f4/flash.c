@@ -54,12 +54,9 @@ int chip_flash_erase_slot(uint32_t slot)
 	}
 	FLASH_CR = FLASH_CR_PSIZE_X32 | FLASH_CR_SER | (sector << FLASH_CR_SNB_SHIFT);
 	FLASH_CR |= FLASH_CR_STRT;
-	rc = stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, ERASE_TIMEOUT_US);
-	if (rc == SQ_OK && (FLASH_SR & FLASH_SR_ERRORS) != 0U) {
-		rc = SQ_EIO;
-	}
+	rc = chip_flash_wait_done(ERASE_TIMEOUT_US);
 	flash_lock_and_flush();
-	return rc == SQ_OK ? SQ_OK : SQ_EIO;
+	return rc;
 }
 
 /* addr word-aligned; a tail shorter than a word is padded with 0xFF. */
@@ -86,14 +83,11 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 		}
 		REG32(addr + off) = w;
 		cm_dsb();
-		rc = stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, PROGRAM_TIMEOUT_US);
-		if (rc == SQ_OK && (FLASH_SR & FLASH_SR_ERRORS) != 0U) {
-			rc = SQ_EIO;
-		}
+		rc = chip_flash_wait_done(PROGRAM_TIMEOUT_US);
 		if (rc == SQ_OK && REG32(addr + off) != w) {
 			rc = SQ_EIO;
 		}
 	}
 	flash_lock_and_flush();
-	return rc == SQ_OK ? SQ_OK : SQ_EIO;
+	return rc;
 }
