@@ -435,7 +435,7 @@ static int pack_msg(const msg_desc_t *m, const uint8_t *msg, bool fields_ok,
  */
 static int unpack_msg(const msg_desc_t *m, const uint8_t *data, uint8_t dlc, uint8_t *msg)
 {
-	int32_t raw[SIGS_PER_MSG_MAX];
+	int32_t raw[SIGS_PER_MSG_MAX] = { 0 };
 	int32_t page = 0;
 	unsigned int i;
 
