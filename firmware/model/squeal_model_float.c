@@ -45,10 +45,11 @@
 #define RATIOS_4(k)  RATIOS_1(k), RATIOS_1((k) + 1), RATIOS_1((k) + 2), RATIOS_1((k) + 3)
 #define RATIOS_16(k) RATIOS_4(k), RATIOS_4((k) + 4), RATIOS_4((k) + 8), RATIOS_4((k) + 12)
 _Static_assert(SERIES_MAX_TERMS == 64, "four RATIOS_16 fill the series table");
-static const struct {
+typedef struct {
 	float s;  /* 1 / ((k+1)(k+2)) */
 	float ds; /* 1 / ((k+1)(k+3)) */
-} series_ratio[SERIES_MAX_TERMS] = {
+} series_ratio_t;
+static const series_ratio_t series_ratio[SERIES_MAX_TERMS] = {
 	RATIOS_16(0), RATIOS_16(16), RATIOS_16(32), RATIOS_16(48)
 };
 

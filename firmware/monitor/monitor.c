@@ -193,7 +193,7 @@ typedef struct {
 /* The uint32_t counter at this offset (offsetof) of c. */
 static uint32_t *counter_at(input_counters_t *c, uint8_t offset)
 {
-	return (uint32_t *)(void *)((uint8_t *)c + offset);
+	return (uint32_t *)(void *)&((uint8_t *)c)[offset];
 }
 
 /*

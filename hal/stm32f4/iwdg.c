@@ -96,6 +96,11 @@ void hal_watchdog_kick(void)
 #endif
 }
 
+typedef struct {
+	uint32_t flags;            /* RCC_CSR reset flags */
+	hal_reset_reason_t reason; /* what any of them means */
+} reset_cause_t;
+
 /* Read once at boot (board.c), then clear the flags so that the next reset
  * reports its own cause. A recorded fault wins: it reset through SYSRESETREQ,
  * which RCC_CSR only shows as a software reset. */
@@ -103,10 +108,7 @@ void stm32_reset_reason_capture(void)
 {
 	/* RCC_CSR's flags, the first that is set wins (POR also sets PIN and
 	 * BOR; the F1 has no BOR flag: 0, never set) */
-	static const struct {
-		uint32_t flags;
-		hal_reset_reason_t reason;
-	} causes[] = {
+	static const reset_cause_t causes[] = {
 		{ RCC_CSR_IWDGRSTF | RCC_CSR_WWDGRSTF, HAL_RESET_WATCHDOG },
 		{ RCC_CSR_SFTRSTF, HAL_RESET_SOFTWARE },
 		{ RCC_CSR_PORRSTF, HAL_RESET_POWER_ON },
@@ -114,12 +116,13 @@ void stm32_reset_reason_capture(void)
 		{ RCC_CSR_PINRSTF, HAL_RESET_PIN },
 	};
 	const uint32_t csr = RCC_CSR;
-	uint32_t i;
 
 	reset_reason = HAL_RESET_UNKNOWN;
 	if (stm32_fault_record_take(NULL)) {
 		reset_reason = HAL_RESET_FAULT;
 	} else {
+		uint32_t i;
+
 		for (i = 0U; i < (sizeof causes / sizeof causes[0]); i++) {
 			if ((csr & causes[i].flags) != 0U) {
 				reset_reason = causes[i].reason;
