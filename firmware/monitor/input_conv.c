@@ -538,50 +538,38 @@ bool input_unit_is_pressure(input_unit_t unit)
 	return (unit >= INPUT_UNIT_BAR) && (unit <= INPUT_UNIT_PSI);
 }
 
+typedef struct {
+	uint32_t num;
+	uint32_t den;
+} unit_factor_t;
+
 /* physical unit -> output unit (um/s, mN, mNm) as an exact fraction,
  * the share included (below 2^112 / 2^67), multiplied into kn / kd */
 static void unit_scale(input_unit_t unit, const input_geom_t *g, uint32_t share_ppm,
 		       big_t *kn, big_t *kd)
 {
-	switch (unit) {
-	case INPUT_UNIT_KMH:
-		big_mul_u32(kn, 10000000U);   /* km/h -> um/s: 1e9 / 3600 */
-		big_mul_u32(kd, 36U);
-		break;
-	case INPUT_UNIT_MPS:
-		big_mul_u32(kn, 1000000U);
-		break;
-	case INPUT_UNIT_MPH:
-		big_mul_u32(kn, 447040U);     /* 0.44704 m/s exactly */
-		break;
-	case INPUT_UNIT_RPM:
+	/* the unit -> um/s, mN (pressures: Pa), mNm factor num / den, in
+	 * input_unit_t's order (unit is below INPUT_UNIT_COUNT: checked) */
+	static const unit_factor_t factor[INPUT_UNIT_COUNT] = {
+		{ 10000000U, 36U },         /* km/h -> um/s: 1e9 / 3600 */
+		{ 1000000U, 1U },           /* m/s                      */
+		{ 447040U, 1U },            /* mph: 0.44704 m/s exactly */
+		{ 1U, 1U },                 /* rad/s: the pad radius below */
 		/* pi ~ 103993 / 33102 (error 2e-10): rpm -> rad/s = pi / 30 */
-		big_mul_u32(kn, 103993U);
-		big_mul_u32(kd, 33102U * 30U);
-		break;
-	case INPUT_UNIT_KN:
-		big_mul_u32(kn, 1000000U);
-		break;
-	case INPUT_UNIT_BAR:
-		big_mul_u32(kn, 100000U);     /* Pa */
-		break;
-	case INPUT_UNIT_KPA:
-		big_mul_u32(kn, 1000U);
-		break;
-	case INPUT_UNIT_MPA:
-		big_mul_u32(kn, 1000000U);
-		break;
-	case INPUT_UNIT_PSI:
-		big_mul_u32(kn, 6894757U);
-		big_mul_u32(kd, 1000U);
-		break;
-	default:
-		/* N, Nm -> mN, mNm; rad/s needs only the pad radius below */
-		if (unit != INPUT_UNIT_RADPS) {
-			big_mul_u32(kn, 1000U);
-		}
-		break;
-	}
+		{ 103993U, 33102U * 30U },  /* rpm                      */
+		{ 1000U, 1U },              /* N -> mN                  */
+		{ 1000000U, 1U },           /* kN                       */
+		{ 100000U, 1U },            /* bar -> Pa                */
+		{ 1000U, 1U },              /* kPa                      */
+		{ 1000000U, 1U },           /* MPa                      */
+		{ 6894757U, 1000U },        /* psi                      */
+		{ 1000U, 1U },              /* Nm -> mNm                */
+	};
+	_Static_assert((INPUT_UNIT_NM == 11) && (INPUT_UNIT_COUNT == 12),
+		       "one factor per input_unit_t, in its order");
+
+	big_mul_u32(kn, factor[unit].num);
+	big_mul_u32(kd, factor[unit].den);
 	if (input_unit_qty(unit) == INPUT_QTY_SPEED) {
 		/* linear speeds at the wheel's rim: x r_p / r_w; angular: x r_p */
 		big_mul_u32(kn, g->pad_radius_um);
