@@ -244,13 +244,13 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 				   squeal_criterion_t criterion,
 				   squeal_result_t *out, squeal_log_terms_t *t)
 {
+	int64_t x = 0; /* the cycle x, Q32 (cycle_ln_x) */
+	int64_t ln_x;
 	int64_t ln_a;
 	int64_t ln_w0;
 	int64_t ln_force;
 	int64_t c2;
 	int64_t lq2;
-	int64_t x = 0;
-	int64_t ln_x;
 	bool stable;
 	bool sat;
 
