@@ -55,72 +55,88 @@ _Static_assert(SIG_END == MSG_SIG_COUNT, "MSG_SIG_COUNT out of date");
 _Static_assert(MSG_FAULT_ALL == (1U << (SIG_DG_UPTIME - SIG_DG_FAULT0)) - 1U,
 	       "one fault signal per MSG_FAULT_* bit");
 
-/* E2E header of message id: CRC byte 0, counter byte 1 bits 0..3. */
-#define E2E_SIGS(id, name)                                                 \
-	{ (id), name "_CRC", "", 0U, 8U, MSG_SIG_E2E, 0U, 1, 1, 0, 0, 255, 0 }, \
-	{ (id), name "_Counter", "", 8U, 4U, MSG_SIG_E2E, 0U, 1, 1, 0, 0,      \
-	  (int32_t)E2E_P01_COUNTER_MAX, 0 }
+/* Where a signal's raw value lives: field of the message's struct type
+ * (every struct is far smaller than 256 bytes: the offset fits). */
+#define FLD(type, field, kind) { (uint8_t)offsetof(type, field), (uint8_t)(kind), 0U }
+_Static_assert(sizeof(msg_squeal_diag_t) < 256U, "field offsets fit a uint8_t");
+
+/* E2E header of message id (struct type): CRC byte 0, counter byte 1 bits 0..3. */
+#define E2E_SIGS(id, name, type)                                                   \
+	{ (id), name "_CRC", "", 0U, 8U, MSG_SIG_E2E, 0U, 1, 1, 0, 0, 255, 0,           \
+	  FLD(type, crc, MSG_FIELD_U8) },                                               \
+	{ (id), name "_Counter", "", 8U, 4U, MSG_SIG_E2E, 0U, 1, 1, 0, 0,              \
+	  (int32_t)E2E_P01_COUNTER_MAX, 0, FLD(type, counter, MSG_FIELD_U8) }
 
 /* plain unsigned value */
-#define UNS(id, name, unit, start, len, num, den, max)                     \
-	{ (id), name, unit, (start), (len), 0U, 0U, (num), (den), 0, 0, (max), 0 }
+#define UNS(id, name, unit, start, len, num, den, max, fld)                        \
+	{ (id), name, unit, (start), (len), 0U, 0U, (num), (den), 0, 0, (max), 0, fld }
 /* unsigned value with "not available" = all ones, range 0..max */
-#define UNS_NA(id, name, unit, start, len, num, den, max)                  \
-	{ (id), name, unit, (start), (len), MSG_SIG_HAS_NA, 0U, (num), (den), 0, \
-	  0, (max), (int32_t)((1UL << (len)) - 1UL) }
-/* multiplexed unsigned counter, range 0..all ones */
-#define MUXED(id, name, unit, start, len, page)                            \
-	{ (id), name, unit, (start), (len), MSG_SIG_MUXED, (page), 1, 1, 0, 0, \
-	  (int32_t)((1UL << (len)) - 1UL), 0 }
+#define UNS_NA(id, name, unit, start, len, num, den, max, fld)                     \
+	{ (id), name, unit, (start), (len), MSG_SIG_HAS_NA, 0U, (num), (den), 0,        \
+	  0, (max), (int32_t)((1UL << (len)) - 1UL), fld }
+/* multiplexed unsigned counter of SquealDiag, range 0..all ones */
+#define MUXED(name, unit, start, len, page, kind, field)                           \
+	{ MSG_SQUEAL_DIAG_ID, name, unit, (start), (len), MSG_SIG_MUXED, (page), 1, 1, 0, 0, \
+	  (int32_t)((1UL << (len)) - 1UL), 0, FLD(msg_squeal_diag_t, field, kind) }
 /* multiplexed unsigned value with a scale and a range below all ones (the
  * values above it are "not available"/"unknown", documented in the DBC) */
-#define MUXED_R(id, name, unit, start, len, page, num, den, max)               \
-	{ (id), name, unit, (start), (len), MSG_SIG_MUXED, (page), (num), (den), 0, 0, \
-	  (max), 0 }
+#define MUXED_R(name, unit, start, len, page, num, den, max, field)                \
+	{ MSG_SQUEAL_DIAG_ID, name, unit, (start), (len), MSG_SIG_MUXED, (page), (num), (den), \
+	  0, 0, (max), 0, FLD(msg_squeal_diag_t, field, MSG_FIELD_U8) }
 /* the same with a "not available" raw value above the range */
-#define MUXED_NA(id, name, unit, start, len, page, num, den, max, na)           \
-	{ (id), name, unit, (start), (len), MSG_SIG_MUXED | MSG_SIG_HAS_NA, (page), (num), \
-	  (den), 0, 0, (max), (na) }
-#define FAULT(name, bit) UNS(MSG_SQUEAL_DIAG_ID, name, "", 16U + (bit), 1U, 1, 1, 1)
+#define MUXED_NA(name, unit, start, len, page, num, den, max, na, kind, field)      \
+	{ MSG_SQUEAL_DIAG_ID, name, unit, (start), (len), MSG_SIG_MUXED | MSG_SIG_HAS_NA, \
+	  (page), (num), (den), 0, 0, (max), (na), FLD(msg_squeal_diag_t, field, kind) }
+/* fault bit `bit` of SquealDiag's fault_bits */
+#define FAULT(name, bit)                                                           \
+	{ MSG_SQUEAL_DIAG_ID, name, "", 16U + (bit), 1U, 0U, 0U, 1, 1, 0, 0, 1, 0,      \
+	  { (uint8_t)offsetof(msg_squeal_diag_t, fault_bits), (uint8_t)MSG_FIELD_BIT, (bit) } }
 
 const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT] = {
-	E2E_SIGS(MSG_DISC_SPEED_ID, "DiscSpeed"),
+	E2E_SIGS(MSG_DISC_SPEED_ID, "DiscSpeed", msg_disc_speed_t),
 	UNS_NA(MSG_DISC_SPEED_ID, "DiscSpeed_radps", "rad/s", 16U, 16U, 1, 100,
-	       (int32_t)MSG_DISC_SPEED_RADPS_MAX),
+	       (int32_t)MSG_DISC_SPEED_RADPS_MAX,
+	       FLD(msg_disc_speed_t, disc_speed_radps, MSG_FIELD_U16)),
 
-	E2E_SIGS(MSG_PAD_FORCE_ID, "PadForce"),
+	E2E_SIGS(MSG_PAD_FORCE_ID, "PadForce", msg_pad_force_t),
 	UNS_NA(MSG_PAD_FORCE_ID, "PadForce_N", "N", 16U, 16U, 1, 2,
-	       (int32_t)MSG_PAD_FORCE_N_MAX),
+	       (int32_t)MSG_PAD_FORCE_N_MAX, FLD(msg_pad_force_t, pad_force_n, MSG_FIELD_U16)),
 
-	E2E_SIGS(MSG_SQUEAL_STATUS_ID, "SquealStatus"),
+	E2E_SIGS(MSG_SQUEAL_STATUS_ID, "SquealStatus", msg_squeal_status_t),
 	/* the highest state is FAULT (what the value table allows: pack) */
 	UNS(MSG_SQUEAL_STATUS_ID, "SquealState", "", 12U, 4U, 1, 1,
-	    (int32_t)MSG_SQUEAL_STATE_FAULT),
-	UNS(MSG_SQUEAL_STATUS_ID, "WarningLevel", "", 16U, 4U, 1, 1, 3),
+	    (int32_t)MSG_SQUEAL_STATE_FAULT, FLD(msg_squeal_status_t, squeal_state, MSG_FIELD_U8)),
+	UNS(MSG_SQUEAL_STATUS_ID, "WarningLevel", "", 16U, 4U, 1, 1, 3,
+	    FLD(msg_squeal_status_t, warning_level, MSG_FIELD_U8)),
 	UNS_NA(MSG_SQUEAL_STATUS_ID, "BasinRatio", "", 24U, 16U, 1, 10000,
-	       (int32_t)MSG_BASIN_RATIO_MAX),
+	       (int32_t)MSG_BASIN_RATIO_MAX, FLD(msg_squeal_status_t, basin_ratio, MSG_FIELD_U16)),
 	{ MSG_SQUEAL_STATUS_ID, "HopfMargin_mps", "m/s", 40U, 16U,
 	  MSG_SIG_SIGNED | MSG_SIG_HAS_NA, 0U, 1, 100, 0,
 	  MSG_HOPF_MARGIN_MPS_MIN, MSG_HOPF_MARGIN_MPS_MAX,
-	  MSG_HOPF_MARGIN_MPS_NA },
+	  MSG_HOPF_MARGIN_MPS_NA, FLD(msg_squeal_status_t, hopf_margin_mps, MSG_FIELD_S16) },
 	/* raw 0 = not available (what a monitor without deviations sends) */
 	{ MSG_SQUEAL_STATUS_ID, "BorderMargin_sigma", "sigma", 56U, 8U, MSG_SIG_HAS_NA, 0U,
 	  1, 10, -1, 1, (int32_t)MSG_BORDER_MARGIN_SIGMA_SAT,
-	  (int32_t)MSG_BORDER_MARGIN_SIGMA_NA },
+	  (int32_t)MSG_BORDER_MARGIN_SIGMA_NA,
+	  FLD(msg_squeal_status_t, border_margin_sigma, MSG_FIELD_U8) },
 
-	E2E_SIGS(MSG_SQUEAL_DETAIL_ID, "SquealDetail"),
+	E2E_SIGS(MSG_SQUEAL_DETAIL_ID, "SquealDetail", msg_squeal_detail_t),
 	UNS_NA(MSG_SQUEAL_DETAIL_ID, "V0_mps", "m/s", 12U, 14U, 1, 100,
-	       (int32_t)MSG_V0_MPS_MAX),
+	       (int32_t)MSG_V0_MPS_MAX, FLD(msg_squeal_detail_t, v0_mps, MSG_FIELD_U16)),
 	UNS_NA(MSG_SQUEAL_DETAIL_ID, "HopfSpeed_mps", "m/s", 26U, 14U, 1, 100,
-	       (int32_t)MSG_HOPF_SPEED_MPS_MAX),
+	       (int32_t)MSG_HOPF_SPEED_MPS_MAX,
+	       FLD(msg_squeal_detail_t, hopf_speed_mps, MSG_FIELD_U16)),
 	UNS_NA(MSG_SQUEAL_DETAIL_ID, "TriggerVelocity_mps", "m/s", 40U, 12U, 1,
-	       100, (int32_t)MSG_TRIGGER_VELOCITY_MPS_MAX),
+	       100, (int32_t)MSG_TRIGGER_VELOCITY_MPS_MAX,
+	       FLD(msg_squeal_detail_t, trigger_velocity_mps, MSG_FIELD_U16)),
 	UNS_NA(MSG_SQUEAL_DETAIL_ID, "VehicleSpeedBorder_kph", "km/h", 52U, 12U,
-	       1, 10, (int32_t)MSG_VEHICLE_SPEED_BORDER_KPH_MAX),
+	       1, 10, (int32_t)MSG_VEHICLE_SPEED_BORDER_KPH_MAX,
+	       FLD(msg_squeal_detail_t, vehicle_speed_border_kph, MSG_FIELD_U16)),
 
-	E2E_SIGS(MSG_SQUEAL_DIAG_ID, "SquealDiag"),
+	E2E_SIGS(MSG_SQUEAL_DIAG_ID, "SquealDiag", msg_squeal_diag_t),
 	{ MSG_SQUEAL_DIAG_ID, "SquealDiag_Page", "", 12U, 4U, MSG_SIG_MUXOR, 0U,
-	  1, 1, 0, 0, (int32_t)MSG_DIAG_PAGE_COUNT - 1, 0 },
+	  1, 1, 0, 0, (int32_t)MSG_DIAG_PAGE_COUNT - 1, 0,
+	  FLD(msg_squeal_diag_t, page, MSG_FIELD_U8) },
 	FAULT("Fault_SpeedStale", 0U),
 	FAULT("Fault_ForceStale", 1U),
 	FAULT("Fault_E2eSpeed", 2U),
@@ -133,40 +149,42 @@ const msg_sig_desc_t msg_sig_table[MSG_SIG_COUNT] = {
 	FAULT("Fault_CanInit", 9U),
 	FAULT("Fault_TxOverflow", 10U),
 	FAULT("Fault_SelfTest", 11U),
-	MUXED(MSG_SQUEAL_DIAG_ID, "Uptime_s", "s", 32U, 24U, MSG_DIAG_PAGE_UPTIME),
-	MUXED(MSG_SQUEAL_DIAG_ID, "BusOffCount", "", 56U, 8U, MSG_DIAG_PAGE_UPTIME),
-	MUXED(MSG_SQUEAL_DIAG_ID, "WorstTaskTime_us", "us", 32U, 16U,
-	      MSG_DIAG_PAGE_TASK),
-	MUXED(MSG_SQUEAL_DIAG_ID, "RxOverrunCount", "", 48U, 16U,
-	      MSG_DIAG_PAGE_TASK),
-	MUXED(MSG_SQUEAL_DIAG_ID, "E2eErrorCountSpeed", "", 32U, 16U,
-	      MSG_DIAG_PAGE_E2E),
-	MUXED(MSG_SQUEAL_DIAG_ID, "E2eErrorCountForce", "", 48U, 16U,
-	      MSG_DIAG_PAGE_E2E),
-	MUXED(MSG_SQUEAL_DIAG_ID, "TxOverflowCount", "", 32U, 16U,
-	      MSG_DIAG_PAGE_FRAMES),
-	MUXED(MSG_SQUEAL_DIAG_ID, "RxBadFrameCount", "", 48U, 16U,
-	      MSG_DIAG_PAGE_FRAMES),
-	MUXED_NA(MSG_SQUEAL_DIAG_ID, "HseFreq_MHz", "MHz", 32U, 8U, MSG_DIAG_PAGE_SELFTEST, 1, 10,
-		 (int32_t)MSG_HSE_FREQ_MAX, (int32_t)MSG_HSE_FREQ_NA),
-	MUXED_R(MSG_SQUEAL_DIAG_ID, "ResetCause", "", 40U, 3U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
-		(int32_t)MSG_RESET_CAUSE_MAX),
-	MUXED_NA(MSG_SQUEAL_DIAG_ID, "BorLevel", "", 43U, 3U, MSG_DIAG_PAGE_SELFTEST, 1, 1, 3,
-		 (int32_t)MSG_BOR_LEVEL_NA),
-	MUXED_R(MSG_SQUEAL_DIAG_ID, "LoopbackCan1", "", 46U, 2U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
-		(int32_t)MSG_LOOPBACK_MAX),
-	MUXED_R(MSG_SQUEAL_DIAG_ID, "LoopbackCan2", "", 48U, 2U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
-		(int32_t)MSG_LOOPBACK_MAX),
-	MUXED_NA(MSG_SQUEAL_DIAG_ID, "StackHighWater_B", "B", 50U, 14U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
-		 (int32_t)MSG_STACK_HWM_UNKNOWN - 1, (int32_t)MSG_STACK_HWM_UNKNOWN),
+	MUXED("Uptime_s", "s", 32U, 24U, MSG_DIAG_PAGE_UPTIME, MSG_FIELD_U32, uptime_s),
+	MUXED("BusOffCount", "", 56U, 8U, MSG_DIAG_PAGE_UPTIME, MSG_FIELD_U8, bus_off_count),
+	MUXED("WorstTaskTime_us", "us", 32U, 16U, MSG_DIAG_PAGE_TASK, MSG_FIELD_U16,
+	      worst_task_time_us),
+	MUXED("RxOverrunCount", "", 48U, 16U, MSG_DIAG_PAGE_TASK, MSG_FIELD_U16,
+	      rx_overrun_count),
+	MUXED("E2eErrorCountSpeed", "", 32U, 16U, MSG_DIAG_PAGE_E2E, MSG_FIELD_U16,
+	      e2e_error_count_speed),
+	MUXED("E2eErrorCountForce", "", 48U, 16U, MSG_DIAG_PAGE_E2E, MSG_FIELD_U16,
+	      e2e_error_count_force),
+	MUXED("TxOverflowCount", "", 32U, 16U, MSG_DIAG_PAGE_FRAMES, MSG_FIELD_U16,
+	      tx_overflow_count),
+	MUXED("RxBadFrameCount", "", 48U, 16U, MSG_DIAG_PAGE_FRAMES, MSG_FIELD_U16,
+	      rx_bad_frame_count),
+	MUXED_NA("HseFreq_MHz", "MHz", 32U, 8U, MSG_DIAG_PAGE_SELFTEST, 1, 10,
+		 (int32_t)MSG_HSE_FREQ_MAX, (int32_t)MSG_HSE_FREQ_NA, MSG_FIELD_U8, hse_freq_100khz),
+	MUXED_R("ResetCause", "", 40U, 3U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
+		(int32_t)MSG_RESET_CAUSE_MAX, reset_cause),
+	MUXED_NA("BorLevel", "", 43U, 3U, MSG_DIAG_PAGE_SELFTEST, 1, 1, 3,
+		 (int32_t)MSG_BOR_LEVEL_NA, MSG_FIELD_U8, bor_level),
+	MUXED_R("LoopbackCan1", "", 46U, 2U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
+		(int32_t)MSG_LOOPBACK_MAX, loopback_can1),
+	MUXED_R("LoopbackCan2", "", 48U, 2U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
+		(int32_t)MSG_LOOPBACK_MAX, loopback_can2),
+	MUXED_NA("StackHighWater_B", "B", 50U, 14U, MSG_DIAG_PAGE_SELFTEST, 1, 1,
+		 (int32_t)MSG_STACK_HWM_UNKNOWN - 1, (int32_t)MSG_STACK_HWM_UNKNOWN, MSG_FIELD_U16,
+		 stack_high_water_b),
 
-	E2E_SIGS(MSG_SQUEAL_DETAIL2_ID, "SquealDetail2"),
+	E2E_SIGS(MSG_SQUEAL_DETAIL2_ID, "SquealDetail2", msg_squeal_detail2_t),
 	UNS_NA(MSG_SQUEAL_DETAIL2_ID, "Force_N", "N", 16U, 16U, 1, 2,
-	       (int32_t)MSG_FORCE_N_MAX),
+	       (int32_t)MSG_FORCE_N_MAX, FLD(msg_squeal_detail2_t, force_n, MSG_FIELD_U16)),
 	UNS_NA(MSG_SQUEAL_DETAIL2_ID, "HopfForce_N", "N", 32U, 16U, 1, 1,
-	       (int32_t)MSG_HOPF_FORCE_N_MAX),
+	       (int32_t)MSG_HOPF_FORCE_N_MAX, FLD(msg_squeal_detail2_t, hopf_force_n, MSG_FIELD_U16)),
 	UNS_NA(MSG_SQUEAL_DETAIL2_ID, "LcAmplitude_um", "um", 48U, 16U, 1, 10,
-	       (int32_t)MSG_LC_AMPLITUDE_UM_MAX),
+	       (int32_t)MSG_LC_AMPLITUDE_UM_MAX,
+	       FLD(msg_squeal_detail2_t, lc_amplitude_um, MSG_FIELD_U16)),
 };
 
 const msg_desc_t msg_table[MSG_COUNT] = {
@@ -187,79 +205,11 @@ const msg_desc_t msg_table[MSG_COUNT] = {
 	  N_D2 },
 };
 
-/* ---- where each signal's raw value lives in its message's struct -------- */
+/* ---- pack/unpack's access to the struct fields -------------------------- */
 
 /* Indices into msg_table, in its order. */
 enum { IX_DISC_SPEED, IX_PAD_FORCE, IX_SQUEAL_STATUS, IX_SQUEAL_DETAIL, IX_SQUEAL_DIAG,
        IX_SQUEAL_DETAIL2 };
-
-typedef enum {
-	FIELD_U8,
-	FIELD_U16,
-	FIELD_S16,
-	FIELD_U32, /* a value beyond INT32_MAX is out of every range */
-	FIELD_BIT  /* bit `bit` of a uint16_t (SquealDiag's fault_bits) */
-} field_kind_t;
-
-typedef struct {
-	uint8_t offset; /* of the field in its message's struct */
-	uint8_t kind;   /* field_kind_t */
-	uint8_t bit;    /* FIELD_BIT */
-} sig_field_t;
-
-#define FLD(type, field, kind) { (uint8_t)offsetof(type, field), (uint8_t)(kind), 0U }
-#define FLD_E2E(type) FLD(type, crc, FIELD_U8), FLD(type, counter, FIELD_U8)
-#define FLD_FAULT(bit) { (uint8_t)offsetof(msg_squeal_diag_t, fault_bits), (uint8_t)FIELD_BIT, (bit) }
-
-/* In msg_sig_table's order: the one map from signals to struct fields. */
-static const sig_field_t sig_field[] = {
-	FLD_E2E(msg_disc_speed_t),
-	FLD(msg_disc_speed_t, disc_speed_radps, FIELD_U16),
-
-	FLD_E2E(msg_pad_force_t),
-	FLD(msg_pad_force_t, pad_force_n, FIELD_U16),
-
-	FLD_E2E(msg_squeal_status_t),
-	FLD(msg_squeal_status_t, squeal_state, FIELD_U8),
-	FLD(msg_squeal_status_t, warning_level, FIELD_U8),
-	FLD(msg_squeal_status_t, basin_ratio, FIELD_U16),
-	FLD(msg_squeal_status_t, hopf_margin_mps, FIELD_S16),
-	FLD(msg_squeal_status_t, border_margin_sigma, FIELD_U8),
-
-	FLD_E2E(msg_squeal_detail_t),
-	FLD(msg_squeal_detail_t, v0_mps, FIELD_U16),
-	FLD(msg_squeal_detail_t, hopf_speed_mps, FIELD_U16),
-	FLD(msg_squeal_detail_t, trigger_velocity_mps, FIELD_U16),
-	FLD(msg_squeal_detail_t, vehicle_speed_border_kph, FIELD_U16),
-
-	FLD_E2E(msg_squeal_diag_t),
-	FLD(msg_squeal_diag_t, page, FIELD_U8),
-	FLD_FAULT(0U), FLD_FAULT(1U), FLD_FAULT(2U), FLD_FAULT(3U),
-	FLD_FAULT(4U), FLD_FAULT(5U), FLD_FAULT(6U), FLD_FAULT(7U),
-	FLD_FAULT(8U), FLD_FAULT(9U), FLD_FAULT(10U), FLD_FAULT(11U),
-	FLD(msg_squeal_diag_t, uptime_s, FIELD_U32),
-	FLD(msg_squeal_diag_t, bus_off_count, FIELD_U8),
-	FLD(msg_squeal_diag_t, worst_task_time_us, FIELD_U16),
-	FLD(msg_squeal_diag_t, rx_overrun_count, FIELD_U16),
-	FLD(msg_squeal_diag_t, e2e_error_count_speed, FIELD_U16),
-	FLD(msg_squeal_diag_t, e2e_error_count_force, FIELD_U16),
-	FLD(msg_squeal_diag_t, tx_overflow_count, FIELD_U16),
-	FLD(msg_squeal_diag_t, rx_bad_frame_count, FIELD_U16),
-	FLD(msg_squeal_diag_t, hse_freq_100khz, FIELD_U8),
-	FLD(msg_squeal_diag_t, reset_cause, FIELD_U8),
-	FLD(msg_squeal_diag_t, bor_level, FIELD_U8),
-	FLD(msg_squeal_diag_t, loopback_can1, FIELD_U8),
-	FLD(msg_squeal_diag_t, loopback_can2, FIELD_U8),
-	FLD(msg_squeal_diag_t, stack_high_water_b, FIELD_U16),
-
-	FLD_E2E(msg_squeal_detail2_t),
-	FLD(msg_squeal_detail2_t, force_n, FIELD_U16),
-	FLD(msg_squeal_detail2_t, hopf_force_n, FIELD_U16),
-	FLD(msg_squeal_detail2_t, lc_amplitude_um, FIELD_U16),
-};
-
-_Static_assert(sizeof sig_field / sizeof sig_field[0] == MSG_SIG_COUNT,
-	       "one field per signal of msg_sig_table");
 
 /* the most signals of one message (SquealDiag's), for a frame's raw values */
 #define SIGS_PER_MSG_MAX N_DG
@@ -268,23 +218,23 @@ _Static_assert((N_DS <= N_DG) && (N_PF <= N_DG) && (N_ST <= N_DG) && (N_DT <= N_
 
 /* A field's raw signal value, from the bytes of its message's struct (the
  * field is of f's kind and alignment: the table says so). */
-static int32_t sig_field_get(const uint8_t *msg, const sig_field_t *f)
+static int32_t sig_field_get(const uint8_t *msg, const msg_sig_field_t *f)
 {
 	const uint8_t *at = &msg[f->offset];
 	int32_t raw;
 
-	switch ((field_kind_t)f->kind) {
-	case FIELD_U8:
+	switch (f->kind) {
+	case MSG_FIELD_U8:
 		raw = (int32_t)*at;
 		break;
-	case FIELD_U16:
-	case FIELD_S16:
-	case FIELD_BIT: {
+	case MSG_FIELD_U16:
+	case MSG_FIELD_S16:
+	case MSG_FIELD_BIT: {
 		const uint16_t v = *(const uint16_t *)(const void *)at;
 
-		if ((field_kind_t)f->kind == FIELD_S16) {
+		if (f->kind == MSG_FIELD_S16) {
 			raw = (int32_t)(int16_t)v; /* two's complement: well defined */
-		} else if ((field_kind_t)f->kind == FIELD_BIT) {
+		} else if (f->kind == MSG_FIELD_BIT) {
 			raw = (int32_t)(((uint32_t)v >> f->bit) & 1U);
 		} else {
 			raw = (int32_t)v;
@@ -302,19 +252,19 @@ static int32_t sig_field_get(const uint8_t *msg, const sig_field_t *f)
 }
 
 /* Store a received raw value (of the signal's range) into its field. */
-static void sig_field_put(uint8_t *msg, const sig_field_t *f, int32_t raw)
+static void sig_field_put(uint8_t *msg, const msg_sig_field_t *f, int32_t raw)
 {
 	uint8_t *at = &msg[f->offset];
 
-	if ((field_kind_t)f->kind == FIELD_U8) {
+	if (f->kind == MSG_FIELD_U8) {
 		*at = (uint8_t)raw;
-	} else if ((field_kind_t)f->kind == FIELD_U32) {
+	} else if (f->kind == MSG_FIELD_U32) {
 		*(uint32_t *)(void *)at = (uint32_t)raw;
 	} else {
 		uint16_t *v = (uint16_t *)(void *)at;
 
-		if ((field_kind_t)f->kind != FIELD_BIT) {
-			*v = (uint16_t)raw; /* FIELD_S16: two's complement */
+		if (f->kind != MSG_FIELD_BIT) {
+			*v = (uint16_t)raw; /* MSG_FIELD_S16: two's complement */
 		} else {
 			/* bit 0's signal comes first: it starts the word afresh */
 			const uint32_t others = (f->bit == 0U) ? 0U : ((uint32_t)*v & ~(1U << f->bit));
@@ -411,7 +361,7 @@ static int pack_msg(const msg_desc_t *m, const uint8_t *msg, bool fields_ok,
 		if (!sig_on_page(s, page)) {
 			continue;
 		}
-		raw = sig_field_get(msg, &sig_field[i]);
+		raw = sig_field_get(msg, &s->field);
 		if (!sig_in_range(s, raw)) {
 			return SQ_ERANGE;
 		}
@@ -459,8 +409,9 @@ static int unpack_msg(const msg_desc_t *m, const uint8_t *data, uint8_t dlc, uin
 		return SQ_EBADMSG;
 	}
 	for (i = 0U; i < m->sig_count; i++) {
-		sig_field_put(msg, &sig_field[m->sig_first + i],
-			      sig_on_page(&msg_sig_table[m->sig_first + i], page) ? raw[i] : 0);
+		const msg_sig_desc_t *s = &msg_sig_table[m->sig_first + i];
+
+		sig_field_put(msg, &s->field, sig_on_page(s, page) ? raw[i] : 0);
 	}
 	return SQ_OK;
 }

@@ -258,6 +258,19 @@ int msg_pad_force_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
 #define MSG_SIG_MUXED   0x08U /* present only when the multiplexor == mux_value */
 #define MSG_SIG_E2E     0x10U /* E2E CRC or counter                          */
 
+/* Where pack()/unpack() keep a signal's raw value in its message's struct. */
+#define MSG_FIELD_U8  0U /* uint8_t                                          */
+#define MSG_FIELD_U16 1U /* uint16_t                                         */
+#define MSG_FIELD_S16 2U /* int16_t                                          */
+#define MSG_FIELD_U32 3U /* uint32_t (a value beyond INT32_MAX is out of range) */
+#define MSG_FIELD_BIT 4U /* bit `bit` of a uint16_t (SquealDiag's fault_bits) */
+
+typedef struct {
+	uint8_t offset;       /* offsetof the field in the message's struct    */
+	uint8_t kind;         /* MSG_FIELD_*                                   */
+	uint8_t bit;          /* with MSG_FIELD_BIT                            */
+} msg_sig_field_t;
+
 typedef struct {
 	uint16_t msg_id;      /* CAN identifier of the message                 */
 	const char *name;     /* signal name, exactly as in the DBC            */
@@ -272,6 +285,7 @@ typedef struct {
 	int32_t raw_min;      /* valid raw range (NA excluded)                 */
 	int32_t raw_max;
 	int32_t na_raw;       /* with MSG_SIG_HAS_NA                           */
+	msg_sig_field_t field; /* its field in the msg_*_t struct              */
 } msg_sig_desc_t;
 
 typedef struct {
