@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Pack/unpack of the messages in squeal.dbc. One descriptor table drives
- * the bit layout of every signal (start bit, length, sign, range), so a
- * layout lives in exactly one place in C and a test compares that place
- * with the DBC. The per-message functions only map struct fields to and
- * from the table's raw values.
+ * the bit layout of every signal (start bit, length, sign, range) and the
+ * struct field that holds its raw value, so a layout lives in exactly one
+ * place in C and a test compares that place with the DBC. Every message
+ * goes through the same pack_msg()/unpack_msg(); a message's own functions
+ * add only its value rules beyond the signals' ranges.
  */
 #include "squeal_msgs.h"
 
