@@ -67,7 +67,8 @@ int squeal_model_params_check(const squeal_params_t *params)
 	return SQ_OK;
 }
 
-int squeal_model_point_check(const squeal_point_t *point)
+/* The operating point against the documented domain: SQ_OK or SQ_EINVAL. */
+static int point_check(const squeal_point_t *point)
 {
 	if (!in_range(point->v0_mps, 0, V0_MAX) || !in_range(point->force_n, 0, FORCE_MAX)) {
 		return SQ_EINVAL;
@@ -98,7 +99,7 @@ void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state)
 static squeal_case_t model_case(const squeal_params_t *params, const squeal_point_t *point)
 {
 	if ((squeal_model_params_check(params) != SQ_OK) ||
-	    (squeal_model_point_check(point) != SQ_OK)) {
+	    (point_check(point) != SQ_OK)) {
 		return SQUEAL_CASE_INVALID;
 	}
 	/* both are >= 0 here: "not > 0" is "== 0" without an exact float

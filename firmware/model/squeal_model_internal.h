@@ -44,9 +44,6 @@ typedef enum {
 /* A result with this state, no flags and every value 0. */
 void squeal_model_result_clear(squeal_result_t *out, squeal_state_t state);
 
-/* The operating point against the documented domain: SQ_OK or SQ_EINVAL. */
-int squeal_model_point_check(const squeal_point_t *point);
-
 /*
  * The log-domain terms every border test is built from (valid calibration
  * and point with v0, N, a, delta_mu > 0): c2 = ln(2 D w0 m / (a N dmu)) and

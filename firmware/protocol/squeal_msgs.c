@@ -209,8 +209,12 @@ const msg_desc_t msg_table[MSG_COUNT] = {
 /* ---- pack/unpack's access to the struct fields -------------------------- */
 
 /* Indices into msg_table, in its order. */
-enum { IX_DISC_SPEED, IX_PAD_FORCE, IX_SQUEAL_STATUS, IX_SQUEAL_DETAIL, IX_SQUEAL_DIAG,
-       IX_SQUEAL_DETAIL2 };
+#define IX_DISC_SPEED     0U
+#define IX_PAD_FORCE      1U
+#define IX_SQUEAL_STATUS  2U
+#define IX_SQUEAL_DETAIL  3U
+#define IX_SQUEAL_DIAG    4U
+#define IX_SQUEAL_DETAIL2 5U
 
 /* the most signals of one message (SquealDiag's), for a frame's raw values */
 #define SIGS_PER_MSG_MAX N_DG
