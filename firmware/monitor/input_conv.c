@@ -565,7 +565,7 @@ static void unit_scale(input_unit_t unit, const input_geom_t *g, uint32_t share_
 		{ 6894757U, 1000U },        /* psi                      */
 		{ 1000U, 1U },              /* Nm -> mNm                */
 	};
-	_Static_assert((INPUT_UNIT_NM == 11) && (INPUT_UNIT_COUNT == 12),
+	_Static_assert((unsigned int)INPUT_UNIT_COUNT == 12U,
 		       "one factor per input_unit_t, in its order");
 
 	big_mul_u32(kn, factor[unit].num);
