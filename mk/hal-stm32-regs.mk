@@ -14,8 +14,10 @@ build/test/tests/hal/stm32f4/test_$(1): tests/hal/stm32f4/test_$(1).c hal/stm32f
 	$$(CC) $$(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $$@ tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $(2) -lcmocka
 endef
 REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest systick
-$(foreach m,$(filter-out selftest,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
+$(foreach m,$(filter-out selftest clock,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
 $(eval $(call regsim_f4_test,selftest,tests/support/test_contract.c))
+# the clock rates it sets live in the F4/F103 common part
+$(eval $(call regsim_f4_test,clock,hal/stm32f4/chip_common.c))
 
 # board.c's main() built as board_main(): the test has its own
 build/test/regsim/hal/stm32f4/board.o: hal/stm32f4/board.c $(REGSIM_F4_DEPS)
@@ -29,11 +31,11 @@ TEST_PROGS += $(foreach m,$(REGSIM_F4_MODULES),build/test/tests/hal/stm32f4/test
 
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
 # answer SQ_ENODEV without touching one)
-build/test/tests/hal/stm32f103/test_chip_f1: tests/hal/stm32f103/test_chip_f1.c hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c \
+build/test/tests/hal/stm32f103/test_chip_f1: tests/hal/stm32f103/test_chip_f1.c hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/chip_common.c \
 		hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c \
 		tests/support/regsim/f103/chip.h hal/stm32f103/stm32f103xb/chip.h
 	@mkdir -p $(@D)
 	$(CC) $(REGSIM_CFLAGS) -DBXCAN_SIM -Itests/support/regsim/f103 -o $@ tests/hal/stm32f103/test_chip_f1.c \
-		hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c \
-		hal/common/hal_can_common.c -lcmocka
+		hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/chip_common.c hal/stm32f4/bxcan.c \
+		hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c -lcmocka
 TEST_PROGS += build/test/tests/hal/stm32f103/test_chip_f1

@@ -44,8 +44,9 @@ CANFLAGS_stm32g474 :=
 # the rules every backend shares (hal/common/: frame and filter checks, the
 # bus-state change)
 HAL_COMMON := $(sort $(wildcard hal/common/*.c))
-HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN) clock.c can_pins.c flash.c) $(HAL_COMMON)
-HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN)) $(sort $(wildcard hal/stm32f103/*.c)) $(HAL_COMMON)
+# chip_common.c: the F4 and F103 clock rates and flash unlock they share
+HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN) chip_common.c clock.c can_pins.c flash.c) $(HAL_COMMON)
+HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN) chip_common.c) $(sort $(wildcard hal/stm32f103/*.c)) $(HAL_COMMON)
 # the G4: the generic files, its chip part and FDCAN driver (hal/stm32g4/)
 HAL_SRCS_stm32g474 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32g4/*.c)) $(HAL_COMMON)
 # Test images only (-DSQ_TARGET_TEST): semihosting, the drivers' event sink

@@ -37,6 +37,7 @@
 #include <stdint.h>
 
 #include "sq_status.h"
+#include "squeal_state.h" /* squeal_state_t: the values of the CAN signal SquealState */
 
 #if defined(SQUEAL_NUMERIC_FIXED)
 typedef int32_t squeal_num_t;
@@ -62,14 +63,6 @@ typedef float squeal_num_t;
 #define SQUEAL_Q_AMPL_UM   12 /* um,    range 524288,  res 2.4e-4 um      */
 #define SQUEAL_Q_RATIO     24 /* -,     range 128,     res 6.0e-8         */
 
-/* Class of an operating point. Values are the CAN signal SquealState's. */
-typedef enum {
-	SQUEAL_STATE_STABLE = 0,      /* no sliding cycle below the stick line  */
-	SQUEAL_STATE_BISTABLE = 1,    /* stable, inside an unstable cycle        */
-	SQUEAL_STATE_UNSTABLE = 2,    /* steady sliding unstable (Q <= 1/2)      */
-	SQUEAL_STATE_NOT_SLIDING = 3, /* v0 == 0 or no pad force                 */
-	SQUEAL_STATE_INVALID = 15     /* input outside the documented domain     */
-} squeal_state_t;
 
 typedef enum {
 	SQUEAL_CRITERION_EXACT = 0, /* I1(s)/s, first-order averaging, default   */

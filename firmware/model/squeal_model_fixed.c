@@ -24,15 +24,6 @@
 
 #include "sq_contract.h"
 
-/* Domain limits in raw units of each field's Q-format (squeal_model.h). */
-#define MASS_MAX_RAW ((int32_t)10000 << SQUEAL_Q_MASS)
-#define OMEGA0_MAX_RAW ((int32_t)500000 << SQUEAL_Q_OMEGA0)
-#define DAMPING_MAX_RAW ((int32_t)1 << SQUEAL_Q_DAMPING)
-#define MU_MAX_RAW ((int32_t)3 << (SQUEAL_Q_MU - 1))      /* 1.5 */
-#define SLOPE_MAX_RAW ((int32_t)20 << SQUEAL_Q_SLOPE)
-#define V0_MAX_RAW ((int32_t)100 << SQUEAL_Q_V0)
-#define FORCE_MAX_RAW ((int32_t)500000 << SQUEAL_Q_FORCE)
-
 #define Q32_ONE FX_ONE_Q32
 #define LN8_Q32 ((int64_t)8931133415)        /* ln 8 * 2^32 */
 #define LN_1E6_Q32 ((int64_t)59337166024)    /* ln 1e6 * 2^32 */
@@ -41,36 +32,6 @@
 #define CELL_SHIFT (32 - SQ_BESSEL_STEP_LOG2)   /* Q32 -> table index */
 #define Q28_ONE ((int64_t)1 << 28)
 #define SOLVE_MAX_ITER 64
-#define RATIO_ONE ((int32_t)1 << SQUEAL_Q_RATIO)
-
-static bool in_range(int32_t x, int32_t lo, int32_t hi)
-{
-	return (x >= lo) && (x <= hi);
-}
-
-int squeal_model_params_check(const squeal_params_t *params)
-{
-	HAL_REQUIRE(params != NULL);
-	if (!in_range(params->mass_kg, 1, MASS_MAX_RAW) ||
-	    !in_range(params->omega0_radps, 1, OMEGA0_MAX_RAW) ||
-	    !in_range(params->damping, 1, DAMPING_MAX_RAW) ||
-	    !in_range(params->mu_inf, 0, MU_MAX_RAW) ||
-	    !in_range(params->delta_mu, -MU_MAX_RAW, MU_MAX_RAW) ||
-	    !in_range(params->slope_spm, 0, SLOPE_MAX_RAW) ||
-	    ((int64_t)params->mu_inf + params->delta_mu < 0)) {
-		return SQ_EINVAL;
-	}
-	return SQ_OK;
-}
-
-int squeal_model_point_check(const squeal_point_t *point)
-{
-	if (!in_range(point->v0_mps, 0, V0_MAX_RAW) ||
-	    !in_range(point->force_n, 0, FORCE_MAX_RAW)) {
-		return SQ_EINVAL;
-	}
-	return SQ_OK;
-}
 
 /* ln of a positive Q-format field, Q32 */
 static int64_t ln_field(int32_t raw, int32_t q)
@@ -249,6 +210,9 @@ static void log_terms_fixed(const squeal_params_t *p, const squeal_point_t *poin
  * classification, which inlines it, and squeal_model_stable_border). */
 static inline void stable_border_fixed(squeal_log_terms_t *t, squeal_criterion_t criterion)
 {
+	int64_t rhs;
+	int64_t dh;
+
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
 		/* ln 2Q >= ln(1 + s^2/8); s in Q16 keeps s^2 in 64 bits */
 		const uint64_t s16 = (uint64_t)t->s >> 16;
@@ -258,15 +222,11 @@ static inline void stable_border_fixed(squeal_log_terms_t *t, squeal_criterion_t
 		const uint64_t q = (((uint64_t)t->s >> 2) << 21) / (u >> 11);
 		const uint64_t one_minus_q = ((uint64_t)1 << 32) - q; /* q < 2^32 */
 
-		t->stable_lhs = t->c2 + t->s;
-		t->stable_rhs = fx_ln_u64(u, 32);
-		t->stable_dh = -(int64_t)one_minus_q;
+		rhs = fx_ln_u64(u, 32);
+		dh = -(int64_t)one_minus_q;
 	} else {
-		int64_t h;
-		int64_t dh;
-
 		/* c2 >= H(s) */
-		squeal_model_bessel_h(t->s, &h, &dh);
+		squeal_model_bessel_h(t->s, &rhs, &dh);
 		/* H' lies in [-1, 0]; keep the interpolated value there */
 		if (dh < -Q32_ONE) {
 			dh = -Q32_ONE;
@@ -275,18 +235,8 @@ static inline void stable_border_fixed(squeal_log_terms_t *t, squeal_criterion_t
 		} else {
 			/* in range */
 		}
-		t->stable_lhs = t->c2;
-		t->stable_rhs = h;
-		t->stable_dh = dh;
 	}
-	t->has_border = true;
-}
-
-void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
-{
-	if (!t->has_border) {
-		stable_border_fixed(t, criterion);
-	}
+	squeal_model_border_set(t, criterion, rhs, dh);
 }
 
 void squeal_model_classify_sliding(const squeal_params_t *p,
@@ -294,13 +244,13 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 				   squeal_criterion_t criterion,
 				   squeal_result_t *out, squeal_log_terms_t *t)
 {
+	int64_t x = 0; /* the cycle x, Q32 (cycle_ln_x) */
+	int64_t ln_x;
 	int64_t ln_a;
 	int64_t ln_w0;
 	int64_t ln_force;
 	int64_t c2;
 	int64_t lq2;
-	int64_t x = 0;
-	int64_t ln_x;
 	bool stable;
 	bool sat;
 
@@ -356,16 +306,15 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 		SQUEAL_Q_RATIO, &sat);
 	out->flags |= sat ? SQUEAL_SAT_BASIN : 0U;
 
-	/* keep rho < 1 exactly for bistable and >= 1 for stable (the class
-	 * comes from the border test, rho from the solved cycle) */
-	if (!stable && (out->basin_ratio >= RATIO_ONE)) {
-		out->basin_ratio = RATIO_ONE - 1;
-	} else if (!stable && (out->basin_ratio <= 0)) {
-		out->basin_ratio = 1;
-	} else if (stable && (out->basin_ratio < RATIO_ONE)) {
-		out->basin_ratio = RATIO_ONE;
-	} else {
-		/* rho already on the side of its class */
+	squeal_model_basin_side(out, stable);
+}
+
+/* The border an unstable point's classification stopped before, for the
+ * uncertainty propagation (squeal_model_internal.h). */
+void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
+{
+	if (!t->has_border) {
+		stable_border_fixed(t, criterion);
 	}
 }
 

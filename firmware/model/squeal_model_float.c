@@ -25,15 +25,6 @@
 
 #include "sq_contract.h"
 
-/* Domain limits (see squeal_model.h). */
-#define MASS_MAX_KG 10000.0f
-#define OMEGA0_MAX_RADPS 500000.0f
-#define DAMPING_MAX 1.0f
-#define MU_MAX 1.5f
-#define SLOPE_MAX_SPM 20.0f
-#define V0_MAX_MPS 100.0f
-#define FORCE_MAX_N 500000.0f
-
 /* 0.5 ln(2 / pi): the constant of H(s) = G(s) - s for large s */
 #define HALF_LN_2_OVER_PI (-0.225791352644727f)
 /* Below this s, G is summed from its power series; above, the asymptotic
@@ -46,72 +37,21 @@
 /* 1 / ((k+1)(k+2)) and 1 / ((k+1)(k+3)), k = 0..63: the ratios of
  * consecutive terms of the series of S(t) and S'(t), so that summing them
  * multiplies instead of dividing (a float division costs 14 cycles on the
- * Cortex-M4F, a multiplication 1). */
-static const float series_ratio_s[SERIES_MAX_TERMS] = {
-	5.000000000e-01f, 1.666666716e-01f, 8.333333582e-02f, 5.000000075e-02f,
-	3.333333507e-02f, 2.380952425e-02f, 1.785714366e-02f, 1.388888899e-02f,
-	1.111111138e-02f, 9.090908803e-03f, 7.575757802e-03f, 6.410256494e-03f,
-	5.494505633e-03f, 4.761904944e-03f, 4.166666884e-03f, 3.676470602e-03f,
-	3.267973894e-03f, 2.923976630e-03f, 2.631579060e-03f, 2.380952472e-03f,
-	2.164502162e-03f, 1.976284664e-03f, 1.811594237e-03f, 1.666666707e-03f,
-	1.538461540e-03f, 1.424501417e-03f, 1.322751283e-03f, 1.231527072e-03f,
-	1.149425283e-03f, 1.075268839e-03f, 1.008064486e-03f, 9.469697252e-04f,
-	8.912655758e-04f, 8.403361426e-04f, 7.936508046e-04f, 7.507507689e-04f,
-	7.112375461e-04f, 6.747638108e-04f, 6.410256610e-04f, 6.097560981e-04f,
-	5.807200796e-04f, 5.537098623e-04f, 5.285412190e-04f, 5.050505279e-04f,
-	4.830917751e-04f, 4.625346919e-04f, 4.432623973e-04f, 4.251700593e-04f,
-	4.081632651e-04f, 3.921568568e-04f, 3.770739131e-04f, 3.628447012e-04f,
-	3.494060074e-04f, 3.367003228e-04f, 3.246753186e-04f, 3.132832062e-04f,
-	3.024803300e-04f, 2.922267595e-04f, 2.824858821e-04f, 2.732240537e-04f,
-	2.644103661e-04f, 2.560163848e-04f, 2.480158873e-04f, 2.403846156e-04f,
+ * Cortex-M4F, a multiplication 1). Constant expressions: the compiler's
+ * one correctly rounded float division of two exact integers each. */
+#define RATIO_S(k)  (1.0f / (float)(((k) + 1) * ((k) + 2)))
+#define RATIO_DS(k) (1.0f / (float)(((k) + 1) * ((k) + 3)))
+#define RATIOS_1(k)  { RATIO_S(k), RATIO_DS(k) }
+#define RATIOS_4(k)  RATIOS_1(k), RATIOS_1((k) + 1), RATIOS_1((k) + 2), RATIOS_1((k) + 3)
+#define RATIOS_16(k) RATIOS_4(k), RATIOS_4((k) + 4), RATIOS_4((k) + 8), RATIOS_4((k) + 12)
+_Static_assert(SERIES_MAX_TERMS == 64, "four RATIOS_16 fill the series table");
+typedef struct {
+	float s;  /* 1 / ((k+1)(k+2)) */
+	float ds; /* 1 / ((k+1)(k+3)) */
+} series_ratio_t;
+static const series_ratio_t series_ratio[SERIES_MAX_TERMS] = {
+	RATIOS_16(0), RATIOS_16(16), RATIOS_16(32), RATIOS_16(48)
 };
-static const float series_ratio_ds[SERIES_MAX_TERMS] = {
-	3.333333433e-01f, 1.250000000e-01f, 6.666667014e-02f, 4.166666791e-02f,
-	2.857142873e-02f, 2.083333395e-02f, 1.587301679e-02f, 1.250000019e-02f,
-	1.010101009e-02f, 8.333333768e-03f, 6.993006915e-03f, 5.952381063e-03f,
-	5.128205288e-03f, 4.464285914e-03f, 3.921568859e-03f, 3.472222248e-03f,
-	3.095975146e-03f, 2.777777845e-03f, 2.506265650e-03f, 2.272727201e-03f,
-	2.070393413e-03f, 1.893939450e-03f, 1.739130472e-03f, 1.602564123e-03f,
-	1.481481479e-03f, 1.373626408e-03f, 1.277139178e-03f, 1.190476236e-03f,
-	1.112347003e-03f, 1.041666721e-03f, 9.775171056e-04f, 9.191176505e-04f,
-	8.658008883e-04f, 8.169934736e-04f, 7.722007576e-04f, 7.309941575e-04f,
-	6.930006784e-04f, 6.578947650e-04f, 6.253908505e-04f, 5.952381180e-04f,
-	5.672149709e-04f, 5.411255406e-04f, 5.167958443e-04f, 4.940711660e-04f,
-	4.728132335e-04f, 4.528985592e-04f, 4.342162283e-04f, 4.166666768e-04f,
-	4.001600610e-04f, 3.846153850e-04f, 3.699593071e-04f, 3.561253543e-04f,
-	3.430531651e-04f, 3.306878207e-04f, 3.189792624e-04f, 3.078817681e-04f,
-	2.973535447e-04f, 2.873563208e-04f, 2.778549679e-04f, 2.688172099e-04f,
-	2.602133609e-04f, 2.520161215e-04f, 2.442002587e-04f, 2.367424313e-04f,
-};
-
-static bool in_range(float x, float lo, float hi)
-{
-	return sq_isfinitef(x) && (x >= lo) && (x <= hi);
-}
-
-int squeal_model_params_check(const squeal_params_t *params)
-{
-	HAL_REQUIRE(params != NULL);
-	if (!in_range(params->mass_kg, FLT_TRUE_MIN, MASS_MAX_KG) ||
-	    !in_range(params->omega0_radps, FLT_TRUE_MIN, OMEGA0_MAX_RADPS) ||
-	    !in_range(params->damping, FLT_TRUE_MIN, DAMPING_MAX) ||
-	    !in_range(params->mu_inf, 0.0f, MU_MAX) ||
-	    !in_range(params->delta_mu, -MU_MAX, MU_MAX) ||
-	    !in_range(params->slope_spm, 0.0f, SLOPE_MAX_SPM) ||
-	    !(params->mu_inf + params->delta_mu >= 0.0f)) {
-		return SQ_EINVAL;
-	}
-	return SQ_OK;
-}
-
-int squeal_model_point_check(const squeal_point_t *point)
-{
-	if (!in_range(point->v0_mps, 0.0f, V0_MAX_MPS) ||
-	    !in_range(point->force_n, 0.0f, FORCE_MAX_N)) {
-		return SQ_EINVAL;
-	}
-	return SQ_OK;
-}
 
 /*
  * G(x) = ln(2 I1(x)/x) and its derivative.
@@ -134,10 +74,10 @@ void squeal_model_bessel_g(float x, float *g_out, float *dg_out, float *h_out)
 		int32_t k;
 
 		for (k = 0; k < SERIES_MAX_TERMS; k++) {
-			term *= t * series_ratio_s[k];
+			term *= t * series_ratio[k].s;
 			sm1 += term;
 			ds += dterm;
-			dterm *= t * series_ratio_ds[k];
+			dterm *= t * series_ratio[k].ds;
 			if (term <= sm1 * 1.0e-9f) {
 				break;
 			}
@@ -276,24 +216,22 @@ static void log_terms_float(const squeal_params_t *p, const squeal_point_t *poin
 static inline void stable_border_float(squeal_log_terms_t *t, squeal_criterion_t criterion)
 {
 	const float s = t->s;
+	float rhs;
+	float dh;
 
 	if (criterion == SQUEAL_CRITERION_CUBIC) {
 		/* ln 2Q >= ln(1 + s^2/8) */
-		t->stable_lhs = t->c2 + s;
-		t->stable_rhs = sq_log1pf(0.125f * s * s);
-		t->stable_dh = 0.25f * s / (1.0f + 0.125f * s * s) - 1.0f;
+		rhs = sq_log1pf(0.125f * s * s);
+		dh = 0.25f * s / (1.0f + 0.125f * s * s) - 1.0f;
 	} else {
 		float g;
 		float dg;
-		float h;
 
 		/* c2 >= H(s) */
-		squeal_model_bessel_g(s, &g, &dg, &h);
-		t->stable_lhs = t->c2;
-		t->stable_rhs = h;
-		t->stable_dh = dg - 1.0f;
+		squeal_model_bessel_g(s, &g, &dg, &rhs);
+		dh = dg - 1.0f;
 	}
-	t->has_border = true;
+	squeal_model_border_set(t, criterion, rhs, dh);
 }
 
 void squeal_model_stable_border(squeal_log_terms_t *t, squeal_criterion_t criterion)
@@ -341,20 +279,7 @@ void squeal_model_classify_sliding(const squeal_params_t *p,
 	out->state = stable ? SQUEAL_STATE_STABLE : SQUEAL_STATE_BISTABLE;
 	fill_cycle(p, point, lq2, criterion, out);
 
-	/* The class is decided by the border comparison above; the basin ratio
-	 * comes from the solved cycle. Within the solver's last bit they could
-	 * disagree: keep rho < 1 exactly for bistable, >= 1 for stable. */
-	if ((out->flags & SQUEAL_HAS_BASIN) != 0U) {
-		if (!stable && !(out->basin_ratio < 1.0f)) {
-			out->basin_ratio = 1.0f - FLT_EPSILON / 2.0f;
-		} else if (!stable && !(out->basin_ratio > 0.0f)) {
-			out->basin_ratio = FLT_TRUE_MIN;
-		} else if (stable && (out->basin_ratio < 1.0f)) {
-			out->basin_ratio = 1.0f;
-		} else {
-			/* rho already on the side of its class */
-		}
-	}
+	squeal_model_basin_side(out, stable);
 }
 
 #endif /* !SQUEAL_NUMERIC_FIXED */

@@ -10,12 +10,6 @@
 #include "sq_contract.h"
 #include "squeal_sigma_internal.h"
 
-#if defined(SQUEAL_NUMERIC_FIXED)
-#define MU_SD_MAX ((int32_t)3 << (SQUEAL_Q_MU - 1)) /* 1.5 */
-#else
-#define MU_SD_MAX 1.5f
-#endif
-
 #define NUM_ZERO ((squeal_num_t)0)
 
 /* 0 <= sd <= |value| (false for NaN in the float build) */
@@ -29,13 +23,7 @@ static bool sd_within(squeal_num_t sd, squeal_num_t value)
 void squeal_sigma_sd_zero(squeal_param_sd_t *sd)
 {
 	HAL_REQUIRE(sd != NULL);
-	sd->mass_kg_sd = 0;
-	sd->omega0_radps_sd = 0;
-	sd->damping_sd = 0;
-	sd->mu_inf_sd = 0;
-	sd->delta_mu_sd = 0;
-	sd->slope_spm_sd = 0;
-	sd->slope_delta_mu_corr = 0;
+	*sd = (squeal_param_sd_t){ 0 };
 }
 
 int squeal_sigma_sd_check(const squeal_params_t *params,
@@ -45,7 +33,7 @@ int squeal_sigma_sd_check(const squeal_params_t *params,
 	if (!sd_within(sd->mass_kg_sd, params->mass_kg) ||
 	    !sd_within(sd->omega0_radps_sd, params->omega0_radps) ||
 	    !sd_within(sd->damping_sd, params->damping) ||
-	    !sd_within(sd->mu_inf_sd, MU_SD_MAX) ||
+	    !sd_within(sd->mu_inf_sd, SQUEAL_MU_MAX) ||
 	    !sd_within(sd->delta_mu_sd, params->delta_mu) ||
 	    !sd_within(sd->slope_spm_sd, params->slope_spm) ||
 	    !(sd->slope_delta_mu_corr >= -SQUEAL_SIGMA_CORR_ONE) ||
@@ -57,13 +45,11 @@ int squeal_sigma_sd_check(const squeal_params_t *params,
 
 static void result_clear(squeal_sigma_result_t *out, squeal_state_t state)
 {
-	out->state = state;
-	out->flags = 0U;
-	out->g_hopf = 0;
-	out->g_stable = 0;
-	out->sigma_hopf = 0;
-	out->sigma_stable = 0;
-	out->margin_sigma = (state == SQUEAL_STATE_INVALID) ? 0 : SQUEAL_SIGMA_MARGIN_MAX;
+	/* no flags, no borders; the margin of no border, none for INVALID */
+	*out = (squeal_sigma_result_t){
+		.state = state,
+		.margin_sigma = (state == SQUEAL_STATE_INVALID) ? 0 : SQUEAL_SIGMA_MARGIN_MAX,
+	};
 }
 
 int squeal_sigma_margin(const squeal_sigma_result_t *r, squeal_state_t state,

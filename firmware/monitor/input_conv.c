@@ -89,15 +89,17 @@ static int big_cmp(const big_t *a, const big_t *b)
 	return 0;
 }
 
-/* a *= m; the operands stay within the budget above (a carry out of the
- * top word would be a sizing mistake: programming error) */
-static void big_mul_u32(big_t *a, uint32_t m)
+/* a = a m + b (b NULL: 0), one pass for a product and a sum; the operands
+ * stay within the budget above (a carry out of the top word would be a
+ * sizing mistake: programming error). Each step's t <= (2^32 - 1)^2 +
+ * 2 (2^32 - 1) < 2^64. */
+static void big_mul_add(big_t *a, uint32_t m, const big_t *b)
 {
 	uint64_t carry = 0U;
 	uint32_t i;
 
 	for (i = 0U; i < BIG_LIMBS; i++) {
-		const uint64_t t = ((uint64_t)a->w[i] * m) + carry;
+		const uint64_t t = ((uint64_t)a->w[i] * m) + ((b != NULL) ? b->w[i] : 0U) + carry;
 
 		a->w[i] = (uint32_t)t;
 		carry = t >> 32;
@@ -105,18 +107,15 @@ static void big_mul_u32(big_t *a, uint32_t m)
 	HAL_REQUIRE(carry == 0U);
 }
 
+/* a *= m */
+static void big_mul_u32(big_t *a, uint32_t m)
+{
+	big_mul_add(a, m, NULL);
+}
+
 static void big_add(big_t *a, const big_t *b)
 {
-	uint64_t carry = 0U;
-	uint32_t i;
-
-	for (i = 0U; i < BIG_LIMBS; i++) {
-		const uint64_t t = (uint64_t)a->w[i] + b->w[i] + carry;
-
-		a->w[i] = (uint32_t)t;
-		carry = t >> 32;
-	}
-	HAL_REQUIRE(carry == 0U);
+	big_mul_add(a, 1U, b);
 }
 
 /* a -= b, a >= b */
@@ -539,50 +538,38 @@ bool input_unit_is_pressure(input_unit_t unit)
 	return (unit >= INPUT_UNIT_BAR) && (unit <= INPUT_UNIT_PSI);
 }
 
+typedef struct {
+	uint32_t num;
+	uint32_t den;
+} unit_factor_t;
+
 /* physical unit -> output unit (um/s, mN, mNm) as an exact fraction,
  * the share included (below 2^112 / 2^67), multiplied into kn / kd */
 static void unit_scale(input_unit_t unit, const input_geom_t *g, uint32_t share_ppm,
 		       big_t *kn, big_t *kd)
 {
-	switch (unit) {
-	case INPUT_UNIT_KMH:
-		big_mul_u32(kn, 10000000U);   /* km/h -> um/s: 1e9 / 3600 */
-		big_mul_u32(kd, 36U);
-		break;
-	case INPUT_UNIT_MPS:
-		big_mul_u32(kn, 1000000U);
-		break;
-	case INPUT_UNIT_MPH:
-		big_mul_u32(kn, 447040U);     /* 0.44704 m/s exactly */
-		break;
-	case INPUT_UNIT_RPM:
+	/* the unit -> um/s, mN (pressures: Pa), mNm factor num / den, in
+	 * input_unit_t's order (unit is below INPUT_UNIT_COUNT: checked) */
+	static const unit_factor_t factor[INPUT_UNIT_COUNT] = {
+		{ 10000000U, 36U },         /* km/h -> um/s: 1e9 / 3600 */
+		{ 1000000U, 1U },           /* m/s                      */
+		{ 447040U, 1U },            /* mph: 0.44704 m/s exactly */
+		{ 1U, 1U },                 /* rad/s: the pad radius below */
 		/* pi ~ 103993 / 33102 (error 2e-10): rpm -> rad/s = pi / 30 */
-		big_mul_u32(kn, 103993U);
-		big_mul_u32(kd, 33102U * 30U);
-		break;
-	case INPUT_UNIT_KN:
-		big_mul_u32(kn, 1000000U);
-		break;
-	case INPUT_UNIT_BAR:
-		big_mul_u32(kn, 100000U);     /* Pa */
-		break;
-	case INPUT_UNIT_KPA:
-		big_mul_u32(kn, 1000U);
-		break;
-	case INPUT_UNIT_MPA:
-		big_mul_u32(kn, 1000000U);
-		break;
-	case INPUT_UNIT_PSI:
-		big_mul_u32(kn, 6894757U);
-		big_mul_u32(kd, 1000U);
-		break;
-	default:
-		/* N, Nm -> mN, mNm; rad/s needs only the pad radius below */
-		if (unit != INPUT_UNIT_RADPS) {
-			big_mul_u32(kn, 1000U);
-		}
-		break;
-	}
+		{ 103993U, 33102U * 30U },  /* rpm                      */
+		{ 1000U, 1U },              /* N -> mN                  */
+		{ 1000000U, 1U },           /* kN                       */
+		{ 100000U, 1U },            /* bar -> Pa                */
+		{ 1000U, 1U },              /* kPa                      */
+		{ 1000000U, 1U },           /* MPa                      */
+		{ 6894757U, 1000U },        /* psi                      */
+		{ 1000U, 1U },              /* Nm -> mNm                */
+	};
+	_Static_assert((unsigned int)INPUT_UNIT_COUNT == 12U,
+		       "one factor per input_unit_t, in its order");
+
+	big_mul_u32(kn, factor[unit].num);
+	big_mul_u32(kd, factor[unit].den);
 	if (input_unit_qty(unit) == INPUT_QTY_SPEED) {
 		/* linear speeds at the wheel's rim: x r_p / r_w; angular: x r_p */
 		big_mul_u32(kn, g->pad_radius_um);
@@ -846,6 +833,28 @@ static uint32_t nlz64(uint64_t v)
 }
 
 /*
+ * One 32-bit quotient digit of div128by64: un / vn1 estimated, then
+ * corrected while it is too large against the next dividend digit un_next
+ * (at most twice), for the normalised divisor vn1 2^32 + vn0.
+ */
+static uint64_t div_digit(uint64_t un, uint64_t un_next, uint64_t vn1, uint64_t vn0)
+{
+	const uint64_t b = (uint64_t)1U << 32;
+	uint64_t q = un / vn1;
+	uint64_t rhat = un - (q * vn1);
+	uint32_t guard;
+
+	for (guard = 0U; (guard < 2U) && ((q >= b) || ((q * vn0) > ((b * rhat) + un_next))); guard++) {
+		q--;
+		rhat += vn1;
+		if (rhat >= b) {
+			break;
+		}
+	}
+	return q;
+}
+
+/*
  * (hi 2^64 + lo) / d for hi < d (the quotient fits 64 bits): Knuth's
  * algorithm D with 32-bit digits (Hacker's Delight, divlu), each digit
  * estimate corrected at most twice.
@@ -863,8 +872,6 @@ static uint64_t div128by64(uint64_t hi, uint64_t lo, uint64_t d)
 	uint64_t un21;
 	uint64_t q1;
 	uint64_t q0;
-	uint64_t rhat;
-	uint32_t guard;
 
 	HAL_REQUIRE((d != 0U) && (hi < d));
 	d <<= s;
@@ -879,25 +886,9 @@ static uint64_t div128by64(uint64_t hi, uint64_t lo, uint64_t d)
 	un10 = lo << s;
 	un1 = un10 >> 32;
 	un0 = un10 & 0xFFFFFFFFU;
-	q1 = un32 / vn1;
-	rhat = un32 - (q1 * vn1);
-	for (guard = 0U; (guard < 2U) && ((q1 >= b) || ((q1 * vn0) > ((b * rhat) + un1))); guard++) {
-		q1--;
-		rhat += vn1;
-		if (rhat >= b) {
-			break;
-		}
-	}
+	q1 = div_digit(un32, un1, vn1, vn0);
 	un21 = (un32 * b) + un1 - (q1 * d);
-	q0 = un21 / vn1;
-	rhat = un21 - (q0 * vn1);
-	for (guard = 0U; (guard < 2U) && ((q0 >= b) || ((q0 * vn0) > ((b * rhat) + un0))); guard++) {
-		q0--;
-		rhat += vn1;
-		if (rhat >= b) {
-			break;
-		}
-	}
+	q0 = div_digit(un21, un0, vn1, vn0);
 	return (q1 * b) + q0;
 }
 

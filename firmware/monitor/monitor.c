@@ -137,7 +137,7 @@ int monitor_set_selftest(monitor_t *me, const monitor_selftest_t *st)
 	return SQ_OK;
 }
 
-/* ---- inputs --------------------------------------------------------------- */
+/* ---- inputs -------------------------------------------------------------- */
 
 /* Filter one used value and mark it fresh. */
 static void input_accept(monitor_t *me, input_t *in, int32_t value,
@@ -167,34 +167,6 @@ static uint64_t frame_time(const monitor_t *me, const hal_can_frame_t *f)
 		f->timestamp_us : me->now_us;
 }
 
-/* The counter of each verdict. */
-static uint32_t *verdict_counter(input_counters_t *c, input_rx_reason_t why)
-{
-	uint32_t *n;
-
-	switch (why) {
-	case INPUT_RX_OK:
-		n = &c->used;
-		break;
-	case INPUT_RX_DLC:
-		n = &c->bad_dlc;
-		break;
-	case INPUT_RX_CRC:
-		n = &c->e2e_wrong_crc;
-		break;
-	case INPUT_RX_COUNTER:
-		n = &c->e2e_wrong_sequence;
-		break;
-	case INPUT_RX_REPEATED:
-		n = &c->e2e_repeated;
-		break;
-	default:
-		n = &c->implausible; /* na, qualifier, range, step */
-		break;
-	}
-	return n;
-}
-
 /* A used raw value in the monitor's units: v0 [um/s] or N [mN]. */
 static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64_t raw)
 {
@@ -212,6 +184,18 @@ static int32_t input_value(const monitor_t *me, const input_rx_cfg_t *cfg, int64
 	return value;
 }
 
+/* What one verdict of the input stage does to its input. */
+typedef struct {
+	uint8_t fault;   /* INPUT_FAULT_* it raises (0: none)              */
+	uint8_t counter; /* offset of the uint32_t it counts in, in input_counters_t */
+} verdict_rule_t;
+
+/* The uint32_t counter at this offset (offsetof) of c. */
+static uint32_t *counter_at(input_counters_t *c, uint8_t offset)
+{
+	return (uint32_t *)(void *)&((uint8_t *)c)[offset];
+}
+
 /*
  * One frame of one input: the input stage's verdict, recorded. Nothing
  * here checks the frame again: the verdict's counter and fault, the last
@@ -222,31 +206,33 @@ static void input_frame(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg,
 			const hal_can_frame_t *f)
 {
 	/*
-	 * The fault each verdict raises. A frame that fails its length or its
-	 * protection is an E2E fault; one that passed the protection but carries
-	 * no usable value ("not available", qualifier, range, step) makes the input
-	 * implausible until a usable value arrives; a repeated counter is no new
-	 * data, not an error: a frozen sender goes stale.
+	 * The fault each verdict raises and the counter it counts in. A frame
+	 * that fails its length or its protection is an E2E fault; one that
+	 * passed the protection but carries no usable value ("not available",
+	 * qualifier, range, step) makes the input implausible until a usable
+	 * value arrives; a repeated counter is no new data, not an error: a
+	 * frozen sender goes stale.
 	 */
-	static const uint8_t verdict_fault[INPUT_RX_REASON_COUNT] = {
-		0U,                            /* ok        */
-		(uint8_t)INPUT_FAULT_E2E,      /* dlc       */
-		(uint8_t)INPUT_FAULT_E2E,      /* crc       */
-		(uint8_t)INPUT_FAULT_E2E,      /* counter   */
-		0U,                            /* repeated  */
-		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* na     */
-		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* qualifier */
-		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* range  */
-		(uint8_t)INPUT_FAULT_IMPLAUSIBLE, /* step   */
+#define VERDICT(fault, counter) { (uint8_t)(fault), (uint8_t)offsetof(input_counters_t, counter) }
+	static const verdict_rule_t verdict[INPUT_RX_REASON_COUNT] = {
+		VERDICT(0U, used),                                   /* ok        */
+		VERDICT(INPUT_FAULT_E2E, bad_dlc),                   /* dlc       */
+		VERDICT(INPUT_FAULT_E2E, e2e_wrong_crc),             /* crc       */
+		VERDICT(INPUT_FAULT_E2E, e2e_wrong_sequence),        /* counter   */
+		VERDICT(0U, e2e_repeated),                           /* repeated  */
+		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* na        */
+		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* qualifier */
+		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* range     */
+		VERDICT(INPUT_FAULT_IMPLAUSIBLE, implausible),       /* step      */
 	};
 	/* the reason is an input_rx_reason_t below INPUT_RX_REASON_COUNT */
 	const input_rx_result_t r = input_rx_judge(cfg, &in->rx, f);
 	const input_rx_reason_t why = (input_rx_reason_t)r.reason;
-	const uint32_t fault = verdict_fault[r.reason];
+	const uint32_t fault = verdict[r.reason].fault;
 	const uint64_t t_us = frame_time(me, f);
 
 	sat_inc(&in->count.frames);
-	sat_inc(verdict_counter(&in->count, why));
+	sat_inc(counter_at(&in->count, verdict[r.reason].counter));
 	sat_inc(&in->count.verdict[r.reason]);
 	in->faults |= fault;
 	if ((fault != INPUT_FAULT_E2E) && (r.e2e_status != (uint8_t)E2E_P01_STATUS_NONEWDATA)) {
@@ -334,7 +320,49 @@ static void input_tick(monitor_t *me, input_t *in, const input_rx_cfg_t *cfg)
 	}
 }
 
-/* ---- classification, debounce, warnings ---------------------------------- */
+/* ---- classify ------------------------------------------------------------ */
+
+/*
+ * One classification of the fresh input pair, with its uncertainty in the
+ * same pass when deviations are calibrated (model_adapter_eval_sd: the
+ * model's case and terms once, the corner's own criterion's borders).
+ * sig->state is a class (STABLE, BISTABLE, UNSTABLE) when sig holds this
+ * classification's borders, INVALID when nothing was propagated.
+ */
+static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig)
+{
+	const int32_t v0 = me->speed.value;
+	const int32_t force = me->force.value;
+	uint8_t cls;
+	int rc = SQ_OK;
+
+	sat_inc(&me->count.classifications);
+	me->speed.fresh = false;
+	me->force.fresh = false;
+	sig->state = SQUEAL_STATE_INVALID;
+	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
+		/* below the thresholds: not sliding, without the model */
+		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
+	} else if (me->sigma_on) {
+		rc = model_adapter_eval_sd(&me->params, &me->sd, (squeal_criterion_t)me->corner.criterion,
+					   v0, force, &me->eval, sig);
+	} else {
+		rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
+					v0, force, &me->eval);
+	}
+	if (rc != SQ_OK) {
+		/* the model refused the point: no class */
+		sat_inc(&me->count.model_invalid);
+		me->have_eval = false;
+		cls = MONITOR_STATE_FAULT;
+	} else {
+		me->have_eval = true;
+		cls = (uint8_t)me->eval.state;
+	}
+	return cls;
+}
+
+/* ---- debounce ------------------------------------------------------------ */
 
 static uint32_t abs32(int32_t v)
 {
@@ -395,45 +423,7 @@ static void debounce(monitor_t *me, uint8_t cls)
 	}
 }
 
-/*
- * One classification of the fresh input pair, with its uncertainty in the
- * same pass when deviations are calibrated (model_adapter_eval_sd: the
- * model's case and terms once, the corner's own criterion's borders).
- * sig->state is a class (STABLE, BISTABLE, UNSTABLE) when sig holds this
- * classification's borders, INVALID when nothing was propagated.
- */
-static uint8_t classify_pair(monitor_t *me, squeal_sigma_result_t *sig)
-{
-	const int32_t v0 = me->speed.value;
-	const int32_t force = me->force.value;
-	uint8_t cls;
-	int rc = SQ_OK;
-
-	sat_inc(&me->count.classifications);
-	me->speed.fresh = false;
-	me->force.fresh = false;
-	sig->state = SQUEAL_STATE_INVALID;
-	if (((uint32_t)v0 < me->cal->v0_min_umps) || ((uint32_t)force < me->cal->force_min_mn)) {
-		/* below the thresholds: not sliding, without the model */
-		me->eval = (model_eval_t){ .state = SQUEAL_STATE_NOT_SLIDING };
-	} else if (me->sigma_on) {
-		rc = model_adapter_eval_sd(&me->params, &me->sd, (squeal_criterion_t)me->corner.criterion,
-					   v0, force, &me->eval, sig);
-	} else {
-		rc = model_adapter_eval(&me->params, (squeal_criterion_t)me->corner.criterion,
-					v0, force, &me->eval);
-	}
-	if (rc != SQ_OK) {
-		/* the model refused the point: no class */
-		sat_inc(&me->count.model_invalid);
-		me->have_eval = false;
-		cls = MONITOR_STATE_FAULT;
-	} else {
-		me->have_eval = true;
-		cls = (uint8_t)me->eval.state;
-	}
-	return cls;
-}
+/* ---- uncertainty and warning level of the debounced class ---------------- */
 
 /*
  * The uncertainty of the debounced class (issue 12, docs/uncertainty.md):
@@ -492,7 +482,18 @@ static uint8_t warning_level(const monitor_t *me)
 	}
 }
 
-/* ---- transmit ------------------------------------------------------------- */
+/* Warning level of the debounced state; a change is sent at once. */
+static void update_warning(monitor_t *me)
+{
+	const uint8_t warning = warning_level(me);
+
+	if (warning != me->warning) {
+		me->warning = warning;
+		me->status_now = true;
+	}
+}
+
+/* ---- encode: transmit ---------------------------------------------------- */
 
 static void tx_push(monitor_t *me, uint16_t id, const uint8_t *data, uint8_t dlc)
 {
@@ -768,28 +769,6 @@ static bool due(uint64_t *next_us, uint64_t now_us, uint16_t period_ms)
 	return true;
 }
 
-bool monitor_wants_classify(const monitor_t *me)
-{
-	return (me != NULL) && me->speed.fresh && me->force.fresh &&
-	       (me->speed.faults == 0U) && (me->force.faults == 0U);
-}
-
-void monitor_step(monitor_t *me, uint64_t now_us)
-{
-	monitor_step_slot(me, now_us, true);
-}
-
-/* Warning level of the debounced state; a change is sent at once. */
-static void update_warning(monitor_t *me)
-{
-	const uint8_t warning = warning_level(me);
-
-	if (warning != me->warning) {
-		me->warning = warning;
-		me->status_now = true;
-	}
-}
-
 /* The periodic messages due now (and SquealStatus at once on a change). */
 static void encode(monitor_t *me)
 {
@@ -803,6 +782,14 @@ static void encode(monitor_t *me)
 	if (due(&me->next_diag_us, me->now_us, me->cal->diag_period_ms)) {
 		send_diag(me);
 	}
+}
+
+/* ---- the step ------------------------------------------------------------ */
+
+bool monitor_wants_classify(const monitor_t *me)
+{
+	return (me != NULL) && me->speed.fresh && me->force.fresh &&
+	       (me->speed.faults == 0U) && (me->force.faults == 0U);
 }
 
 /*
@@ -824,8 +811,9 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 	input_tick(me, &me->force, &me->force_rx);
 
 	if ((me->speed.faults != 0U) || (me->force.faults != 0U)) {
-		set_state(me, MONITOR_STATE_FAULT);
+		/* no class (classify), FAULT at once (debounce), so no margin */
 		me->have_eval = false;
+		set_state(me, MONITOR_STATE_FAULT);
 		update_uncertainty(me, NULL, false);
 	} else if (may_classify && me->speed.fresh && me->force.fresh) {
 		squeal_sigma_result_t sig;
@@ -843,6 +831,11 @@ void monitor_step_slot(monitor_t *me, uint64_t now_us, bool may_classify)
 	}
 	update_warning(me);
 	encode(me);
+}
+
+void monitor_step(monitor_t *me, uint64_t now_us)
+{
+	monitor_step_slot(me, now_us, true);
 }
 
 int monitor_peek_tx(const monitor_t *me, hal_can_frame_t *frame)

@@ -43,11 +43,9 @@
 #include "model_adapter.h"
 #include "squeal_msgs.h"
 
-/* SquealState on the bus: the model's states and FAULT (the DBC's 15, one
- * definition: squeal_msgs.h); the model's states are the bus's values */
+/* SquealState on the bus: the model's states and FAULT, the model's INVALID
+ * (squeal_state.h defines the values once) */
 #define MONITOR_STATE_FAULT MSG_SQUEAL_STATE_FAULT
-_Static_assert(MSG_SQUEAL_STATE_FAULT == (unsigned int)SQUEAL_STATE_INVALID,
-	       "the model's INVALID is the bus's FAULT");
 
 /* Why an input is not usable right now (bits of input_t.faults). */
 #define INPUT_FAULT_STALE       (1U << 0) /* no usable frame for stale_cycles periods */

@@ -33,6 +33,7 @@
 #include <stdint.h>
 
 #include "e2e_p01.h"
+#include "squeal_state.h"
 
 #define MSG_MAX_DLC 8U
 
@@ -69,12 +70,13 @@ typedef struct {
 #define MSG_SQUEAL_STATUS_DLC       8U
 #define MSG_SQUEAL_STATUS_PERIOD_MS 10U
 #define MSG_SQUEAL_STATUS_DATA_ID   0x3A01U
-/* SquealState values (VAL_ table; equal to squeal_state_t's) */
-#define MSG_SQUEAL_STATE_STABLE      0U
-#define MSG_SQUEAL_STATE_BISTABLE    1U
-#define MSG_SQUEAL_STATE_UNSTABLE    2U
-#define MSG_SQUEAL_STATE_NOT_SLIDING 3U
-#define MSG_SQUEAL_STATE_FAULT       15U
+/* SquealState values (VAL_ table): the model's squeal_state_t, whose
+ * INVALID is the bus's FAULT (squeal_state.h defines them once) */
+#define MSG_SQUEAL_STATE_STABLE      ((uint8_t)SQUEAL_STATE_STABLE)
+#define MSG_SQUEAL_STATE_BISTABLE    ((uint8_t)SQUEAL_STATE_BISTABLE)
+#define MSG_SQUEAL_STATE_UNSTABLE    ((uint8_t)SQUEAL_STATE_UNSTABLE)
+#define MSG_SQUEAL_STATE_NOT_SLIDING ((uint8_t)SQUEAL_STATE_NOT_SLIDING)
+#define MSG_SQUEAL_STATE_FAULT       ((uint8_t)SQUEAL_STATE_INVALID)
 /* WarningLevel values */
 #define MSG_WARNING_LEVEL_NONE       0U
 #define MSG_WARNING_LEVEL_ADVISORY   1U
@@ -222,18 +224,16 @@ typedef struct {
  * not checked either: use msg_*_receive() or e2e_p01_check() first.
  * SquealDiag fills the fields of the received page, the others are 0.
  */
-int msg_disc_speed_pack(const msg_disc_speed_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_disc_speed_unpack(const uint8_t *data, uint8_t dlc, msg_disc_speed_t *msg);
-int msg_pad_force_pack(const msg_pad_force_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_pad_force_unpack(const uint8_t *data, uint8_t dlc, msg_pad_force_t *msg);
-int msg_squeal_status_pack(const msg_squeal_status_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_squeal_status_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_status_t *msg);
-int msg_squeal_detail_pack(const msg_squeal_detail_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_squeal_detail_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_detail_t *msg);
-int msg_squeal_detail2_pack(const msg_squeal_detail2_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_squeal_detail2_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_detail2_t *msg);
-int msg_squeal_diag_pack(const msg_squeal_diag_t *msg, uint8_t data[8], uint8_t *dlc);
-int msg_squeal_diag_unpack(const uint8_t *data, uint8_t dlc, msg_squeal_diag_t *msg);
+#define MSG_CODEC_DECLARE(name)                                                        \
+	int msg_##name##_pack(const msg_##name##_t *msg, uint8_t data[8], uint8_t *dlc); \
+	int msg_##name##_unpack(const uint8_t *data, uint8_t dlc, msg_##name##_t *msg)
+/* msg_disc_speed_pack() / msg_disc_speed_unpack(), and so on */
+MSG_CODEC_DECLARE(disc_speed);
+MSG_CODEC_DECLARE(pad_force);
+MSG_CODEC_DECLARE(squeal_status);
+MSG_CODEC_DECLARE(squeal_detail);
+MSG_CODEC_DECLARE(squeal_detail2);
+MSG_CODEC_DECLARE(squeal_diag);
 
 /*
  * Receive an input: E2E-check the frame (rx is updated whatever happens;
@@ -258,6 +258,19 @@ int msg_pad_force_receive(const e2e_p01_config_t *cfg, e2e_p01_rx_t *rx,
 #define MSG_SIG_MUXED   0x08U /* present only when the multiplexor == mux_value */
 #define MSG_SIG_E2E     0x10U /* E2E CRC or counter                          */
 
+/* Where pack()/unpack() keep a signal's raw value in its message's struct. */
+#define MSG_FIELD_U8  0U /* uint8_t                                          */
+#define MSG_FIELD_U16 1U /* uint16_t                                         */
+#define MSG_FIELD_S16 2U /* int16_t                                          */
+#define MSG_FIELD_U32 3U /* uint32_t (a value beyond INT32_MAX is out of range) */
+#define MSG_FIELD_BIT 4U /* bit `bit` of a uint16_t (SquealDiag's fault_bits) */
+
+typedef struct {
+	uint8_t offset;       /* offsetof the field in the message's struct    */
+	uint8_t kind;         /* MSG_FIELD_*                                   */
+	uint8_t bit;          /* with MSG_FIELD_BIT                            */
+} msg_sig_field_t;
+
 typedef struct {
 	uint16_t msg_id;      /* CAN identifier of the message                 */
 	const char *name;     /* signal name, exactly as in the DBC            */
@@ -272,6 +285,7 @@ typedef struct {
 	int32_t raw_min;      /* valid raw range (NA excluded)                 */
 	int32_t raw_max;
 	int32_t na_raw;       /* with MSG_SIG_HAS_NA                           */
+	msg_sig_field_t field; /* its field in the msg_*_t struct              */
 } msg_sig_desc_t;
 
 typedef struct {
@@ -309,7 +323,7 @@ const char *msg_squeal_state_name(uint8_t state);
  * a receiver treats as a fault) is slot MSG_SQUEAL_STATE_SLOT_FAULT. Host
  * tools that count time or changes per state index their tables with it.
  */
-#define MSG_SQUEAL_STATE_SLOTS      5U
+#define MSG_SQUEAL_STATE_SLOTS      (SQUEAL_STATE_NAMED + 1U)
 #define MSG_SQUEAL_STATE_SLOT_FAULT (MSG_SQUEAL_STATE_SLOTS - 1U)
 uint32_t msg_squeal_state_slot(uint32_t state);
 

@@ -17,15 +17,11 @@
 #define SWITCH_TIMEOUT_US   5000U
 #define ERASE_TIMEOUT_US   100000U /* page erase max 40 ms */
 #define PROGRAM_TIMEOUT_US   1000U /* half-word max 70 us  */
-#define IDLE_TIMEOUT_US     10000U
 #define FLASH_PAGE_BYTES     1024U /* medium density                  */
 #define SLOT_PAGES_MAX          4U /* bound of the erase loop          */
 
 extern const uint8_t __calib_start[];
 extern const uint8_t __calib_slot_size[];
-
-static uint32_t core_hz = CHIP_HSI_HZ;
-static uint32_t apb1_hz = CHIP_HSI_HZ;
 
 static void f1_clock_back_to_hsi(void)
 {
@@ -33,14 +29,12 @@ static void f1_clock_back_to_hsi(void)
 	(void)stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, 0U, SWITCH_TIMEOUT_US);
 	RCC_CR &= ~(RCC_CR_PLLON | RCC_CR_HSEON);
 	FLASH_ACR = FLASH_ACR_PRFTBE; /* 0 WS at 8 MHz */
-	core_hz = CHIP_HSI_HZ;
-	apb1_hz = CHIP_HSI_HZ;
+	chip_clock_rates_set(false);
 }
 
 int chip_clock_init(void)
 {
-	core_hz = CHIP_HSI_HZ;
-	apb1_hz = CHIP_HSI_HZ;
+	chip_clock_rates_set(false);
 	stm32_time_early_init(CHIP_HSI_HZ);
 
 	RCC_CR |= RCC_CR_HSEON;
@@ -67,8 +61,7 @@ int chip_clock_init(void)
 		f1_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}
-	core_hz = CHIP_SYSCLK_HZ;
-	apb1_hz = CHIP_APB1_HZ;
+	chip_clock_rates_set(true);
 	return SQ_OK;
 }
 
@@ -80,16 +73,6 @@ uint32_t chip_hse_measured_hz(void)
 uint32_t chip_bor_level(void)
 {
 	return CHIP_BOR_NONE;
-}
-
-uint32_t chip_core_hz(void)
-{
-	return core_hz;
-}
-
-uint32_t chip_apb1_hz(void)
-{
-	return apb1_hz;
 }
 
 void chip_can_pins_init(uint8_t bus)
@@ -115,28 +98,10 @@ void chip_can_pins_init(uint8_t bus)
 	GPIO_ODR(GPIOB_BASE) |= 1U << 8;
 }
 
-static int f1_flash_unlock(void)
-{
-	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, IDLE_TIMEOUT_US) != SQ_OK) {
-		return SQ_EIO;
-	}
-	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
-		FLASH_KEYR = FLASH_KEY1;
-		FLASH_KEYR = FLASH_KEY2;
-	}
-	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
-		return SQ_EIO;
-	}
-	FLASH_SR = FLASH_SR_PGERR | FLASH_SR_WRPRTERR | FLASH_SR_EOP; /* write 1 to clear */
-	return SQ_OK;
-}
-
+/* chip_flash_wait_done, then EOP cleared (write 1) for the next step */
 static int flash_wait_done(uint32_t timeout_us)
 {
-	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, timeout_us) != SQ_OK) {
-		return SQ_EIO;
-	}
-	if ((FLASH_SR & (FLASH_SR_PGERR | FLASH_SR_WRPRTERR)) != 0U) {
+	if (chip_flash_wait_done(timeout_us) != SQ_OK) {
 		return SQ_EIO;
 	}
 	FLASH_SR = FLASH_SR_EOP;
@@ -158,7 +123,7 @@ int chip_flash_erase_slot(uint32_t slot)
 	    ((size % FLASH_PAGE_BYTES) != 0U)) {
 		return SQ_EINVAL;
 	}
-	if (f1_flash_unlock() != SQ_OK) {
+	if (chip_flash_unlock() != SQ_OK) {
 		FLASH_CR = FLASH_CR_LOCK;
 		return SQ_EIO;
 	}
@@ -181,7 +146,7 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 	if ((addr & 1U) != 0U || data == NULL) {
 		return SQ_EINVAL;
 	}
-	if (f1_flash_unlock() != SQ_OK) {
+	if (chip_flash_unlock() != SQ_OK) {
 		FLASH_CR = FLASH_CR_LOCK;
 		return SQ_EIO;
 	}

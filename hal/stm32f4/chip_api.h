@@ -22,10 +22,19 @@ uint32_t chip_bor_level(void);
 #define CHIP_BOR_NONE 0xFFU
 uint32_t chip_core_hz(void);
 uint32_t chip_apb1_hz(void);
+/* The chip's clock code records the clocks it runs on: the PLL's
+ * CHIP_SYSCLK_HZ / CHIP_APB1_HZ, or the HSI (chip_common.c). */
+void chip_clock_rates_set(bool on_pll);
 /* GPIO and RCC clock of bus 0 (CAN1) or 1 (CAN2, which also needs CAN1's
  * clock: its filters live in CAN1); a bus the chip lacks: nothing. */
 void chip_can_pins_init(uint8_t bus);
 int chip_flash_erase_slot(uint32_t slot);
+/* Flash idle, unlocked with the key sequence, its error flags cleared:
+ * SQ_OK, or SQ_EIO (still busy, or still locked) (chip_common.c). */
+int chip_flash_unlock(void);
+/* The operation started finished within timeout_us without an error flag:
+ * SQ_OK, else SQ_EIO (chip_common.c). */
+int chip_flash_wait_done(uint32_t timeout_us);
 int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
 
 #endif /* CHIP_API_H */

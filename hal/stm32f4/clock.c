@@ -33,8 +33,6 @@
 #define MEAS_TIMEOUT_US 2000U /* per capture; 8 MHz needs 31 us */
 #define HSE_TOLERANCE_PERMILLE 100U
 
-static uint32_t core_hz = CHIP_HSI_HZ;
-static uint32_t apb1_hz = CHIP_HSI_HZ;
 static uint32_t hse_measured_hz;
 
 static int capture_wait(uint32_t *ccr)
@@ -114,16 +112,14 @@ static void f4_clock_back_to_hsi(void)
 	(void)stm32_wait_reg(&RCC_CFGR, RCC_CFGR_SWS_MSK, 0U, SWITCH_TIMEOUT_US);
 	RCC_CR &= ~(RCC_CR_CSSON | RCC_CR_PLLON | RCC_CR_HSEON);
 	FLASH_ACR = FLASH_ACR_PRFTEN | FLASH_ACR_ICEN | FLASH_ACR_DCEN; /* 0 WS at 16 MHz */
-	core_hz = CHIP_HSI_HZ;
-	apb1_hz = CHIP_HSI_HZ;
+	chip_clock_rates_set(false);
 }
 
 int chip_clock_init(void)
 {
 	uint32_t acr;
 
-	core_hz = CHIP_HSI_HZ;
-	apb1_hz = CHIP_HSI_HZ;
+	chip_clock_rates_set(false);
 	hse_measured_hz = 0U;
 	stm32_time_early_init(CHIP_HSI_HZ);
 
@@ -166,17 +162,6 @@ int chip_clock_init(void)
 	}
 	/* A crystal that stops from now on: NMI (startup.c records it). */
 	RCC_CR |= RCC_CR_CSSON;
-	core_hz = CHIP_SYSCLK_HZ;
-	apb1_hz = CHIP_APB1_HZ;
+	chip_clock_rates_set(true);
 	return SQ_OK;
-}
-
-uint32_t chip_core_hz(void)
-{
-	return core_hz;
-}
-
-uint32_t chip_apb1_hz(void)
-{
-	return apb1_hz;
 }

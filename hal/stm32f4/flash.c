@@ -17,7 +17,6 @@ extern const uint8_t __calib_first_sector[];
  * max 100 us; bounds with margin. */
 #define ERASE_TIMEOUT_US  2000000UL
 #define PROGRAM_TIMEOUT_US   1000UL
-#define IDLE_TIMEOUT_US     10000UL
 
 static uint32_t saved_acr;
 
@@ -27,18 +26,7 @@ static int f4_flash_unlock(void)
 {
 	saved_acr = FLASH_ACR;
 	FLASH_ACR = saved_acr & ~FLASH_ACR_DCEN;
-	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, IDLE_TIMEOUT_US) != SQ_OK) {
-		return SQ_EIO;
-	}
-	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
-		FLASH_KEYR = FLASH_KEY1;
-		FLASH_KEYR = FLASH_KEY2;
-	}
-	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
-		return SQ_EIO; /* wrong sequence locks it until reset */
-	}
-	FLASH_SR = FLASH_SR_ERRORS | FLASH_SR_EOP; /* write 1 to clear */
-	return SQ_OK;
+	return chip_flash_unlock();
 }
 
 static void flash_lock_and_flush(void)
@@ -66,12 +54,9 @@ int chip_flash_erase_slot(uint32_t slot)
 	}
 	FLASH_CR = FLASH_CR_PSIZE_X32 | FLASH_CR_SER | (sector << FLASH_CR_SNB_SHIFT);
 	FLASH_CR |= FLASH_CR_STRT;
-	rc = stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, ERASE_TIMEOUT_US);
-	if (rc == SQ_OK && (FLASH_SR & FLASH_SR_ERRORS) != 0U) {
-		rc = SQ_EIO;
-	}
+	rc = chip_flash_wait_done(ERASE_TIMEOUT_US);
 	flash_lock_and_flush();
-	return rc == SQ_OK ? SQ_OK : SQ_EIO;
+	return rc;
 }
 
 /* addr word-aligned; a tail shorter than a word is padded with 0xFF. */
@@ -98,14 +83,11 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 		}
 		REG32(addr + off) = w;
 		cm_dsb();
-		rc = stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, PROGRAM_TIMEOUT_US);
-		if (rc == SQ_OK && (FLASH_SR & FLASH_SR_ERRORS) != 0U) {
-			rc = SQ_EIO;
-		}
+		rc = chip_flash_wait_done(PROGRAM_TIMEOUT_US);
 		if (rc == SQ_OK && REG32(addr + off) != w) {
 			rc = SQ_EIO;
 		}
 	}
 	flash_lock_and_flush();
-	return rc == SQ_OK ? SQ_OK : SQ_EIO;
+	return rc;
 }

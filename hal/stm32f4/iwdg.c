@@ -96,27 +96,39 @@ void hal_watchdog_kick(void)
 #endif
 }
 
+typedef struct {
+	uint32_t flags;            /* RCC_CSR reset flags */
+	hal_reset_reason_t reason; /* what any of them means */
+} reset_cause_t;
+
 /* Read once at boot (board.c), then clear the flags so that the next reset
  * reports its own cause. A recorded fault wins: it reset through SYSRESETREQ,
  * which RCC_CSR only shows as a software reset. */
 void stm32_reset_reason_capture(void)
 {
-	uint32_t csr = RCC_CSR;
+	/* RCC_CSR's flags, the first that is set wins (POR also sets PIN and
+	 * BOR; the F1 has no BOR flag: 0, never set) */
+	static const reset_cause_t causes[] = {
+		{ RCC_CSR_IWDGRSTF | RCC_CSR_WWDGRSTF, HAL_RESET_WATCHDOG },
+		{ RCC_CSR_SFTRSTF, HAL_RESET_SOFTWARE },
+		{ RCC_CSR_PORRSTF, HAL_RESET_POWER_ON },
+		{ RCC_CSR_BORRSTF, HAL_RESET_BROWNOUT },
+		{ RCC_CSR_PINRSTF, HAL_RESET_PIN },
+	};
+	const uint32_t csr = RCC_CSR;
 
+	reset_reason = HAL_RESET_UNKNOWN;
 	if (stm32_fault_record_take(NULL)) {
 		reset_reason = HAL_RESET_FAULT;
-	} else if ((csr & (RCC_CSR_IWDGRSTF | RCC_CSR_WWDGRSTF)) != 0U) {
-		reset_reason = HAL_RESET_WATCHDOG;
-	} else if ((csr & RCC_CSR_SFTRSTF) != 0U) {
-		reset_reason = HAL_RESET_SOFTWARE;
-	} else if ((csr & RCC_CSR_PORRSTF) != 0U) {
-		reset_reason = HAL_RESET_POWER_ON; /* POR also sets PIN and BOR */
-	} else if ((csr & RCC_CSR_BORRSTF) != 0U) {
-		reset_reason = HAL_RESET_BROWNOUT;
-	} else if ((csr & RCC_CSR_PINRSTF) != 0U) {
-		reset_reason = HAL_RESET_PIN;
 	} else {
-		reset_reason = HAL_RESET_UNKNOWN;
+		uint32_t i;
+
+		for (i = 0U; i < (sizeof causes / sizeof causes[0]); i++) {
+			if ((csr & causes[i].flags) != 0U) {
+				reset_reason = causes[i].reason;
+				break;
+			}
+		}
 	}
 	RCC_CSR |= RCC_CSR_RMVF;
 }

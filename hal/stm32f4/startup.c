@@ -29,7 +29,9 @@ extern uint32_t _sccm, _eccm;
 int main(void);
 void Reset_Handler(void) __attribute__((noreturn));
 void Fault_Handler(void) __attribute__((naked));
-void Default_Handler(void) __attribute__((naked));
+/* An unexpected interrupt is recorded like a fault: the same handler (the
+ * record's vector tells them apart). */
+void Default_Handler(void) __attribute__((alias("Fault_Handler")));
 void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return, uint32_t msp) __attribute__((noreturn, used));
 
 /* The fault handlers' own stack, in .bss above the main stack: an overflow
@@ -171,21 +173,6 @@ void Fault_Handler(void)
 			 "b stm32_fault_entry\n\t");
 }
 
-void Default_Handler(void)
-{
-	__asm__ volatile("tst lr, #4\n\t"
-			 "ite eq\n\t"
-			 "mrseq r0, msp\n\t"
-			 "mrsne r0, psp\n\t"
-			 "mov r1, lr\n\t"
-			 "mrs r2, msp\n\t"
-			 /* a good stack before any C */
-			 "movw r3, #:lower16:stm32_fault_stack+512\n\t"
-			 "movt r3, #:upper16:stm32_fault_stack+512\n\t"
-			 "msr msp, r3\n\t"
-			 "b stm32_fault_entry\n\t");
-}
-
 _Static_assert(FAULT_STACK_WORDS * 4U == 512U, "Fault_Handler's movw/movt use 512");
 
 static uint32_t next_fault_count(void)
@@ -282,17 +269,7 @@ void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return, uint32_t msp)
 bool stm32_fault_record_take(stm32_fault_record_t *out)
 {
 	if (fault_noinit.magic == STM32_FAULT_MAGIC) {
-		last_fault.magic = fault_noinit.magic;
-		last_fault.vector = fault_noinit.vector;
-		last_fault.pc = fault_noinit.pc;
-		last_fault.lr = fault_noinit.lr;
-		last_fault.cfsr = fault_noinit.cfsr;
-		last_fault.hfsr = fault_noinit.hfsr;
-		last_fault.fault_addr = fault_noinit.fault_addr;
-		last_fault.count = fault_noinit.count;
-		last_fault.file = fault_noinit.file;
-		last_fault.line = fault_noinit.line;
-		last_fault.msp = fault_noinit.msp;
+		last_fault = fault_noinit; /* every field, out of the volatile record */
 		last_fault_valid = true;
 		/* Keep the count for the next fault, but never report this one
 		 * again after a later, ordinary reset. */

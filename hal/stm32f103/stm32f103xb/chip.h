@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 #include "cortex_m.h"
+#include "stm32_common_regs.h"
 
 #define CHIP_NAME "STM32F103"
 #define CHIP_IRQ_COUNT 43U
@@ -83,30 +84,18 @@ void CAN2_SCE_IRQHandler(void);
 #define RCC_APB2ENR_IOPBEN  (1U << 3)
 #define RCC_APB1ENR_CAN1EN  (1U << 25)
 
-#define RCC_CSR_RMVF     (1U << 24)
 #define RCC_CSR_BORRSTF  0U /* the F1 has no separate brown-out flag */
-#define RCC_CSR_PINRSTF  (1U << 26)
-#define RCC_CSR_PORRSTF  (1U << 27)
-#define RCC_CSR_SFTRSTF  (1U << 28)
-#define RCC_CSR_IWDGRSTF (1U << 29)
-#define RCC_CSR_WWDGRSTF (1U << 30)
-#define RCC_CSR_LPWRRSTF (1U << 31)
 
 /* Flash (RM0008 section 3.3.3, PM0075) */
-#define FLASH_ACR  REG32(FLASH_R_BASE + 0x00U)
-#define FLASH_KEYR REG32(FLASH_R_BASE + 0x04U)
-#define FLASH_SR   REG32(FLASH_R_BASE + 0x0CU)
-#define FLASH_CR   REG32(FLASH_R_BASE + 0x10U)
 #define FLASH_AR   REG32(FLASH_R_BASE + 0x14U)
 #define FLASH_ACR_LATENCY_MSK 7U
 #define FLASH_ACR_LATENCY_2WS 2U /* 48..72 MHz */
 #define FLASH_ACR_PRFTBE (1U << 4)
-#define FLASH_KEY1 0x45670123U
-#define FLASH_KEY2 0xCDEF89ABU
 #define FLASH_SR_BSY      (1U << 0)
 #define FLASH_SR_PGERR    (1U << 2)
 #define FLASH_SR_WRPRTERR (1U << 4)
 #define FLASH_SR_EOP      (1U << 5)
+#define FLASH_SR_ERRORS   (FLASH_SR_PGERR | FLASH_SR_WRPRTERR)
 #define FLASH_CR_PG   (1U << 0)
 #define FLASH_CR_PER  (1U << 1)
 #define FLASH_CR_STRT (1U << 6)

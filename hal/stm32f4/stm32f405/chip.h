@@ -9,6 +9,7 @@
 #define CHIP_H
 
 #include "cortex_m.h"
+#include "stm32_common_regs.h"
 
 #define CHIP_NAME "STM32F405"
 #define CHIP_IRQ_COUNT 82U /* vector table: 16 system + 82 device entries */
@@ -116,24 +117,13 @@ void CAN2_SCE_IRQHandler(void);
 #define RCC_APB1RSTR_CAN1RST (1U << 25)
 
 #define RCC_CSR_LSION    (1U << 0)
-#define RCC_CSR_RMVF     (1U << 24)
 #define RCC_CSR_BORRSTF  (1U << 25)
-#define RCC_CSR_PINRSTF  (1U << 26)
-#define RCC_CSR_PORRSTF  (1U << 27)
-#define RCC_CSR_SFTRSTF  (1U << 28)
-#define RCC_CSR_IWDGRSTF (1U << 29)
-#define RCC_CSR_WWDGRSTF (1U << 30)
-#define RCC_CSR_LPWRRSTF (1U << 31)
 
 /* PWR: regulator scale 1 is needed above 144 MHz */
 #define PWR_CR     REG32(PWR_BASE + 0x00U)
 #define PWR_CR_VOS (1U << 14)
 
 /* Embedded flash interface (RM0090 section 3.9) */
-#define FLASH_ACR  REG32(FLASH_R_BASE + 0x00U)
-#define FLASH_KEYR REG32(FLASH_R_BASE + 0x04U)
-#define FLASH_SR   REG32(FLASH_R_BASE + 0x0CU)
-#define FLASH_CR   REG32(FLASH_R_BASE + 0x10U)
 #define FLASH_OPTCR REG32(FLASH_R_BASE + 0x14U)
 #define FLASH_OPTCR_BOR_LEV_SHIFT 2U
 #define FLASH_OPTCR_BOR_LEV_MSK (3U << 2) /* 00 level 3 (2.7 V) .. 11 off */
@@ -160,8 +150,6 @@ void CAN2_SCE_IRQHandler(void);
 #define FLASH_ACR_DCEN   (1U << 10)
 #define FLASH_ACR_ICRST  (1U << 11)
 #define FLASH_ACR_DCRST  (1U << 12)
-#define FLASH_KEY1 0x45670123U
-#define FLASH_KEY2 0xCDEF89ABU
 #define FLASH_SR_EOP    (1U << 0)
 #define FLASH_SR_OPERR  (1U << 1)
 #define FLASH_SR_WRPERR (1U << 4)
