@@ -54,4 +54,20 @@ volatile uint32_t *regsim_dwt_cyccnt(void);
 #define DWT_CYCCNT (*regsim_dwt_cyccnt())
 #define DWT_LAR REG32((uintptr_t)&regsim_dwt[2])
 
+/* REGSIM_F4_FLASH_HOOK (the test of flash.c): every access to FLASH_ACR,
+ * FLASH_KEYR, FLASH_SR and FLASH_CR goes through a function the test
+ * defines, which first plays the flash interface's answer to the stores
+ * since the last access (the key sequence, write-1-to-clear, LOCK). */
+#ifdef REGSIM_F4_FLASH_HOOK
+volatile uint32_t *regsim_flash_reg(uint32_t offset);
+#undef FLASH_ACR
+#undef FLASH_KEYR
+#undef FLASH_SR
+#undef FLASH_CR
+#define FLASH_ACR  (*regsim_flash_reg(0x00U))
+#define FLASH_KEYR (*regsim_flash_reg(0x04U))
+#define FLASH_SR   (*regsim_flash_reg(0x0CU))
+#define FLASH_CR   (*regsim_flash_reg(0x10U))
+#endif
+
 #endif /* REGSIM_F4_CHIP_H */
