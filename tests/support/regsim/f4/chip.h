@@ -3,7 +3,7 @@
  * The real STM32F405 chip header with every peripheral this test touches
  * moved into plain arrays, so the chip files (clock.c, iwdg.c ...) run on the
  * host against memory their tests (tests/hal/stm32f4/test_*.c) inspect and
- * drive. A test defines the arrays its file uses.
+ * drive. The arrays are regsim_f4.c's; regsim_f4_reset() clears them all.
  */
 #ifndef REGSIM_F4_CHIP_H
 #define REGSIM_F4_CHIP_H
@@ -14,6 +14,8 @@
 
 extern uint32_t regsim_rcc[64], regsim_pwr[4], regsim_flash[8], regsim_tim11[32], regsim_iwdg[4],
 	regsim_dbgmcu[4], regsim_gpiob[16];
+void regsim_f4_reset(void);
+int regsim_f4_setup(void **state);
 #undef RCC_BASE
 #undef PWR_BASE
 #undef FLASH_R_BASE
