@@ -133,14 +133,14 @@ build/host-fixed/tv-digest: build/host-fixed/app/tests/system/target/tv_run.o bu
 # bxCAN bit timing: pure arithmetic, tested on the host (cmocka)
 build/test/tests/hal/stm32f4/test_bxcan_timing: tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/bxcan.h
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -o $@ tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
+	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -Itests/support -o $@ tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
 
 # Two-slot calibration storage over a simulated NOR flash (power cut at every
 # byte); the slot geometry comes from the link, as on the target. No PIE:
 # the slot size is an absolute linker symbol.
 build/test/tests/hal/stm32f4/test_calib_flash: tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -o $@ \
+	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -Itests/support -o $@ \
 		tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \
 		-Wl,--defsym,__calib_start=calib_flash_sim,--defsym,__calib_slot_size=2048,--defsym,__calib_slot_count=2
 TEST_PROGS += build/test/tests/hal/stm32f4/test_calib_flash

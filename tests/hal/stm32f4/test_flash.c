@@ -30,6 +30,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "chip.h"
 #include "chip_api.h"
 #include "sq_status.h"
@@ -63,8 +65,6 @@
 #define FIRST_SECTOR 1U
 #define NOR_WORDS 8U
 #define LOG_MAX 16U
-
-uint32_t regsim_flash[8];
 
 enum op { OP_NONE, OP_ERASE, OP_PROGRAM };
 
@@ -241,7 +241,7 @@ static void sim_reset(uint32_t acr)
 	sim.stuck_wait = -1;
 	memset(nor, 0xFF, sizeof(nor));
 	memset(nor_hw, 0xFF, sizeof(nor_hw));
-	memset(regsim_flash, 0, sizeof(regsim_flash));
+	regsim_f4_reset();
 	regsim_flash[0] = sim.acr;
 	regsim_flash[3] = sim.sr;
 	regsim_flash[4] = sim.cr;
@@ -513,21 +513,15 @@ static void test_each_wait_times_out(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_unlock_key1_then_key2, setup),
-		cmocka_unit_test_setup(test_wrong_key_sequence_locks_until_reset, setup),
-		cmocka_unit_test_setup(test_stale_error_flags_cleared_by_writing_one, setup),
-		cmocka_unit_test_setup(test_sector_erase_sequence, setup),
-		cmocka_unit_test_setup(test_erase_error_flag_fails, setup),
-		cmocka_unit_test_setup(test_program_sequence, setup),
-		cmocka_unit_test_setup(test_program_over_zero_bits_fails_verify, setup),
-		cmocka_unit_test_setup(test_program_error_flag_fails, setup),
-		cmocka_unit_test_setup(test_program_bad_arguments_touch_nothing, setup),
-		cmocka_unit_test_setup(test_wait_states_kept_and_dcache_reset, setup),
-		cmocka_unit_test_setup(test_each_wait_times_out, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_unlock_key1_then_key2, setup),
+	cmocka_unit_test_setup(test_wrong_key_sequence_locks_until_reset, setup),
+	cmocka_unit_test_setup(test_stale_error_flags_cleared_by_writing_one, setup),
+	cmocka_unit_test_setup(test_sector_erase_sequence, setup),
+	cmocka_unit_test_setup(test_erase_error_flag_fails, setup),
+	cmocka_unit_test_setup(test_program_sequence, setup),
+	cmocka_unit_test_setup(test_program_over_zero_bits_fails_verify, setup),
+	cmocka_unit_test_setup(test_program_error_flag_fails, setup),
+	cmocka_unit_test_setup(test_program_bad_arguments_touch_nothing, setup),
+	cmocka_unit_test_setup(test_wait_states_kept_and_dcache_reset, setup),
+	cmocka_unit_test_setup(test_each_wait_times_out, setup))
