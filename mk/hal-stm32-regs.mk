@@ -1,17 +1,20 @@
 # SPDX-License-Identifier: MIT
 # The chip files on the host, built against their real chip.h with the
 # peripherals moved into arrays (tests/support/regsim).
-REGSIM_CFLAGS := $(WARN) -O1 -g $(SAN) $(FW_INC) -Ihal/stm32f4
+REGSIM_CFLAGS := $(WARN) -O1 -g $(SAN) $(FW_INC) -Ihal/stm32f4 -Itests/support
 
-# One STM32F4 file per program, on tests/support/regsim/f4 (each test
-# defines the register arrays it uses and the functions of the other files
-# the one under test calls; $(2): more sources, e.g. the contract catcher):
+# One STM32F4 file per program, on tests/support/regsim/f4 (the register
+# arrays are regsim_f4.c's; each test defines the functions of the other
+# files the one under test calls; $(2): more sources, e.g. the contract
+# catcher):
 # build/test/tests/hal/stm32f4/test_MODULE
-REGSIM_F4_DEPS := tests/support/regsim/f4/chip.h hal/stm32f4/stm32f405/chip.h hal/stm32f4/cortex_m.h
+REGSIM_F4_DEPS := tests/support/regsim/f4/chip.h tests/support/regsim/f4/regsim_f4.c hal/stm32f4/stm32f405/chip.h \
+	hal/stm32f4/cortex_m.h tests/support/sq_cmocka.h
 define regsim_f4_test
 build/test/tests/hal/stm32f4/test_$(1): tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $(2) $$(REGSIM_F4_DEPS)
 	@mkdir -p $$(@D)
-	$$(CC) $$(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $$@ tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c $(2) -lcmocka
+	$$(CC) $$(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $$@ tests/hal/stm32f4/test_$(1).c hal/stm32f4/$(1).c \
+		tests/support/regsim/f4/regsim_f4.c $(2) -lcmocka
 endef
 REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest systick
 $(foreach m,$(filter-out selftest clock,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
@@ -28,6 +31,20 @@ build/test/tests/hal/stm32f4/test_board: tests/hal/stm32f4/test_board.c build/te
 	$(CC) $(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $@ $^ -lcmocka
 TEST_PROGS += build/test/tests/hal/stm32f4/test_board
 TEST_PROGS += $(foreach m,$(REGSIM_F4_MODULES),build/test/tests/hal/stm32f4/test_$(m))
+
+# flash.c: its registers behind the hook of the regsim header, the slots'
+# first sector from the link as on the target (linker/stm32f405xg.ld), no
+# PIE so that the simulated flash array has a 32-bit address
+# (flash.c's 0xFFUL masks are 64 bits wide on the host only: -Wno-conversion
+# for that one file here; on the target unsigned long is 32 bits)
+build/test/regsim/hal/stm32f4/flash.o: hal/stm32f4/flash.c hal/stm32f4/chip_api.h $(REGSIM_F4_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -Wno-conversion -DREGSIM_F4_FLASH_HOOK -Itests/support/regsim/f4 -fno-pie -c $< -o $@
+build/test/tests/hal/stm32f4/test_flash: tests/hal/stm32f4/test_flash.c build/test/regsim/hal/stm32f4/flash.o $(REGSIM_F4_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -DREGSIM_F4_FLASH_HOOK -Itests/support/regsim/f4 -fno-pie -no-pie -o $@ \
+		tests/hal/stm32f4/test_flash.c build/test/regsim/hal/stm32f4/flash.o tests/support/regsim/f4/regsim_f4.c -lcmocka -Wl,--defsym,__calib_first_sector=1
+TEST_PROGS += build/test/tests/hal/stm32f4/test_flash
 
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
 # answer SQ_ENODEV without touching one)

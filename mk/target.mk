@@ -149,19 +149,19 @@ build/host-fixed/tv-digest: build/host-fixed/app/tests/system/target/tv_run.o bu
 	$(CC) -o $@ $^ -lm
 
 # bxCAN bit timing: pure arithmetic, tested on the host (cmocka)
-build/host/test_bxcan_timing: tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/bxcan.h
+build/test/tests/hal/stm32f4/test_bxcan_timing: tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c hal/stm32f4/bxcan.h
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -o $@ tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
+	$(CC) $(WARN) -O2 -g $(FW_INC) -Ihal/stm32f4 -Itests/support -o $@ tests/hal/stm32f4/test_bxcan_timing.c hal/stm32f4/bxcan_timing.c -lcmocka
 
 # Two-slot calibration storage over a simulated NOR flash (power cut at every
 # byte); the slot geometry comes from the link, as on the target. No PIE:
 # the slot size is an absolute linker symbol.
-build/test/test_calib_flash: tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h
+build/test/tests/hal/stm32f4/test_calib_flash: tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -o $@ \
+	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -Itests/support -o $@ \
 		tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \
 		-Wl,--defsym,__calib_start=calib_flash_sim,--defsym,__calib_slot_size=2048,--defsym,__calib_slot_count=2
-TEST_PROGS += build/test/test_calib_flash
+TEST_PROGS += build/test/tests/hal/stm32f4/test_calib_flash
 
 # Target-in-the-loop tests: the scripts run QEMU on images make builds first.
 tests/system/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
@@ -169,7 +169,7 @@ tests/system/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/mo
 tests/system/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
 tests/system/target/check-images.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
 	build/stm32f103-float/squeal-monitor.elf
-TEST_PROGS += build/host/test_bxcan_timing tests/system/target/check-images.sh tests/system/target/run-golden.sh \
+TEST_PROGS += build/test/tests/hal/stm32f4/test_bxcan_timing tests/system/target/check-images.sh tests/system/target/run-golden.sh \
 	tests/system/target/run-ecu-boot.sh
 
 # Bench images: the 1 ms monitor step on the M4F (float) and the M3 (fixed).

@@ -13,6 +13,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "brute_force.h"
 
 /* The brief's bound; the measured errors are below 0.01 %. */
@@ -86,16 +88,10 @@ static void test_rejects_outside_domain(void **state)
 	assert_int_equal(bf_decide(0.023, 1.0, 1.0, NULL), -1);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_cycle_d0023_q1_matches_model_md),
-		cmocka_unit_test(test_cycle_d01_q3_matches_model_md),
-		cmocka_unit_test(test_cycle_other_rows_match_model_md),
-		cmocka_unit_test(test_decision_follows_stick_line),
-		cmocka_unit_test(test_tolerance_rejects_cubic_value),
-		cmocka_unit_test(test_rejects_outside_domain),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_cycle_d0023_q1_matches_model_md),
+	cmocka_unit_test(test_cycle_d01_q3_matches_model_md),
+	cmocka_unit_test(test_cycle_other_rows_match_model_md),
+	cmocka_unit_test(test_decision_follows_stick_line),
+	cmocka_unit_test(test_tolerance_rejects_cubic_value),
+	cmocka_unit_test(test_rejects_outside_domain))

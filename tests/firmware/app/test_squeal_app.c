@@ -14,6 +14,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "e2e_p01.h"
 #include "monitor.h"
@@ -481,23 +483,17 @@ static void test_can_stopped(void **state)
 	assert_int_equal(squeal_app_monitor()->state, MSG_SQUEAL_STATE_STABLE);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_no_calibration_stored_defaults_without_fault),
-		cmocka_unit_test(test_valid_calibration_is_used),
-		cmocka_unit_test(test_corrupt_calibration_rejected_whole),
-		cmocka_unit_test(test_out_of_range_calibration_rejected),
-		cmocka_unit_test(test_calibration_read_error),
-		cmocka_unit_test(test_watchdog_kicked_every_tick),
-		cmocka_unit_test(test_squeal_main_returns_init_status),
-		cmocka_unit_test(test_worst_task_time_reported),
-		cmocka_unit_test(test_platform_faults_reported),
-		cmocka_unit_test(test_rx_burst),
-		cmocka_unit_test(test_bus_off_and_recovery),
-		cmocka_unit_test(test_tx_queue_full),
-		cmocka_unit_test(test_can_stopped),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_no_calibration_stored_defaults_without_fault),
+	cmocka_unit_test(test_valid_calibration_is_used),
+	cmocka_unit_test(test_corrupt_calibration_rejected_whole),
+	cmocka_unit_test(test_out_of_range_calibration_rejected),
+	cmocka_unit_test(test_calibration_read_error),
+	cmocka_unit_test(test_watchdog_kicked_every_tick),
+	cmocka_unit_test(test_squeal_main_returns_init_status),
+	cmocka_unit_test(test_worst_task_time_reported),
+	cmocka_unit_test(test_platform_faults_reported),
+	cmocka_unit_test(test_rx_burst),
+	cmocka_unit_test(test_bus_off_and_recovery),
+	cmocka_unit_test(test_tx_queue_full),
+	cmocka_unit_test(test_can_stopped))

@@ -15,6 +15,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "hal_vbus.h"
 #include "monitor.h"
@@ -153,14 +155,8 @@ static void test_defaults_are_one_bus_in_normal_mode(void **state)
 	assert_int_equal(hal_vbus_rx_filters(1U, f, HAL_CAN_MAX_FILTERS), 0); /* bus 1 untouched */
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_inputs_on_bus1_listen_only_outputs_on_bus0),
-		cmocka_unit_test(test_inputs_on_bus0_listen_only_outputs_on_bus1),
-		cmocka_unit_test(test_listen_only_output_bus_refuses_and_counts),
-		cmocka_unit_test(test_defaults_are_one_bus_in_normal_mode),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_inputs_on_bus1_listen_only_outputs_on_bus0),
+	cmocka_unit_test(test_inputs_on_bus0_listen_only_outputs_on_bus1),
+	cmocka_unit_test(test_listen_only_output_bus_refuses_and_counts),
+	cmocka_unit_test(test_defaults_are_one_bus_in_normal_mode))

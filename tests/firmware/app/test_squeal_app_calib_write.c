@@ -33,6 +33,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "e2e_p01.h"
 #include "hal.h"
@@ -395,15 +397,9 @@ static void test_the_check_sees_a_write(void **state)
 	assert_memory_not_equal(now, block_stored, CALIB_BLOCK_LEN);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_every_identifier_dlc_and_kind, setup),
-		cmocka_unit_test_setup(test_spoofed_frames_with_valid_e2e, setup),
-		cmocka_unit_test_setup(test_diagnostic_requests_and_raw_blocks, setup),
-		cmocka_unit_test_setup(test_restart_loads_the_same_calibration, setup),
-		cmocka_unit_test_setup(test_the_check_sees_a_write, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_every_identifier_dlc_and_kind, setup),
+	cmocka_unit_test_setup(test_spoofed_frames_with_valid_e2e, setup),
+	cmocka_unit_test_setup(test_diagnostic_requests_and_raw_blocks, setup),
+	cmocka_unit_test_setup(test_restart_loads_the_same_calibration, setup),
+	cmocka_unit_test_setup(test_the_check_sees_a_write, setup))

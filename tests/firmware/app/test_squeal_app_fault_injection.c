@@ -39,6 +39,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "e2e_p01.h"
 #include "monitor.h"
@@ -909,21 +911,15 @@ static void test_long_run_1e6_steps(void **state)
 	assert_int_equal(mon()->state, ST_STABLE);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_dropout_every_length),
-		cmocka_unit_test(test_counter_wrap_1000_frames),
-		cmocka_unit_test(test_counter_jump_every_size),
-		cmocka_unit_test(test_crc_storm_1s),
-		cmocka_unit_test(test_crc_storm_alternating),
-		cmocka_unit_test(test_every_wrong_dlc),
-		cmocka_unit_test(test_bus_off_during_transmission),
-		cmocka_unit_test(test_tx_full_5s),
-		cmocka_unit_test(test_clock_jump_10s),
-		cmocka_unit_test(test_future_timestamp_does_not_break_staleness),
-		cmocka_unit_test(test_long_run_1e6_steps),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_dropout_every_length),
+	cmocka_unit_test(test_counter_wrap_1000_frames),
+	cmocka_unit_test(test_counter_jump_every_size),
+	cmocka_unit_test(test_crc_storm_1s),
+	cmocka_unit_test(test_crc_storm_alternating),
+	cmocka_unit_test(test_every_wrong_dlc),
+	cmocka_unit_test(test_bus_off_during_transmission),
+	cmocka_unit_test(test_tx_full_5s),
+	cmocka_unit_test(test_clock_jump_10s),
+	cmocka_unit_test(test_future_timestamp_does_not_break_staleness),
+	cmocka_unit_test(test_long_run_1e6_steps))

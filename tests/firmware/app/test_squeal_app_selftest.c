@@ -16,6 +16,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "hal_vbus.h"
 #include "sq_status.h"
@@ -109,13 +111,7 @@ static void test_no_selftest_leaves_page4_not_measured(void **state)
 	assert_int_equal(test_frame_sig(f->data, 27U, 1U), 0U);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_selftest_figures_reach_diag_page4),
-		cmocka_unit_test(test_crystal_rounds_to_100khz_and_saturates),
-		cmocka_unit_test(test_no_selftest_leaves_page4_not_measured),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_selftest_figures_reach_diag_page4),
+	cmocka_unit_test(test_crystal_rounds_to_100khz_and_saturates),
+	cmocka_unit_test(test_no_selftest_leaves_page4_not_measured))

@@ -24,6 +24,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "fixmath.h"
 
 static uint64_t rng_state = 0x9E3779B97F4A7C15ULL;
@@ -144,14 +146,8 @@ static void test_expm1_small(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_ln_against_libm),
-		cmocka_unit_test(test_exp_against_libm),
-		cmocka_unit_test(test_exp_saturation_and_underflow),
-		cmocka_unit_test(test_expm1_small),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_ln_against_libm),
+	cmocka_unit_test(test_exp_against_libm),
+	cmocka_unit_test(test_exp_saturation_and_underflow),
+	cmocka_unit_test(test_expm1_small))

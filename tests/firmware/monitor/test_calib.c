@@ -18,6 +18,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "sq_status.h"
 
@@ -509,20 +511,14 @@ static void test_header_errors(void **state)
 	expect_assert_failure(calib_validate(NULL));
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_crc32_check_value),
-		cmocka_unit_test(test_defaults_validate_and_match_model_md),
-		cmocka_unit_test(test_model_params_from_defaults),
-		cmocka_unit_test(test_block_layout),
-		cmocka_unit_test(test_round_trip_every_field_at_limits),
-		cmocka_unit_test(test_out_of_range_field_with_good_crc_rejected),
-		cmocka_unit_test(test_cross_field_rules),
-		cmocka_unit_test(test_bitrate_must_be_exact),
-		cmocka_unit_test(test_every_single_byte_corruption_rejected),
-		cmocka_unit_test(test_header_errors),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_crc32_check_value),
+	cmocka_unit_test(test_defaults_validate_and_match_model_md),
+	cmocka_unit_test(test_model_params_from_defaults),
+	cmocka_unit_test(test_block_layout),
+	cmocka_unit_test(test_round_trip_every_field_at_limits),
+	cmocka_unit_test(test_out_of_range_field_with_good_crc_rejected),
+	cmocka_unit_test(test_cross_field_rules),
+	cmocka_unit_test(test_bitrate_must_be_exact),
+	cmocka_unit_test(test_every_single_byte_corruption_rejected),
+	cmocka_unit_test(test_header_errors))

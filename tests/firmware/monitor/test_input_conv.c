@@ -26,6 +26,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "can_signal.h"
 #include "e2e_p02.h"
 #include "input_conv.h"
@@ -298,21 +300,15 @@ static void test_torque_to_force(void **state)
 	assert_int_equal(input_conv_torque_to_force(-5, 0, 2, 120000U, mu_inf, dmu, a), 0);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_crc8_h2f_check_value),
-		cmocka_unit_test(test_p02_spec_example),
-		cmocka_unit_test(test_p02_sequence_wraps_at_16),
-		cmocka_unit_test(test_p02_contracts_and_bad_frames),
-		cmocka_unit_test(test_counter_modulus_4),
-		cmocka_unit_test(test_unit_strings),
-		cmocka_unit_test(test_speed_conversions),
-		cmocka_unit_test(test_force_and_pressure_conversions),
-		cmocka_unit_test(test_refused_conversions),
-		cmocka_unit_test(test_conversion_contracts),
-		cmocka_unit_test(test_torque_to_force),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_crc8_h2f_check_value),
+	cmocka_unit_test(test_p02_spec_example),
+	cmocka_unit_test(test_p02_sequence_wraps_at_16),
+	cmocka_unit_test(test_p02_contracts_and_bad_frames),
+	cmocka_unit_test(test_counter_modulus_4),
+	cmocka_unit_test(test_unit_strings),
+	cmocka_unit_test(test_speed_conversions),
+	cmocka_unit_test(test_force_and_pressure_conversions),
+	cmocka_unit_test(test_refused_conversions),
+	cmocka_unit_test(test_conversion_contracts),
+	cmocka_unit_test(test_torque_to_force))

@@ -32,6 +32,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib_map.h"
 #include "calib_text.h"
 #include "e2e_p01.h"
@@ -924,27 +926,21 @@ static void test_corner_deviations(void **state)
 	refused(buf, "car.cal: a standard deviation");
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_a_motorola15_offset_fault_bits),
-		cmocka_unit_test(test_a_master_cylinder_p02_axle),
-		cmocka_unit_test(test_b_intel14_with_counter_between),
-		cmocka_unit_test(test_b_counter_repeats_and_jumps),
-		cmocka_unit_test(test_d_multiplexed),
-		cmocka_unit_test(test_e_29_bit_signed_motorola_p01),
-		cmocka_unit_test(test_f_torque_and_rpm),
-		cmocka_unit_test(test_monitor_faults_on_layout_a),
-		cmocka_unit_test(test_bad_calibrations),
-		cmocka_unit_test(test_corner_deviations),
-		cmocka_unit_test(test_written_map_parses_back),
-		cmocka_unit_test(test_input_rx_contracts),
-		cmocka_unit_test(test_exact_dbc_factors),
-		cmocka_unit_test(test_refused_at_its_line),
-		cmocka_unit_test(test_qualifier_beyond_min_dlc),
-		cmocka_unit_test(test_extended_multiplexing),
-		cmocka_unit_test(test_torque_share),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_a_motorola15_offset_fault_bits),
+	cmocka_unit_test(test_a_master_cylinder_p02_axle),
+	cmocka_unit_test(test_b_intel14_with_counter_between),
+	cmocka_unit_test(test_b_counter_repeats_and_jumps),
+	cmocka_unit_test(test_d_multiplexed),
+	cmocka_unit_test(test_e_29_bit_signed_motorola_p01),
+	cmocka_unit_test(test_f_torque_and_rpm),
+	cmocka_unit_test(test_monitor_faults_on_layout_a),
+	cmocka_unit_test(test_bad_calibrations),
+	cmocka_unit_test(test_corner_deviations),
+	cmocka_unit_test(test_written_map_parses_back),
+	cmocka_unit_test(test_input_rx_contracts),
+	cmocka_unit_test(test_exact_dbc_factors),
+	cmocka_unit_test(test_refused_at_its_line),
+	cmocka_unit_test(test_qualifier_beyond_min_dlc),
+	cmocka_unit_test(test_extended_multiplexing),
+	cmocka_unit_test(test_torque_share))

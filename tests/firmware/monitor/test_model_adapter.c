@@ -17,6 +17,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "model_adapter.h"
 #include "sq_num.h"
@@ -120,12 +122,6 @@ static void test_bistable_ratio_below_one_at_the_border(void **state)
 	assert_true(at_top > 0U);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_ln_2q_is_ln_q_plus_ln_2),
-		cmocka_unit_test(test_bistable_ratio_below_one_at_the_border),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_ln_2q_is_ln_q_plus_ln_2),
+	cmocka_unit_test(test_bistable_ratio_below_one_at_the_border))

@@ -19,6 +19,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "e2e_p01.h"
 #include "monitor.h"
@@ -590,16 +592,10 @@ static void test_debounce_count_from_calibration_and_band(void **state)
 	assert_int_equal(m, 4U);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_braking_default_calibration),
-		cmocka_unit_test(test_braking_no_debounce),
-		cmocka_unit_test(test_braking_warning_levels),
-		cmocka_unit_test(test_braking_tx_schedule_and_details),
-		cmocka_unit_test(test_chatter_suppressed_at_hopf_border),
-		cmocka_unit_test(test_debounce_count_from_calibration_and_band),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_braking_default_calibration),
+	cmocka_unit_test(test_braking_no_debounce),
+	cmocka_unit_test(test_braking_warning_levels),
+	cmocka_unit_test(test_braking_tx_schedule_and_details),
+	cmocka_unit_test(test_chatter_suppressed_at_hopf_border),
+	cmocka_unit_test(test_debounce_count_from_calibration_and_band))

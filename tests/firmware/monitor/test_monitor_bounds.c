@@ -24,6 +24,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "monitor.h"
 #include "monitor_expect.h"
@@ -278,16 +280,10 @@ static void test_diag_counters_saturate_at_16_bits(void **state)
 	assert_int_equal(rx_overruns_sent(4000000000U), 65535U);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_stale_in_first_tick_after_timeout),
-		cmocka_unit_test(test_outage_restarts_e2e),
-		cmocka_unit_test(test_minimum_speed_and_force_inclusive),
-		cmocka_unit_test(test_hopf_force_rounded_to_nearest),
-		cmocka_unit_test(test_diag_counters_saturate_at_16_bits),
-		cmocka_unit_test(test_rho_warn_threshold_exclusive),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_stale_in_first_tick_after_timeout),
+	cmocka_unit_test(test_outage_restarts_e2e),
+	cmocka_unit_test(test_minimum_speed_and_force_inclusive),
+	cmocka_unit_test(test_hopf_force_rounded_to_nearest),
+	cmocka_unit_test(test_diag_counters_saturate_at_16_bits),
+	cmocka_unit_test(test_rho_warn_threshold_exclusive))

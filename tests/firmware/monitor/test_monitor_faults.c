@@ -23,6 +23,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "e2e_p01.h"
 #include "monitor.h"
@@ -635,27 +637,21 @@ static void test_e2e_off_accepts_plain_frames(void **state)
 	assert_int_equal(mon()->speed.count.e2e_wrong_crc, 20);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_stale_speed),
-		cmocka_unit_test(test_stale_force),
-		cmocka_unit_test(test_never_seen_is_fault),
-		cmocka_unit_test(test_bad_crc),
-		cmocka_unit_test(test_bad_crc_persistent),
-		cmocka_unit_test(test_repeated_counter_goes_stale),
-		cmocka_unit_test(test_frozen_counter_stays_fault),
-		cmocka_unit_test(test_counter_jump),
-		cmocka_unit_test(test_counter_15_rejected),
-		cmocka_unit_test(test_speed_out_of_range),
-		cmocka_unit_test(test_force_out_of_range),
-		cmocka_unit_test(test_speed_rate_limit),
-		cmocka_unit_test(test_force_rate_limit),
-		cmocka_unit_test(test_wrong_dlc),
-		cmocka_unit_test(test_unknown_id_rtr_ext_error_frames),
-		cmocka_unit_test(test_hal_filter_set_by_app),
-		cmocka_unit_test(test_e2e_off_accepts_plain_frames),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_stale_speed),
+	cmocka_unit_test(test_stale_force),
+	cmocka_unit_test(test_never_seen_is_fault),
+	cmocka_unit_test(test_bad_crc),
+	cmocka_unit_test(test_bad_crc_persistent),
+	cmocka_unit_test(test_repeated_counter_goes_stale),
+	cmocka_unit_test(test_frozen_counter_stays_fault),
+	cmocka_unit_test(test_counter_jump),
+	cmocka_unit_test(test_counter_15_rejected),
+	cmocka_unit_test(test_speed_out_of_range),
+	cmocka_unit_test(test_force_out_of_range),
+	cmocka_unit_test(test_speed_rate_limit),
+	cmocka_unit_test(test_force_rate_limit),
+	cmocka_unit_test(test_wrong_dlc),
+	cmocka_unit_test(test_unknown_id_rtr_ext_error_frames),
+	cmocka_unit_test(test_hal_filter_set_by_app),
+	cmocka_unit_test(test_e2e_off_accepts_plain_frames))

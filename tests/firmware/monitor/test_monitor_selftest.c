@@ -18,6 +18,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "monitor.h"
 #include "sq_status.h"
@@ -125,12 +127,6 @@ static void test_out_of_range_refused(void **state)
 	expect_assert_failure(monitor_set_selftest(&m, NULL));
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_page4_cycle_and_values),
-		cmocka_unit_test(test_out_of_range_refused),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_page4_cycle_and_values),
+	cmocka_unit_test(test_out_of_range_refused))

@@ -24,6 +24,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "calib.h"
 #include "calib_map.h"
 #include "model_adapter.h"
@@ -276,13 +278,7 @@ static void test_zero_deviations_no_raised_level(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_zero_deviations_are_todays_frames),
-		cmocka_unit_test(test_margin_and_uncertain_rule_on_the_bus),
-		cmocka_unit_test(test_zero_deviations_no_raised_level),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_zero_deviations_are_todays_frames),
+	cmocka_unit_test(test_margin_and_uncertain_rule_on_the_bus),
+	cmocka_unit_test(test_zero_deviations_no_raised_level))

@@ -18,6 +18,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "can_signal.h"
 #include "can_signal_fd_ref.h"
 
@@ -190,18 +192,12 @@ static void test_put_keeps_other_signals(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_fixture_descriptors_valid),
-		cmocka_unit_test(test_min_dlc_by_hand),
-		cmocka_unit_test(test_beyond_the_fd_frame),
-		cmocka_unit_test(test_overlap_high_bits),
-		cmocka_unit_test(test_fixture_signals_disjoint),
-		cmocka_unit_test(test_get_equals_canmatrix),
-		cmocka_unit_test(test_put_equals_canmatrix),
-		cmocka_unit_test(test_put_keeps_other_signals),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_fixture_descriptors_valid),
+	cmocka_unit_test(test_min_dlc_by_hand),
+	cmocka_unit_test(test_beyond_the_fd_frame),
+	cmocka_unit_test(test_overlap_high_bits),
+	cmocka_unit_test(test_fixture_signals_disjoint),
+	cmocka_unit_test(test_get_equals_canmatrix),
+	cmocka_unit_test(test_put_equals_canmatrix),
+	cmocka_unit_test(test_put_keeps_other_signals))

@@ -13,6 +13,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "crc16_ccitt.h"
 #include "e2e_p05_ref.h"
 
@@ -40,12 +42,6 @@ static void test_crc16_equals_crc_hqx(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_crc16_check_value),
-		cmocka_unit_test(test_crc16_equals_crc_hqx),
-	};
-
-	return cmocka_run_group_tests_name("crc16_ccitt", tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_crc16_check_value),
+	cmocka_unit_test(test_crc16_equals_crc_hqx))

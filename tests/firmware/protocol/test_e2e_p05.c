@@ -19,6 +19,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "can_signal.h"
 #include "crc16_ccitt.h"
 #include "e2e_p05.h"
@@ -214,17 +216,11 @@ static void test_config_and_contracts(void **state)
 	expect_assert_failure(crc16_ccitt(NULL, 1U));
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_published_example),
-		cmocka_unit_test(test_random_frames_equal_python),
-		cmocka_unit_test(test_data_id_matters),
-		cmocka_unit_test(test_maker_fd_layout),
-		cmocka_unit_test(test_sequence),
-		cmocka_unit_test(test_tolerance_grows_to_255),
-		cmocka_unit_test(test_config_and_contracts),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_published_example),
+	cmocka_unit_test(test_random_frames_equal_python),
+	cmocka_unit_test(test_data_id_matters),
+	cmocka_unit_test(test_maker_fd_layout),
+	cmocka_unit_test(test_sequence),
+	cmocka_unit_test(test_tolerance_grows_to_255),
+	cmocka_unit_test(test_config_and_contracts))

@@ -18,6 +18,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "sq_contract.h"
 
 typedef void (*violation_fn)(void);
@@ -105,13 +107,7 @@ static void test_hal_require_names_its_own_line(void **state)
 	assert_string_equal(text, want);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_prints_file_and_line_then_aborts),
-		cmocka_unit_test(test_null_file_prints_a_question_mark),
-		cmocka_unit_test(test_hal_require_names_its_own_line),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_prints_file_and_line_then_aborts),
+	cmocka_unit_test(test_null_file_prints_a_question_mark),
+	cmocka_unit_test(test_hal_require_names_its_own_line))

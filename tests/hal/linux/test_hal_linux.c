@@ -18,6 +18,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "hal_linux.h"
 
 static void test_open_on_kernel_without_can_names_the_remedy(void **state)
@@ -82,12 +84,6 @@ static void test_closed_can_reports_stopped_and_checks_arguments(void **state)
 	assert_int_equal(hal_linux_open(0U, "a-name-longer-than-ifnamsiz", NULL), SQ_EINVAL);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_open_on_kernel_without_can_names_the_remedy),
-		cmocka_unit_test(test_closed_can_reports_stopped_and_checks_arguments),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_open_on_kernel_without_can_names_the_remedy),
+	cmocka_unit_test(test_closed_can_reports_stopped_and_checks_arguments))

@@ -16,6 +16,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "hal_linux.h"
 
 static char tmpdir[64];
@@ -141,15 +143,9 @@ static void test_reset_reason_defaults_to_power_on(void **state)
 }
 
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_reset_reason_defaults_to_power_on),
-		cmocka_unit_test_setup_teardown(test_calib_file_roundtrip_and_errors, calib_setup,
-						calib_teardown),
-		cmocka_unit_test_setup_teardown(test_calib_unwritable_place_is_eio_and_a_fault,
-						calib_setup, calib_teardown),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_reset_reason_defaults_to_power_on),
+	cmocka_unit_test_setup_teardown(test_calib_file_roundtrip_and_errors, calib_setup,
+					calib_teardown),
+	cmocka_unit_test_setup_teardown(test_calib_unwritable_place_is_eio_and_a_fault,
+					calib_setup, calib_teardown))

@@ -15,6 +15,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "hal_linux.h"
 
 static void test_idle_sleeps_to_the_deadline_without_can(void **state)
@@ -113,14 +115,8 @@ static void test_watchdog_expiry_can_stop_the_loop(void **state)
 	signal(SIGTERM, SIG_DFL);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_idle_sleeps_to_the_deadline_without_can),
-		cmocka_unit_test(test_sigterm_sets_stop_and_wakes_idle),
-		cmocka_unit_test(test_watchdog_reports_a_missed_kick),
-		cmocka_unit_test(test_watchdog_expiry_can_stop_the_loop),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_idle_sleeps_to_the_deadline_without_can),
+	cmocka_unit_test(test_sigterm_sets_stop_and_wakes_idle),
+	cmocka_unit_test(test_watchdog_reports_a_missed_kick),
+	cmocka_unit_test(test_watchdog_expiry_can_stop_the_loop))

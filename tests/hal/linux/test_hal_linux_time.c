@@ -12,6 +12,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "hal_linux.h"
 
 static int64_t ref_mono_us(void)
@@ -60,12 +62,6 @@ static void test_realtime_stamp_converts_to_monotonic_base(void **state)
 	assert_true(past + 2000000U + 1000U > now && past + 2000000U < now + 1000U);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_time_is_clock_monotonic_in_us),
-		cmocka_unit_test(test_realtime_stamp_converts_to_monotonic_base),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_time_is_clock_monotonic_in_us),
+	cmocka_unit_test(test_realtime_stamp_converts_to_monotonic_base))

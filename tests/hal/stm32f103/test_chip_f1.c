@@ -20,6 +20,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "bxcan.h"
 #include "chip.h"
 #include "sq_status.h"
@@ -191,14 +193,8 @@ static void test_bus1_is_enodev(void **state)
 	expect_assert_failure(hal_can_send(2U, &f));
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_afio_swj_cfg_masked, setup),
-		cmocka_unit_test_setup(test_can_pins_bus1_untouched, setup),
-		cmocka_unit_test_setup(test_iwdg_fastest_lsi_and_debug_freeze, setup),
-		cmocka_unit_test_setup(test_bus1_is_enodev, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_afio_swj_cfg_masked, setup),
+	cmocka_unit_test_setup(test_can_pins_bus1_untouched, setup),
+	cmocka_unit_test_setup(test_iwdg_fastest_lsi_and_debug_freeze, setup),
+	cmocka_unit_test_setup(test_bus1_is_enodev, setup))

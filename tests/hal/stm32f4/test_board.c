@@ -19,6 +19,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "can_ctrl.h"
 #include "chip.h"
 #include "hal.h"
@@ -157,13 +159,7 @@ static void test_idle_waits_once_masked_unless_a_frame_waits(void **state)
 	assert_int_equal(primask, 0U);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_bring_up_order_then_the_firmware, setup),
-		cmocka_unit_test_setup(test_clock_fallback_is_raised_and_time_runs_on_hsi, setup),
-		cmocka_unit_test_setup(test_idle_waits_once_masked_unless_a_frame_waits, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_bring_up_order_then_the_firmware, setup),
+	cmocka_unit_test_setup(test_clock_fallback_is_raised_and_time_runs_on_hsi, setup),
+	cmocka_unit_test_setup(test_idle_waits_once_masked_unless_a_frame_waits, setup))

@@ -17,6 +17,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "bxcan.h"
 #include "bxcan_sim.h"
 #include "sq_status.h"
@@ -465,24 +467,18 @@ static void test_contract_violations(void **state)
 	assert_int_equal(hal_can_send(0U, &f), SQ_EINVAL);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_banks_split_by_can2sb, setup_both),
-		cmocka_unit_test_setup(test_buses_are_separate, setup_both),
-		cmocka_unit_test_setup(test_masked_filters_std_and_ext, setup_both),
-		cmocka_unit_test_setup(test_full_bank_set_on_each_bus, setup_both),
-		cmocka_unit_test_setup(test_bad_filter_rejected_and_old_kept, setup_both),
-		cmocka_unit_test_setup(test_listen_only_is_silent, setup_both),
-		cmocka_unit_test_setup(test_inexact_rate_leaves_bus_running, setup_both),
-		cmocka_unit_test_setup(test_rate_change_aborts_and_restarts, setup_both),
-		cmocka_unit_test_setup(test_tx_queue_full_and_drain_in_order, setup_both),
-		cmocka_unit_test_setup(test_bus_off_and_error_frames_per_bus, setup_both),
-		cmocka_unit_test(test_can2_needs_can1_clock),
-		cmocka_unit_test(test_selftest_loopback),
-		cmocka_unit_test(test_selftest_dead_controller),
-		cmocka_unit_test_setup(test_contract_violations, setup_both),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_banks_split_by_can2sb, setup_both),
+	cmocka_unit_test_setup(test_buses_are_separate, setup_both),
+	cmocka_unit_test_setup(test_masked_filters_std_and_ext, setup_both),
+	cmocka_unit_test_setup(test_full_bank_set_on_each_bus, setup_both),
+	cmocka_unit_test_setup(test_bad_filter_rejected_and_old_kept, setup_both),
+	cmocka_unit_test_setup(test_listen_only_is_silent, setup_both),
+	cmocka_unit_test_setup(test_inexact_rate_leaves_bus_running, setup_both),
+	cmocka_unit_test_setup(test_rate_change_aborts_and_restarts, setup_both),
+	cmocka_unit_test_setup(test_tx_queue_full_and_drain_in_order, setup_both),
+	cmocka_unit_test_setup(test_bus_off_and_error_frames_per_bus, setup_both),
+	cmocka_unit_test(test_can2_needs_can1_clock),
+	cmocka_unit_test(test_selftest_loopback),
+	cmocka_unit_test(test_selftest_dead_controller),
+	cmocka_unit_test_setup(test_contract_violations, setup_both))

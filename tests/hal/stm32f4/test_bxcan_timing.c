@@ -14,6 +14,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "bxcan.h"
 #include "sq_status.h"
 
@@ -101,17 +103,11 @@ static void test_rejects_inexact_and_bad(void **state)
 	assert_int_equal(btr, 0x12345678U); /* untouched on failure */
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_500k_at_42mhz),
-		cmocka_unit_test(test_250k_at_42mhz),
-		cmocka_unit_test(test_125k_at_42mhz),
-		cmocka_unit_test(test_1m_at_42mhz),
-		cmocka_unit_test(test_500k_on_hsi),
-		cmocka_unit_test(test_500k_at_36mhz),
-		cmocka_unit_test(test_rejects_inexact_and_bad),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_500k_at_42mhz),
+	cmocka_unit_test(test_250k_at_42mhz),
+	cmocka_unit_test(test_125k_at_42mhz),
+	cmocka_unit_test(test_1m_at_42mhz),
+	cmocka_unit_test(test_500k_on_hsi),
+	cmocka_unit_test(test_500k_at_36mhz),
+	cmocka_unit_test(test_rejects_inexact_and_bad))

@@ -16,6 +16,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "chip.h"
 #include "stm32_board.h"
 
@@ -335,21 +337,15 @@ static void test_failed_erase_reports_storage_fault(void **state)
 	assert_int_equal(faults & HAL_FAULT_CALIB_STORAGE, HAL_FAULT_CALIB_STORAGE);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_empty_reads_enoent, setup),
-		cmocka_unit_test_setup(test_write_then_read_round_trip, setup),
-		cmocka_unit_test_setup(test_writes_alternate_slots_and_keep_the_old, setup),
-		cmocka_unit_test_setup(test_interrupted_write_leaves_old_or_new, setup),
-		cmocka_unit_test_setup(test_interrupted_two_page_write_leaves_old_or_new, setup),
-		cmocka_unit_test_setup(test_corrupt_newest_falls_back_to_older, setup),
-		cmocka_unit_test(test_crc_reference_check_value),
-		cmocka_unit_test_setup(test_sequence_wraps, setup),
-		cmocka_unit_test_setup(test_short_block_pads_and_bad_args, setup),
-		cmocka_unit_test_setup(test_failed_erase_reports_storage_fault, setup),
-		cmocka_unit_test_setup(test_write_refused_while_watchdog_runs, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_empty_reads_enoent, setup),
+	cmocka_unit_test_setup(test_write_then_read_round_trip, setup),
+	cmocka_unit_test_setup(test_writes_alternate_slots_and_keep_the_old, setup),
+	cmocka_unit_test_setup(test_interrupted_write_leaves_old_or_new, setup),
+	cmocka_unit_test_setup(test_interrupted_two_page_write_leaves_old_or_new, setup),
+	cmocka_unit_test_setup(test_corrupt_newest_falls_back_to_older, setup),
+	cmocka_unit_test(test_crc_reference_check_value),
+	cmocka_unit_test_setup(test_sequence_wraps, setup),
+	cmocka_unit_test_setup(test_short_block_pads_and_bad_args, setup),
+	cmocka_unit_test_setup(test_failed_erase_reports_storage_fault, setup),
+	cmocka_unit_test_setup(test_write_refused_while_watchdog_runs, setup))

@@ -17,9 +17,9 @@
 
 #include <cmocka.h>
 
-#include "chip.h"
+#include "sq_cmocka.h"
 
-uint32_t regsim_rcc[64], regsim_gpiob[16];
+#include "chip.h"
 
 #define AHB1ENR regsim_rcc[0x30U / 4U]
 #define APB1ENR regsim_rcc[0x40U / 4U]
@@ -29,14 +29,6 @@ uint32_t regsim_rcc[64], regsim_gpiob[16];
 #define PUPDR   regsim_gpiob[0x0CU / 4U]
 #define AFRL    regsim_gpiob[0x20U / 4U]
 #define AFRH    regsim_gpiob[0x24U / 4U]
-
-static int setup(void **state)
-{
-	(void)state;
-	memset(regsim_rcc, 0, sizeof(regsim_rcc));
-	memset(regsim_gpiob, 0, sizeof(regsim_gpiob));
-	return 0;
-}
 
 static void test_can1_on_pb8_pb9(void **state)
 {
@@ -93,14 +85,8 @@ static void test_a_bus_the_chip_lacks_touches_nothing(void **state)
 	assert_int_equal(AFRH, 0U);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_can1_on_pb8_pb9, setup),
-		cmocka_unit_test_setup(test_can2_on_pb12_pb13_with_can1_clock, setup),
-		cmocka_unit_test_setup(test_other_pins_and_bits_kept, setup),
-		cmocka_unit_test_setup(test_a_bus_the_chip_lacks_touches_nothing, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_can1_on_pb8_pb9, regsim_f4_setup),
+	cmocka_unit_test_setup(test_can2_on_pb12_pb13_with_can1_clock, regsim_f4_setup),
+	cmocka_unit_test_setup(test_other_pins_and_bits_kept, regsim_f4_setup),
+	cmocka_unit_test_setup(test_a_bus_the_chip_lacks_touches_nothing, regsim_f4_setup))

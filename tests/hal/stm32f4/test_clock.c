@@ -18,12 +18,12 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "chip.h"
 #include "sq_status.h"
 #include "stm32_board.h"
 #include "stm32_time.h"
-
-uint32_t regsim_rcc[64], regsim_pwr[4], regsim_flash[8], regsim_tim11[32];
 
 static bool crystal_fitted;
 static uint32_t crystal_hz;
@@ -69,10 +69,7 @@ int stm32_wait_reg(volatile const uint32_t *reg, uint32_t mask, uint32_t value, 
 static int setup(void **state)
 {
 	(void)state;
-	memset(regsim_rcc, 0, sizeof(regsim_rcc));
-	memset(regsim_pwr, 0, sizeof(regsim_pwr));
-	memset(regsim_flash, 0, sizeof(regsim_flash));
-	memset(regsim_tim11, 0, sizeof(regsim_tim11));
+	regsim_f4_reset();
 	crystal_fitted = true;
 	crystal_hz = 8000000U;
 	tim11_edges = true;
@@ -175,16 +172,10 @@ static void test_bor_level(void **state)
 	assert_int_equal(chip_bor_level(), 3U);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_8mhz_crystal_runs_pll_at_168, setup),
-		cmocka_unit_test_setup(test_12mhz_crystal_falls_back_to_hsi, setup),
-		cmocka_unit_test_setup(test_crystal_tolerance_window, setup),
-		cmocka_unit_test_setup(test_no_crystal, setup),
-		cmocka_unit_test_setup(test_no_capture_edges_is_no_switch, setup),
-		cmocka_unit_test_setup(test_bor_level, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_8mhz_crystal_runs_pll_at_168, setup),
+	cmocka_unit_test_setup(test_12mhz_crystal_falls_back_to_hsi, setup),
+	cmocka_unit_test_setup(test_crystal_tolerance_window, setup),
+	cmocka_unit_test_setup(test_no_crystal, setup),
+	cmocka_unit_test_setup(test_no_capture_edges_is_no_switch, setup),
+	cmocka_unit_test_setup(test_bor_level, setup))

@@ -17,14 +17,14 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "chip.h"
 #include "hal.h"
 #include "sq_status.h"
 #include "stm32_fault.h"
 #include "stm32_iwdg.h"
 #include "stm32_time.h"
-
-uint32_t regsim_rcc[64], regsim_iwdg[4], regsim_dbgmcu[4];
 
 static bool fault_recorded;
 
@@ -44,9 +44,7 @@ int stm32_wait_reg(volatile const uint32_t *reg, uint32_t mask, uint32_t value, 
 static int setup(void **state)
 {
 	(void)state;
-	memset(regsim_rcc, 0, sizeof(regsim_rcc));
-	memset(regsim_iwdg, 0, sizeof(regsim_iwdg));
-	memset(regsim_dbgmcu, 0, sizeof(regsim_dbgmcu));
+	regsim_f4_reset();
 	fault_recorded = false;
 	return 0;
 }
@@ -121,12 +119,6 @@ static void test_reset_reason_from_rcc_csr(void **state)
 	}
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_iwdg_fastest_lsi_and_debug_freeze, setup),
-		cmocka_unit_test_setup(test_reset_reason_from_rcc_csr, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_iwdg_fastest_lsi_and_debug_freeze, setup),
+	cmocka_unit_test_setup(test_reset_reason_from_rcc_csr, setup))

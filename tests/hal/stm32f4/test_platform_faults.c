@@ -12,6 +12,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "chip.h"
 #include "hal.h"
 #include "stm32_platform_faults.h"
@@ -64,12 +66,6 @@ static void test_a_raise_inside_a_masked_section_keeps_it_masked(void **state)
 	assert_int_equal(hal_platform_faults(), 0xFU);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_bits_accumulate_with_interrupts_masked),
-		cmocka_unit_test(test_a_raise_inside_a_masked_section_keeps_it_masked),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_bits_accumulate_with_interrupts_masked),
+	cmocka_unit_test(test_a_raise_inside_a_masked_section_keeps_it_masked))

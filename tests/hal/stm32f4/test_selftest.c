@@ -18,6 +18,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "can_ctrl.h"
 #include "chip.h"
 #include "hal.h"
@@ -142,13 +144,7 @@ static void test_hal_view_of_unmeasured_values(void **state)
 	assert_true(h.failed); /* the crystal */
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup(test_healthy_board_passes_and_is_reported, setup),
-		cmocka_unit_test_setup(test_each_check_at_its_bound, setup),
-		cmocka_unit_test_setup(test_hal_view_of_unmeasured_values, setup),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test_setup(test_healthy_board_passes_and_is_reported, setup),
+	cmocka_unit_test_setup(test_each_check_at_its_bound, setup),
+	cmocka_unit_test_setup(test_hal_view_of_unmeasured_values, setup))

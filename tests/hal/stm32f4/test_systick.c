@@ -19,6 +19,8 @@
 
 #include <cmocka.h>
 
+#include "sq_cmocka.h"
+
 #include "chip.h"
 #include "hal.h"
 #include "sq_status.h"
@@ -211,17 +213,11 @@ static void test_a_stopped_systick_still_ends_the_wait(void **state)
 	assert_int_equal(stm32_wait_reg(&flag, 3U, 0U, 1U), SQ_EAGAIN);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_early_free_running_and_zero_before_start),
-		cmocka_unit_test(test_start_programs_systick_and_dwt),
-		cmocka_unit_test(test_time_is_milliseconds_plus_counter_position),
-		cmocka_unit_test(test_a_wrap_not_yet_served_counts_the_millisecond),
-		cmocka_unit_test(test_cycles_from_dwt_or_from_systick),
-		cmocka_unit_test(test_timeout_counts_ticks_across_the_reload),
-		cmocka_unit_test(test_a_stopped_systick_still_ends_the_wait),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SQ_CMOCKA_MAIN(
+	cmocka_unit_test(test_early_free_running_and_zero_before_start),
+	cmocka_unit_test(test_start_programs_systick_and_dwt),
+	cmocka_unit_test(test_time_is_milliseconds_plus_counter_position),
+	cmocka_unit_test(test_a_wrap_not_yet_served_counts_the_millisecond),
+	cmocka_unit_test(test_cycles_from_dwt_or_from_systick),
+	cmocka_unit_test(test_timeout_counts_ticks_across_the_reload),
+	cmocka_unit_test(test_a_stopped_systick_still_ends_the_wait))

@@ -3,7 +3,7 @@
  * The real STM32F405 chip header with every peripheral this test touches
  * moved into plain arrays, so the chip files (clock.c, iwdg.c ...) run on the
  * host against memory their tests (tests/hal/stm32f4/test_*.c) inspect and
- * drive. A test defines the arrays its file uses.
+ * drive. The arrays are regsim_f4.c's; regsim_f4_reset() clears them all.
  */
 #ifndef REGSIM_F4_CHIP_H
 #define REGSIM_F4_CHIP_H
@@ -14,6 +14,8 @@
 
 extern uint32_t regsim_rcc[64], regsim_pwr[4], regsim_flash[8], regsim_tim11[32], regsim_iwdg[4],
 	regsim_dbgmcu[4], regsim_gpiob[16];
+void regsim_f4_reset(void);
+int regsim_f4_setup(void **state);
 #undef RCC_BASE
 #undef PWR_BASE
 #undef FLASH_R_BASE
@@ -53,5 +55,21 @@ volatile uint32_t *regsim_dwt_cyccnt(void);
 #define DWT_CTRL REG32((uintptr_t)&regsim_dwt[0])
 #define DWT_CYCCNT (*regsim_dwt_cyccnt())
 #define DWT_LAR REG32((uintptr_t)&regsim_dwt[2])
+
+/* REGSIM_F4_FLASH_HOOK (the test of flash.c): every access to FLASH_ACR,
+ * FLASH_KEYR, FLASH_SR and FLASH_CR goes through a function the test
+ * defines, which first plays the flash interface's answer to the stores
+ * since the last access (the key sequence, write-1-to-clear, LOCK). */
+#ifdef REGSIM_F4_FLASH_HOOK
+volatile uint32_t *regsim_flash_reg(uint32_t offset);
+#undef FLASH_ACR
+#undef FLASH_KEYR
+#undef FLASH_SR
+#undef FLASH_CR
+#define FLASH_ACR  (*regsim_flash_reg(0x00U))
+#define FLASH_KEYR (*regsim_flash_reg(0x04U))
+#define FLASH_SR   (*regsim_flash_reg(0x0CU))
+#define FLASH_CR   (*regsim_flash_reg(0x10U))
+#endif
 
 #endif /* REGSIM_F4_CHIP_H */
