@@ -40,10 +40,16 @@ TEST_PROGS += $(foreach m,$(REGSIM_F4_MODULES),build/test/tests/hal/stm32f4/test
 build/test/regsim/hal/stm32f4/flash.o: hal/stm32f4/flash.c hal/stm32f4/chip_api.h $(REGSIM_F4_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(REGSIM_CFLAGS) -Wno-conversion -DREGSIM_F4_FLASH_HOOK -Itests/support/regsim/f4 -fno-pie -c $< -o $@
-build/test/tests/hal/stm32f4/test_flash: tests/hal/stm32f4/test_flash.c build/test/regsim/hal/stm32f4/flash.o $(REGSIM_F4_DEPS)
+# the flash unlock and wait flash.c calls live in the F4/F103 common part
+build/test/regsim/hal/stm32f4/chip_common.o: hal/stm32f4/chip_common.c hal/stm32f4/chip_api.h $(REGSIM_F4_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -DREGSIM_F4_FLASH_HOOK -Itests/support/regsim/f4 -fno-pie -c $< -o $@
+build/test/tests/hal/stm32f4/test_flash: tests/hal/stm32f4/test_flash.c build/test/regsim/hal/stm32f4/flash.o \
+		build/test/regsim/hal/stm32f4/chip_common.o $(REGSIM_F4_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(REGSIM_CFLAGS) -DREGSIM_F4_FLASH_HOOK -Itests/support/regsim/f4 -fno-pie -no-pie -o $@ \
-		tests/hal/stm32f4/test_flash.c build/test/regsim/hal/stm32f4/flash.o tests/support/regsim/f4/regsim_f4.c -lcmocka -Wl,--defsym,__calib_first_sector=1
+		tests/hal/stm32f4/test_flash.c build/test/regsim/hal/stm32f4/flash.o build/test/regsim/hal/stm32f4/chip_common.o \
+		tests/support/regsim/f4/regsim_f4.c -lcmocka -Wl,--defsym,__calib_first_sector=1
 TEST_PROGS += build/test/tests/hal/stm32f4/test_flash
 
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
