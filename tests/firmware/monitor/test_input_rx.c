@@ -40,7 +40,7 @@
 #include "sq_status.h"
 
 #ifndef FIXTURE_DIR
-#define FIXTURE_DIR "tests/inputmap"
+#define FIXTURE_DIR "tests/firmware/monitor/fixtures"
 #endif
 
 static calib_t cal;

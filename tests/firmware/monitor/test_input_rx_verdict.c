@@ -33,7 +33,7 @@
 #include "sq_status.h"
 
 #ifndef FIXTURE_DIR
-#define FIXTURE_DIR "tests/inputmap"
+#define FIXTURE_DIR "tests/firmware/monitor/fixtures"
 #endif
 
 #define WS_FL_ID 0x1A0U
