@@ -8,3 +8,8 @@ TEST_PROGS += tests/tools/check_test_map.sh
 #   tests/tools/test_vcalib_rules.py  number rules, raw limits, "not available" codes
 #   tests/tools/test_drive_common.py  a calibration's corners and identifiers
 TEST_PROGS += tests/tools/test_vcalib_rules.py tests/tools/test_drive_common.py
+
+# tests named after the host-sim modules they test
+#   tests/host-sim/test_cmd_ecu.py  squeal-sim ecu's options, without a CAN interface
+tests/host-sim/test_cmd_ecu.py: build/host/squeal-sim
+TEST_PROGS += tests/host-sim/test_cmd_ecu.py
