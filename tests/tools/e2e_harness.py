@@ -34,7 +34,7 @@ sys.path.insert(0, HERE)
 import vehref  # noqa: E402
 import gen_drive  # noqa: E402
 import squeal_reference as ref  # noqa: E402
-from test_replay import parse_out  # noqa: E402  (t_us, iface, id, data) of candump -L text
+from test_cmd_replay import parse_out  # noqa: E402  (t_us, iface, id, data) of candump -L text
 
 V0_MIN_MPS = 0.01      # calibration defaults: below these, not sliding
 FORCE_MIN_N = 100.0
