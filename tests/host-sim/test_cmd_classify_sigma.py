@@ -19,7 +19,9 @@ import subprocess
 import sys
 import tempfile
 
-from checks import ROOT, Checks
+# tests/ of this checkout: the shared checks live in tests/tools
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from checks import ROOT, Checks  # noqa: E402
 
 GOLDEN = os.path.join(ROOT, "tests", "support", "golden", "sigma_vectors.csv")
 BUILDS = ("host", "host-fixed")

@@ -19,6 +19,7 @@ sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("suppo
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(_TESTS, "system", "integration"))  # check_vcan's decoder
 from check_vcan import Checks, Decoder, read_log  # noqa: E402
 
 SIM = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "test", "squeal-sim")
