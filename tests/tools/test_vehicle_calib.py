@@ -38,7 +38,7 @@ sys.path.insert(0, HERE)
 import vehref  # noqa: E402
 import gen_drive  # noqa: E402
 import e2e_harness  # noqa: E402
-import test_vehicle_crosscheck as xcheck  # noqa: E402
+import test_vehicle_calib_crosscheck as xcheck  # noqa: E402
 
 spec = importlib.util.spec_from_file_location("vehicle_calib", vehref.TOOL)
 vc = importlib.util.module_from_spec(spec)
