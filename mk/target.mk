@@ -169,8 +169,10 @@ tests/system/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/mo
 tests/system/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
 tests/system/target/check-images.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
 	build/stm32f103-float/squeal-monitor.elf
+# the G4 (FDCAN) image boots the same way; its ECU image is built too
+tests/system/target/run-ecu-boot-g4.sh: build/stm32g474-ecutest/squeal-monitor.elf build/stm32g474/squeal-monitor.elf
 TEST_PROGS += build/test/tests/hal/stm32f4/test_bxcan_timing tests/system/target/check-images.sh tests/system/target/run-golden.sh \
-	tests/system/target/run-ecu-boot.sh
+	tests/system/target/run-ecu-boot.sh tests/system/target/run-ecu-boot-g4.sh
 
 # Bench images: the 1 ms monitor step on the M4F (float) and the M3 (fixed).
 BENCH_STEP_SRCS := $(FW_LIB_SRCS) tests/system/target/bench_step.c

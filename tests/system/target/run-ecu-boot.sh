@@ -18,8 +18,11 @@ set -u
 cd "$(dirname "$0")/../../.."
 qemu=${QEMU_ARM:-qemu-system-arm}
 logdir=${ECU_BOOT_LOGDIR:-build/test-logs}
-elf=build/stm32f4-ecutest/squeal-monitor.elf
-log=$logdir/target-ecu-boot.txt
+# ECU_BOOT_TARGET=stm32g474: the G4 image on the same machine (QEMU has no
+# G4 either: its RCC, PWR and FDCAN read 0 there, the same checks hold)
+target=${ECU_BOOT_TARGET:-stm32f4}
+elf=build/$target-ecutest/squeal-monitor.elf
+log=$logdir/target-ecu-boot-$target.txt
 mkdir -p "$(dirname "$log")"
 # shellcheck source=tests/support/checks.sh
 . tests/support/checks.sh
@@ -50,7 +53,13 @@ check "watchdog kicked at least every other ms of the loop (${kicks:-?} kicks in
 check "still kicking at the end (last kick ${last:-?} ms, end ${up:-?} ms)" \
 	all_of '[ -n "$last" ]' '[ $(( up - last )) -le 10 ]'
 
-# The fault path: an image that divides by zero once its main loop runs
+# The fault path (the generic fault handler every image shares; its test
+# image is built for the F4):
+if [ "$target" != stm32f4 ]; then
+	checks_done
+	exit $?
+fi
+# An image that divides by zero once its main loop runs
 # (trapped: the start-up code sets CCR.DIV_0_TRP). The handler must record
 # the cause in no-init RAM and reset; the second boot must find the record,
 # report HAL_RESET_FAULT (4) and run normally.
