@@ -14,3 +14,5 @@ build/test/tests/hal/stm32f4/test_chip_common: tests/hal/stm32f4/test_chip_commo
 	$(CC) $(REGSIM_CFLAGS) -DREGSIM_F4_FLASH_HOOK -Itests/support/regsim/f4 -o $@ \
 		tests/hal/stm32f4/test_chip_common.c hal/stm32f4/chip_common.c tests/support/regsim/f4/regsim_f4.c -lcmocka
 TEST_PROGS += build/test/tests/hal/stm32f4/test_chip_common
+
+TEST_PROGS += tests/tools/test_dbc_tolerant.py
