@@ -16,3 +16,5 @@ build/test/tests/hal/stm32f4/test_chip_common: tests/hal/stm32f4/test_chip_commo
 TEST_PROGS += build/test/tests/hal/stm32f4/test_chip_common
 
 TEST_PROGS += tests/tools/test_dbc_tolerant.py
+tests/tools/test_gen_fleet_logs.py: build/host/squeal-sim
+TEST_PROGS += tests/tools/test_gen_fleet_logs.py
