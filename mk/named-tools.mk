@@ -19,3 +19,4 @@ TEST_PROGS += tests/tools/test_dbc_tolerant.py
 tests/tools/test_gen_fleet_logs.py: build/host/squeal-sim
 TEST_PROGS += tests/tools/test_gen_fleet_logs.py
 TEST_PROGS += tests/tools/plots/test_plot_map.py
+TEST_PROGS += tests/tools/plots/test_plot_drive.py
