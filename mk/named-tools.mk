@@ -20,3 +20,4 @@ tests/tools/test_gen_fleet_logs.py: build/host/squeal-sim
 TEST_PROGS += tests/tools/test_gen_fleet_logs.py
 TEST_PROGS += tests/tools/plots/test_plot_map.py
 TEST_PROGS += tests/tools/plots/test_plot_drive.py
+TEST_PROGS += tests/tools/plots/test_plot_calib_bands.py

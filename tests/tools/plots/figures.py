@@ -82,3 +82,9 @@ def line_at(line, x):
 def lines_of_colour(ax, colour, min_points=3):
     return [ln for ln in ax.get_lines()
             if matplotlib.colors.same_color(ln.get_color(), colour) and len(ln.get_xdata()) >= min_points]
+
+
+def suptitle(fig):
+    """The figure's title (Figure.get_suptitle() is matplotlib 3.8 on)."""
+    texts = [t.get_text() for t in fig.texts]
+    return fig._suptitle.get_text() if getattr(fig, "_suptitle", None) is not None else " ".join(texts)
