@@ -21,3 +21,5 @@ TEST_PROGS += tests/tools/test_gen_fleet_logs.py
 TEST_PROGS += tests/tools/plots/test_plot_map.py
 TEST_PROGS += tests/tools/plots/test_plot_drive.py
 TEST_PROGS += tests/tools/plots/test_plot_calib_bands.py
+tests/tools/plots/test_plot_phase.py: build/host/oscsim
+TEST_PROGS += tests/tools/plots/test_plot_phase.py
