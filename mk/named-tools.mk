@@ -9,11 +9,13 @@
 # chip_common.c alone on the F4 register simulation, its flash registers
 # behind the hook (the test plays RM0090's key sequence and write-1-to-clear)
 build/test/tests/hal/stm32f4/test_chip_common: tests/hal/stm32f4/test_chip_common.c hal/stm32f4/chip_common.c \
-		hal/stm32f4/chip_api.h $(REGSIM_F4_DEPS)
+		hal/stm32f4/chip_api.h tests/support/regsim/f4/flash_rm0090.h $(REGSIM_F4_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(REGSIM_CFLAGS) -DREGSIM_F4_FLASH_HOOK -Itests/support/regsim/f4 -o $@ \
 		tests/hal/stm32f4/test_chip_common.c hal/stm32f4/chip_common.c tests/support/regsim/f4/regsim_f4.c -lcmocka
 TEST_PROGS += build/test/tests/hal/stm32f4/test_chip_common
+# test_flash.c plays the same key sequence
+build/test/tests/hal/stm32f4/test_flash: tests/support/regsim/f4/flash_rm0090.h
 
 TEST_PROGS += tests/tools/test_dbc_tolerant.py
 tests/tools/test_gen_fleet_logs.py: build/host/squeal-sim

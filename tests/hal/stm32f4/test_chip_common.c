@@ -9,7 +9,8 @@
  *          (the bus's maximum, DS8626);
  *   3.5.1  FLASH_CR is locked out of reset (LOCK, bit 31, reset value
  *          0x80000000, 3.8.5); KEY1 = 0x45670123 then KEY2 = 0xCDEF89AB
- *          unlocks it; any other sequence locks it until the next reset;
+ *          unlocks it; any other sequence locks it until the next reset
+ *          (these bits and the key sequence: tests/support/regsim/f4/flash_rm0090.h);
  *   3.8.4  FLASH_SR: EOP (bit 0), OPERR (1), WRPERR (4), PGAERR (5),
  *          PGPERR (6), PGSERR (7) are cleared by writing 1; BSY (16) is
  *          read-only and set while an operation runs.
@@ -30,30 +31,19 @@
 
 #include "chip.h"
 #include "chip_api.h"
+#include "flash_rm0090.h" /* RM0090: FLASH_CR, FLASH_SR bits, the keys */
 #include "sq_status.h"
 #include "stm32_time.h"
 
 #define RM_HSI_HZ 16000000U       /* RM0090 6.2.2 */
 #define RM_PLL_HZ 168000000U      /* RM0090 6.3.2: the F405's maximum */
 #define RM_APB1_HZ (168000000U / 4U)
-#define RM_KEY1 0x45670123U       /* RM0090 3.5.1 */
-#define RM_KEY2 0xCDEF89ABU
-#define RM_CR_LOCK (1U << 31)     /* RM0090 3.8.5 */
-#define RM_SR_EOP (1U << 0)       /* RM0090 3.8.4 */
-#define RM_SR_OPERR (1U << 1)
-#define RM_SR_WRPERR (1U << 4)
-#define RM_SR_PGAERR (1U << 5)
-#define RM_SR_PGPERR (1U << 6)
-#define RM_SR_PGSERR (1U << 7)
-#define RM_SR_BSY (1U << 16)
-#define RM_SR_W1C (RM_SR_EOP | RM_SR_OPERR | RM_SR_WRPERR | RM_SR_PGAERR | RM_SR_PGPERR | RM_SR_PGSERR)
-#define RM_SR_ERRORS (RM_SR_OPERR | RM_SR_WRPERR | RM_SR_PGAERR | RM_SR_PGPERR | RM_SR_PGSERR)
 #define LOG_MAX 8U
 
 /* What the flash interface holds, and every store the code under test made. */
 static struct {
 	uint32_t sr, cr;
-	bool key1_seen, locked_until_reset;
+	struct regsim_flash_keys k; /* RM0090 3.5.1's key sequence */
 	uint32_t keys[LOG_MAX];
 	unsigned n_keys;
 	uint32_t sr_stores[LOG_MAX];
@@ -68,18 +58,7 @@ static void key_store(uint32_t key)
 	if (sim.n_keys < LOG_MAX) {
 		sim.keys[sim.n_keys++] = key;
 	}
-	if (sim.locked_until_reset || (sim.cr & RM_CR_LOCK) == 0U) {
-		return;
-	}
-	if (!sim.key1_seen && key == RM_KEY1) {
-		sim.key1_seen = true;
-	} else if (sim.key1_seen && key == RM_KEY2) {
-		sim.key1_seen = false;
-		sim.cr &= ~RM_CR_LOCK;
-	} else {
-		sim.key1_seen = false;
-		sim.locked_until_reset = true;
-	}
+	regsim_flash_key_store(&sim.k, &sim.cr, key);
 }
 
 /* Plays the stores since the last access: FLASH_KEYR reads 0, so any other
@@ -173,7 +152,7 @@ static void test_unlock_stores_key1_then_key2(void **state)
 	assert_int_equal(sim.n_keys, 2U);
 	assert_int_equal(sim.keys[0], RM_KEY1);
 	assert_int_equal(sim.keys[1], RM_KEY2);
-	assert_false(sim.locked_until_reset);
+	assert_false(sim.k.locked_until_reset);
 	assert_int_equal(sim.cr & RM_CR_LOCK, 0U);
 	assert_int_equal(sim.waits, 1U);      /* idle first: one bounded wait */
 	assert_true(sim.wait_timeout_us[0] > 0U);
@@ -212,7 +191,7 @@ static void test_unlock_clears_stale_flags_by_writing_one(void **state)
 static void test_unlock_locked_until_reset_fails(void **state)
 {
 	(void)state;
-	sim.locked_until_reset = true; /* an earlier wrong sequence */
+	sim.k.locked_until_reset = true; /* an earlier wrong sequence */
 	assert_int_equal(chip_flash_unlock(), SQ_EIO);
 	flash_sync();
 	assert_int_equal(sim.cr, RM_CR_LOCK);
