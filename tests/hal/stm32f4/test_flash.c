@@ -34,26 +34,10 @@
 
 #include "chip.h"
 #include "chip_api.h"
+#include "flash_rm0090.h" /* RM0090: FLASH_CR, FLASH_SR bits, the keys */
 #include "sq_status.h"
 #include "stm32_time.h"
 
-#define RM_KEY1 0x45670123U             /* RM0090 3.5.1 */
-#define RM_KEY2 0xCDEF89ABU
-#define RM_CR_RESET 0x80000000U         /* RM0090 3.8.5: LOCK */
-#define RM_CR_PG (1U << 0)              /* RM0090 3.8.5 */
-#define RM_CR_SER (1U << 1)
-#define RM_CR_SNB(cr) (((cr) >> 3) & 0xFU)
-#define RM_CR_PSIZE(cr) (((cr) >> 8) & 3U) /* 2: x32 */
-#define RM_CR_STRT (1U << 16)
-#define RM_CR_LOCK (1U << 31)
-#define RM_SR_EOP (1U << 0)             /* RM0090 3.8.4 */
-#define RM_SR_OPERR (1U << 1)
-#define RM_SR_WRPERR (1U << 4)
-#define RM_SR_PGAERR (1U << 5)
-#define RM_SR_PGPERR (1U << 6)
-#define RM_SR_PGSERR (1U << 7)
-#define RM_SR_BSY (1U << 16)
-#define RM_SR_W1C (RM_SR_EOP | RM_SR_OPERR | RM_SR_WRPERR | RM_SR_PGAERR | RM_SR_PGPERR | RM_SR_PGSERR)
 #define RM_ACR_LATENCY(acr) ((acr) & 7U) /* RM0090 3.8.1 */
 #define RM_ACR_PRFTEN (1U << 8)
 #define RM_ACR_ICEN (1U << 9)
@@ -70,7 +54,7 @@ enum op { OP_NONE, OP_ERASE, OP_PROGRAM };
 
 static struct {
 	uint32_t acr, sr, cr;           /* what the interface holds */
-	bool key1_seen, locked_until_reset;
+	struct regsim_flash_keys k;     /* RM0090 3.5.1's key sequence */
 	uint32_t keys[LOG_MAX];         /* every store to FLASH_KEYR, in order */
 	unsigned n_keys;
 	uint32_t sr_stores[LOG_MAX];
@@ -95,18 +79,7 @@ static void key_store(uint32_t key)
 	if (sim.n_keys < LOG_MAX) {
 		sim.keys[sim.n_keys++] = key;
 	}
-	if (sim.locked_until_reset || (sim.cr & RM_CR_LOCK) == 0U) {
-		return;
-	}
-	if (!sim.key1_seen && key == RM_KEY1) {
-		sim.key1_seen = true;
-	} else if (sim.key1_seen && key == RM_KEY2) {
-		sim.key1_seen = false;
-		sim.cr &= ~RM_CR_LOCK;
-	} else {
-		sim.key1_seen = false;
-		sim.locked_until_reset = true;
-	}
+	regsim_flash_key_store(&sim.k, &sim.cr, key);
 }
 
 static void cr_store(uint32_t v)
@@ -279,7 +252,7 @@ static void test_unlock_key1_then_key2(void **state)
 	assert_int_equal(sim.n_keys, 2U);
 	assert_int_equal(sim.keys[0], RM_KEY1);
 	assert_int_equal(sim.keys[1], RM_KEY2);
-	assert_false(sim.locked_until_reset);
+	assert_false(sim.k.locked_until_reset);
 	assert_int_equal(sim.ignored_cr_stores, 0U);
 	assert_int_equal(sim.erases, 1U);
 	assert_locked_and_acr(BOARD_ACR);
@@ -298,7 +271,7 @@ static void test_wrong_key_sequence_locks_until_reset(void **state)
 		FLASH_KEYR = wrong[i][0];
 		FLASH_KEYR = wrong[i][1];
 		assert_true((FLASH_CR & RM_CR_LOCK) != 0U);
-		assert_true(sim.locked_until_reset);
+		assert_true(sim.k.locked_until_reset);
 		assert_int_equal(chip_flash_erase_slot(0U), SQ_EIO);
 		assert_int_equal(chip_flash_program(nor_addr(0U), (const uint8_t *)"\x00\x00\x00\x00", 4U), SQ_EIO);
 		assert_int_equal(sim.erases, 0U);
