@@ -2,6 +2,8 @@
 # Tests named after host-sim modules that had none (cmocka, ASan+UBSan):
 #   tests/host-sim/test_sim_num.c          double <-> model numbers, both builds
 #   tests/host-sim/test_plant_scenario.c   built-in scenarios, scenario files
+#   tests/host-sim/oscsim/test_oscsim_cmd.py  oscsim map/simulate vs model.md's
+#                                          closed forms (numpy/scipy), both builds
 NAMED_HOSTSIM_BOTH := test test-fixed
 
 define named_hostsim_sim_num
@@ -17,3 +19,6 @@ build/test/tests/host-sim/test_plant_scenario: build/test/app/tests/host-sim/tes
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
 TEST_PROGS += build/test/tests/host-sim/test_plant_scenario
+
+tests/host-sim/oscsim/test_oscsim_cmd.py: build/test/oscsim build/test-fixed/oscsim
+TEST_PROGS += tests/host-sim/oscsim/test_oscsim_cmd.py
