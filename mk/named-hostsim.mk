@@ -6,6 +6,8 @@
 #   tests/host-sim/test_decode_inputs.c    decode --calib's input lines
 #                                          (both on tests/host-sim/two_corners.cal,
 #                                          both builds)
+#   tests/host-sim/test_cmd_decode.py      decode's text/CSV of frames encoded by
+#                                          canmatrix, every E2E status, both builds
 #   tests/host-sim/oscsim/test_oscsim_cmd.py  oscsim map/simulate vs model.md's
 #                                          closed forms (numpy/scipy), both builds
 NAMED_HOSTSIM_BOTH := test test-fixed
@@ -41,3 +43,6 @@ build/$(1)/tests/host-sim/test_decode_inputs: build/$(1)/app/tests/host-sim/test
 TEST_PROGS += build/$(1)/tests/host-sim/test_plant_vehicle build/$(1)/tests/host-sim/test_decode_inputs
 endef
 $(foreach v,$(NAMED_HOSTSIM_BOTH),$(eval $(call named_hostsim_map,$(v))))
+
+tests/host-sim/test_cmd_decode.py: build/test/squeal-sim build/test-fixed/squeal-sim
+TEST_PROGS += tests/host-sim/test_cmd_decode.py
