@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: MIT
-# Tests named after host-sim modules that had none (cmocka, ASan+UBSan):
+# Tests named after host-sim modules that had none (C: cmocka, ASan+UBSan;
+# Python: the sanitizer builds of the programs):
 #   tests/host-sim/test_sim_num.c          double <-> model numbers, both builds
 #   tests/host-sim/test_plant_scenario.c   built-in scenarios, scenario files
 #   tests/host-sim/test_plant_vehicle.c    a vehicle layout's frames and values
