@@ -25,24 +25,14 @@ import tempfile
 from decimal import Decimal
 
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
-sys.path[:0] = [os.path.join(_TESTS, "host-sim")]
+sys.path[:0] = [os.path.join(_TESTS, "support")]
 ROOT = os.path.dirname(_TESTS)
 
-import gen_inputs  # noqa: E402  (load_dbc, crc8_p01)
+import dbc_common  # noqa: E402  (load_dbc, e2e_p01_crc, Results)
 
 SIMS = [os.path.join(ROOT, "build", b, "squeal-sim") for b in ("test", "test-fixed")]
-
-passed = 0
-failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL: " + what)
+R = dbc_common.Results()
+check = R.check
 
 
 def run(sim, args, stdin=None):
@@ -52,10 +42,9 @@ def run(sim, args, stdin=None):
 
 def protect(fr, data, counter, crc_ok=True):
     """P01 1A: counter in the low nibble of byte 1, CRC-8 in byte 0."""
-    did = int(fr.attributes["E2E_DataID"])
     data = bytearray(data)
     data[1] = (data[1] & 0xF0) | (counter & 0x0F)
-    crc = gen_inputs.crc8_p01(bytes([did & 0xFF, did >> 8]) + bytes(data[1:]))
+    crc = dbc_common.e2e_p01_crc(int(fr.attributes["E2E_DataID"]), data)
     data[0] = crc if crc_ok else crc ^ 0xFF
     return bytes(data)
 
@@ -161,16 +150,15 @@ def test_bus_and_usage(sim, tag, log):
 
 
 def main():
-    db = gen_inputs.load_dbc()
+    db = dbc_common.load_dbc()
     log = make_log(db)
     for sim in SIMS:
         tag = os.path.basename(os.path.dirname(sim))
         test_text(sim, tag, log)
         test_csv(sim, tag, db, log)
         test_bus_and_usage(sim, tag, log)
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 0 if failed == 0 else 1
+    R.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()

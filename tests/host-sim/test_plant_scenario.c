@@ -40,42 +40,44 @@ static void at(double t_s, double want_speed_mps, double want_force_n)
 	assert_true(fabs(n - want_force_n) <= 1e-9);
 }
 
-static void test_stop(void **state)
+/* Each built-in scenario as plant_scenario.h describes it: its end and its
+ * values at a few times (worked out from the description). */
+static void test_builtins(void **state)
 {
+	static const struct {
+		const char *name;
+		double point_speed_mps, point_force_n, end_s;
+		unsigned int n;
+		plant_row_t at[6]; /* time, vehicle speed, force */
+	} cases[] = {
+		/* 30 m/s held 0.5 s, -6 m/s^2 for 5 s, held 0.5 s; 9 kN */
+		{ "stop", 0.0, 0.0, 6.0, 4U,
+		  { { 0.25, 30.0, 9000.0 }, { 2.5, 30.0 - 6.0 * 2.0, 9000.0 },
+		    { 5.5, 0.0, 9000.0 }, { 100.0, 0.0, 9000.0 } } },
+		/* 1.0 -> 0.4 -> 1.0 m/s in 6 s each at 1500 N */
+		{ "creep", 0.0, 0.0, 12.0, 3U,
+		  { { 3.0, 0.7, 1500.0 }, { 6.0, 0.4, 1500.0 }, { 9.0, 0.7, 1500.0 } } },
+		/* 8 s per force (3, 6, 9, 12 kN): 10 -> 0.5 m/s in 4 s, back */
+		{ "sweep", 0.0, 0.0, 32.0, 6U,
+		  { { 0.0, 10.0, 3000.0 }, { 4.0, 0.5, 3000.0 }, { 6.0, 5.25, 3000.0 },
+		    { 12.0, 0.5, 6000.0 }, { 28.0, 0.5, 12000.0 }, { 32.0, 10.0, 12000.0 } } },
+		/* the point given, for 10 s */
+		{ "point", 1.25, 4000.0, 10.0, 2U,
+		  { { 0.0, 1.25, 4000.0 }, { 7.5, 1.25, 4000.0 } } },
+	};
+	size_t i;
+	unsigned int k;
+
 	(void)state;
-	assert_int_equal(plant_scenario_builtin("stop", 0.0, 0.0, &sc), 0);
-	assert_string_equal(sc.name, "stop");
-	/* 30 m/s held 0.5 s, -6 m/s^2 for 5 s, held 0.5 s, 9 kN throughout */
-	assert_true(plant_scenario_end_s(&sc) == 6.0);
-	at(0.25, 30.0, 9000.0);
-	at(0.5 + 2.0, 30.0 - 6.0 * 2.0, 9000.0);
-	at(5.5, 0.0, 9000.0);
-	at(100.0, 0.0, 9000.0);
-}
-
-static void test_creep_sweep_point(void **state)
-{
-	(void)state;
-	assert_int_equal(plant_scenario_builtin("creep", 0.0, 0.0, &sc), 0);
-	assert_true(plant_scenario_end_s(&sc) == 12.0);
-	at(3.0, 0.7, 1500.0);   /* halfway from 1.0 to 0.4 over 6 s */
-	at(6.0, 0.4, 1500.0);
-	at(9.0, 0.7, 1500.0);
-
-	/* sweep: 8 s per force (3, 6, 9, 12 kN), 10 -> 0.5 m/s in 4 s, back */
-	assert_int_equal(plant_scenario_builtin("sweep", 0.0, 0.0, &sc), 0);
-	assert_true(plant_scenario_end_s(&sc) == 32.0);
-	at(0.0, 10.0, 3000.0);
-	at(4.0, 0.5, 3000.0);
-	at(6.0, 5.25, 3000.0);
-	at(12.0, 0.5, 6000.0);
-	at(28.0, 0.5, 12000.0);
-	at(32.0, 10.0, 12000.0);
-
-	assert_int_equal(plant_scenario_builtin("point", 1.25, 4000.0, &sc), 0);
-	assert_true(plant_scenario_end_s(&sc) == 10.0);
-	at(0.0, 1.25, 4000.0);
-	at(7.5, 1.25, 4000.0);
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		assert_int_equal(plant_scenario_builtin(cases[i].name, cases[i].point_speed_mps,
+							cases[i].point_force_n, &sc), 0);
+		assert_string_equal(sc.name, cases[i].name);
+		assert_true(plant_scenario_end_s(&sc) == cases[i].end_s);
+		for (k = 0; k < cases[i].n; k++) {
+			at(cases[i].at[k].time_s, cases[i].at[k].speed_mps, cases[i].at[k].force_n);
+		}
+	}
 	assert_int_equal(plant_scenario_builtin("point", -1.0, 4000.0, &sc), -1);
 	assert_int_equal(plant_scenario_builtin("point", 1.0, NAN, &sc), -1);
 	assert_int_equal(plant_scenario_builtin("brake", 1.0, 1.0, &sc), -1);
@@ -176,8 +178,7 @@ static void test_file_limits(void **state)
 }
 
 SQ_CMOCKA_MAIN(
-	cmocka_unit_test(test_stop),
-	cmocka_unit_test(test_creep_sweep_point),
+	cmocka_unit_test(test_builtins),
 	cmocka_unit_test(test_names),
 	cmocka_unit_test(test_file_rows),
 	cmocka_unit_test(test_file_refusals),

@@ -31,6 +31,9 @@ from scipy.optimize import brentq
 from scipy.special import i1
 
 ROOT = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0]
+sys.path[:0] = [os.path.join(ROOT, "tests", "support")]
+import dbc_common  # noqa: E402  (Results)
+
 PROGS = sys.argv[1:] or [os.path.join(ROOT, "build", b, "oscsim") for b in ("test", "test-fixed")]
 
 # model.md section 8's brake and its variations (oscsim map --list)
@@ -50,17 +53,8 @@ CYCLE_X_RANGE = 2048.0
 HEADER = ("brake,a_spm,v0_mps,ln_q,s,truth,sim_x,linear_grows,exact,exact_x,cubic,cubic_x,"
           "ln_q_border,border_dist,basin_in,basin_out")
 
-passed = 0
-failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL: " + what)
+R = dbc_common.Results()
+check = R.check
 
 
 def run(prog, args):
@@ -209,9 +203,8 @@ def main():
         test_map_csv(prog, tag)
         test_map_options(prog, tag)
         test_simulate(prog, tag)
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 0 if failed == 0 else 1
+    R.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()
