@@ -37,12 +37,12 @@ TEST_PROGS += build/test/tests/host-sim/oscsim/test_oscsim
 # the simulator already runs under the sanitizers in test_oscsim.
 OSCSIM_AGREE_VARIANTS := host host-fixed
 define oscsim_agree_rules
-build/$(1)/tests/host-sim/oscsim/test_oscsim_agreement: build/$(1)/app/tests/host-sim/oscsim/test_oscsim_agreement.o build/$(1)/liboscsim.a build/$(1)/app/$(OSCSIM_NUM_SRC:.c=.o) build/$(1)/libfirmware.a
+build/$(1)/tests/host-sim/oscsim/test_oscsim_map_agreement: build/$(1)/app/tests/host-sim/oscsim/test_oscsim_map_agreement.o build/$(1)/liboscsim.a build/$(1)/app/$(OSCSIM_NUM_SRC:.c=.o) build/$(1)/libfirmware.a
 	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef
 $(foreach v,$(OSCSIM_AGREE_VARIANTS),$(eval $(call oscsim_agree_rules,$(v))))
-TEST_PROGS += $(foreach v,$(OSCSIM_AGREE_VARIANTS),build/$(v)/tests/host-sim/oscsim/test_oscsim_agreement)
+TEST_PROGS += $(foreach v,$(OSCSIM_AGREE_VARIANTS),build/$(v)/tests/host-sim/oscsim/test_oscsim_map_agreement)
 
 # Cross-check against scipy's solve_ivp and model.md section 6.
 tests/host-sim/oscsim/test_oscsim_scipy.py: build/host/oscsim

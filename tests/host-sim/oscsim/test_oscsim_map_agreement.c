@@ -3,8 +3,9 @@
  * The firmware model's exact criterion must agree with simulation of the
  * oscillator at every point of the (a, v0) plane farther than 1 % in ln Q
  * from a border, for the default brake and each of the paper's variations
- * (a 40 x 40 grid here; `make bench` runs 100 x 100). Built against the
- * float and the fixed model (build/host{,-fixed}/test_agreement).
+ * (a 40 x 40 grid here; `make bench` runs 100 x 100), through the map's
+ * sweep and tallies (oscsim_map_run). Built against the float and the fixed
+ * model (build/host{,-fixed}/tests/host-sim/oscsim/test_oscsim_map_agreement).
  *
  * The truth is oscsim_truth (backward-time search for the unstable sliding
  * cycle, checked against scipy and model.md in the other tests); nothing
