@@ -75,8 +75,9 @@ def main():
     ap.add_argument("--duration-scale", type=float, default=1.0)
     ap.add_argument("--sim", default=os.path.join(ROOT, "build", "host", "squeal-sim"))
     args = ap.parse_args()
-    if args.count < 1 or not 0 <= args.broken <= args.count:
-        ap.error("need --count >= 1 and 0 <= --broken <= --count")
+    # a broken log is cut or corrupted from a good one: one good log at least
+    if args.count < 1 or not 0 <= args.broken < args.count:
+        ap.error("need --count >= 1 and 0 <= --broken < --count (broken logs are made from good ones)")
     rnd = random.Random(args.seed)
     os.makedirs(args.out, exist_ok=True)
     files = sorted(os.path.join(ROOT, "scenarios", f) for f in os.listdir(os.path.join(ROOT, "scenarios")))

@@ -139,11 +139,12 @@ def reproducible(c, tmp, out, scen1):
 
 def refusals(c, tmp):
     for what, args in (("--broken above --count", ["--count", "3", "--broken", "4"]),
+                       ("every log broken (none good to make them from)", ["--count", "2", "--broken", "2"]),
                        ("--count 0", ["--count", "0", "--broken", "0"]),
                        ("a negative --broken", ["--count", "3", "--broken", "-1"])):
         r = subprocess.run([sys.executable, GEN, "--out", os.path.join(tmp, "x"), "--sim", SIM] + args,
                            capture_output=True, text=True, timeout=60)
-        c.check(r.returncode == 2 and "need --count >= 1 and 0 <= --broken <= --count" in r.stderr
+        c.check(r.returncode == 2 and "need --count >= 1 and 0 <= --broken < --count" in r.stderr
                 and "Traceback" not in r.stderr, "%s: a usage error (exit %d)" % (what, r.returncode))
     r = gen(os.path.join(tmp, "false"), sim="/bin/false")
     c.check(r.returncode == 1 and "gen_fleet_logs: /bin/false plant --log" in r.stderr
