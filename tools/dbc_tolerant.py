@@ -289,7 +289,9 @@ def load(path, wanted):
     need and no reader accepts dropped.
 
     wanted: message names (DBC or long names) asked for.
-    Returns (db, notes): notes are one-line warnings of the lines skipped.
+    Returns (db, notes, idx): notes are one-line warnings of the lines
+    skipped; idx the Index of the file as written (message ids and lines,
+    ENUM lists, attribute defaults and values) that canmatrix may lose.
     DbcRefusal when the file or a statement of a wanted message is bad."""
     blines, sts, idx = scan(path)
     want_ids = {idx.lookup(n) for n in wanted} - {None}
