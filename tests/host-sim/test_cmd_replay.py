@@ -37,6 +37,7 @@ sys.path.insert(0, HERE)
 
 import gen_inputs  # noqa: E402
 import squeal_reference as ref  # noqa: E402
+from dbc_common import Results  # noqa: E402
 
 SIM_TEST = os.path.join(ROOT, "build", "test", "squeal-sim")
 SIM_HOST = os.path.join(ROOT, "build", "host", "squeal-sim")
@@ -47,20 +48,6 @@ V0_MIN_MPS = 0.01
 FORCE_MIN_N = 100.0
 
 LINE = re.compile(r"^\((\d{10})\.(\d{6})\) (\S+) ([0-9A-F]{3})#((?:[0-9A-F]{2})*)$")
-
-
-class Results:
-    def __init__(self):
-        self.passed = 0
-        self.failed = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-        else:
-            self.failed += 1
-            print("FAIL: " + what)
-        return cond
 
 
 def run(sim, args, stdin=None):

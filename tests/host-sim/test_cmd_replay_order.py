@@ -43,24 +43,11 @@ ROOT = os.path.dirname(_TESTS)
 sys.path.insert(0, HERE)
 
 import gen_inputs  # noqa: E402
+from dbc_common import Results  # noqa: E402
 
 SIM = os.path.join(ROOT, "build", "test", "squeal-sim")
 SIM_FIXED = os.path.join(ROOT, "build", "test-fixed", "squeal-sim")
 LINE = re.compile(r"^\((\d+)\.(\d{6})\) (\S+) ([0-9A-F]{3})#([0-9A-F]*)$")
-
-
-class Results:
-    def __init__(self):
-        self.passed = 0
-        self.failed = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-        else:
-            self.failed += 1
-            print("FAIL: " + what)
-        return cond
 
 
 R = Results()
