@@ -213,6 +213,24 @@ def compare(r, label, csv_text, exp, inputs):
     return len(exp)
 
 
+def decoded_rows(r, name, cal, text, frames, tmp, self_test):
+    """The input rows of frames decoded with cal: written as a candump log
+    and decoded by `squeal-sim decode --calib --inputs-csv`, or by the
+    reference decoder under --self-test; None (a counted failure) where the
+    program did not run."""
+    logp = os.path.join(tmp, name + "-random.log")
+    with open(logp, "w") as f:
+        for t, cid, ext, data in frames:
+            f.write("(%s) can0 %s#%s\n" % (t, ("%08X" if ext else "%03X") % cid, data.hex().upper()))
+    if self_test:
+        return reference_csv(text, frames)
+    rc, out, err = sim_rows(cal, logp)
+    if rc != 0:
+        vehref.sim_missing(r, "%s: decode --calib %s --inputs-csv" % (name, os.path.basename(cal)), rc, err)
+        return None
+    return out
+
+
 def run_layout(r, name, layout, tmp, n, self_test):
     db = vehref.load_dbc(vehref.layout_dbc(layout))
     extra = []
@@ -231,17 +249,9 @@ def run_layout(r, name, layout, tmp, n, self_test):
     _, inputs, _ = vehref.parse_calib(text)
     frames = random_frames(layout, db, inputs, n, seed=zlib.crc32(name.encode()))
     exp = canmatrix_rows(db, inputs, frames)
-    logp = os.path.join(tmp, name + "-random.log")
-    with open(logp, "w") as f:
-        for t, cid, ext, data in frames:
-            f.write("(%s) can0 %s#%s\n" % (t, ("%08X" if ext else "%03X") % cid, data.hex().upper()))
-    if self_test:
-        out = reference_csv(text, frames)
-    else:
-        rc, out, err = sim_rows(cal, logp)
-        if rc != 0:
-            vehref.sim_missing(r, "%s: decode --calib %s --inputs-csv" % (name, os.path.basename(cal)), rc, err)
-            return 0
+    out = decoded_rows(r, name, cal, text, frames, tmp, self_test)
+    if out is None:
+        return 0
     return compare(r, name, out, exp, inputs)
 
 
@@ -262,17 +272,9 @@ def run_field(r, name, layout, tmp, n, self_test):
         inp["_ref"] = inp.get("signal")
     frames = random_frames(layout, db, inputs, n, seed=zlib.crc32(name.encode()))
     exp = canmatrix_rows(db, inputs, frames, layout["scale"])
-    logp = os.path.join(tmp, name + "-random.log")
-    with open(logp, "w") as f:
-        for t, cid, ext, data in frames:
-            f.write("(%s) can0 %s#%s\n" % (t, ("%08X" if ext else "%03X") % cid, data.hex().upper()))
-    if self_test:
-        out = reference_csv(text, frames)
-    else:
-        rc, out, err = sim_rows(cal, logp)
-        if rc != 0:
-            vehref.sim_missing(r, "%s: decode --calib %s --inputs-csv" % (name, os.path.basename(cal)), rc, err)
-            return 0
+    out = decoded_rows(r, name, cal, text, frames, tmp, self_test)
+    if out is None:
+        return 0
     r.check(CM_CONSISTENCY["bad"] == 0, "%s: the page rule agrees with canmatrix's decode() (%d frames, %d not)"
             % (name, CM_CONSISTENCY["frames"], CM_CONSISTENCY["bad"]))
     return compare(r, name, out, exp, inputs)
