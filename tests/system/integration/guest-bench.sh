@@ -78,22 +78,22 @@ fi
 # The cheapest sender vcan has: cangen back to back on DiscSpeed's
 # identifier (random payloads: the ECU counts them as CRC errors, but must
 # still take every one off the socket), into each consumer.
+# cangen_flood NAME: the flood into the consumer just started, its start and
+# end uptime (s) to NAME.time for the host's rate.
+cangen_flood() {
+	sleep 0.5
+	t0=$(cat /proc/uptime | cut -d' ' -f1)
+	timeout -s INT "$flood_s" cangen "$ifc" -I 110 -L 4 -D r -g 0 2>/dev/null
+	t1=$(cat /proc/uptime | cut -d' ' -f1)
+	echo "$t0 $t1" >"$out/$1.time"
+	sleep 0.3
+}
 $sim ecu --iface "$ifc" --calib "$cal" 2>"$out/gen-ecu.ecu" &
 ecu=$!
-sleep 0.5
-t0=$(cat /proc/uptime | cut -d' ' -f1)
-timeout -s INT "$flood_s" cangen "$ifc" -I 110 -L 4 -D r -g 0 2>/dev/null
-t1=$(cat /proc/uptime | cut -d' ' -f1)
-echo "$t0 $t1" >"$out/gen-ecu.time"
-sleep 0.3
+cangen_flood gen-ecu
 kill -TERM "$ecu"; wait "$ecu"
 candump -d -L "$ifc" >"$out/gen-cd.log" &
 cd=$!
-sleep 0.5
-t0=$(cat /proc/uptime | cut -d' ' -f1)
-timeout -s INT "$flood_s" cangen "$ifc" -I 110 -L 4 -D r -g 0 2>/dev/null
-t1=$(cat /proc/uptime | cut -d' ' -f1)
-echo "$t0 $t1" >"$out/gen-cd.time"
-sleep 0.3
+cangen_flood gen-cd
 kill -INT "$cd"; wait "$cd" 2>/dev/null
 echo "bench: done"
