@@ -48,11 +48,7 @@ def random_frames(layout, db, inputs, n, seed):
     """[(t_text, id, extended, data)]: frames of the inputs' messages and a few
     foreign ones, each with its own timestamp (1 ms apart)."""
     rng = random.Random(seed)
-    msgs = []
-    for inp in inputs.values():
-        key = (vehref.ival(inp, "id"), vehref.yes(inp, "extended"))
-        if key not in msgs:
-            msgs.append(key)
+    msgs = vehref.input_messages(inputs)
     out = []
     for k in range(n):
         t = "%d.%06d" % (1700000000 + k // 1000, (k % 1000) * 1000)

@@ -263,11 +263,7 @@ def random_fd_frames(db, inputs, n, seed):
     frames at its length (FdData), shorter FD lengths, classic frames of its
     identifier; a classic message's classic frames, some short."""
     rng = random.Random(seed)
-    keys = []
-    for inp in inputs.values():
-        k = (vehref.ival(inp, "id"), vehref.yes(inp, "extended"))
-        if k not in keys:
-            keys.append(k)
+    keys = vehref.input_messages(inputs)
     frames = {(f.arbitration_id.id, bool(f.arbitration_id.extended)): f for f in db.frames}
     out = []
     for k in range(n):
