@@ -33,7 +33,6 @@ sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("suppo
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, HERE)
 
 import gen_inputs  # noqa: E402
 import squeal_reference as ref  # noqa: E402

@@ -35,7 +35,6 @@ sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("suppo
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-sys.path.insert(0, HERE)
 import squeal_reference as REF  # noqa: E402
 from test_fleet import Results  # noqa: E402
 
