@@ -29,7 +29,6 @@ from decimal import Decimal
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
 import dbc_common  # noqa: E402
 
