@@ -37,10 +37,9 @@ ROOT = os.path.dirname(_TESTS)
 import gen_inputs  # noqa: E402
 import squeal_reference as ref  # noqa: E402
 from dbc_common import Results  # noqa: E402
+from sim_cli import SAN_SIMS, SIMS  # noqa: E402
 
-SIM_TEST = os.path.join(ROOT, "build", "test", "squeal-sim")
-SIM_HOST = os.path.join(ROOT, "build", "host", "squeal-sim")
-SIM_FIXED = os.path.join(ROOT, "build", "test-fixed", "squeal-sim")
+SIM_TEST, SIM_HOST, SIM_FIXED = SAN_SIMS["float"], SIMS["float"], SAN_SIMS["fixed"]
 
 # Monitor calibration defaults (calib.h): below these it is "not sliding".
 V0_MIN_MPS = 0.01

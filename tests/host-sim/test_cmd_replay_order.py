@@ -42,9 +42,9 @@ ROOT = os.path.dirname(_TESTS)
 
 import gen_inputs  # noqa: E402
 from dbc_common import Results  # noqa: E402
+from sim_cli import SAN_SIMS  # noqa: E402
 
-SIM = os.path.join(ROOT, "build", "test", "squeal-sim")
-SIM_FIXED = os.path.join(ROOT, "build", "test-fixed", "squeal-sim")
+SIM, SIM_FIXED = SAN_SIMS["float"], SAN_SIMS["fixed"]
 LINE = re.compile(r"^\((\d+)\.(\d{6})\) (\S+) ([0-9A-F]{3})#([0-9A-F]*)$")
 
 
