@@ -56,6 +56,22 @@ def load_su(build_dir):
     return frames
 
 
+def pushed_bytes(args):
+    """Bytes a push/stmdb/vpush of the register list in args stores: 4 per
+    core or single register (r4, lr, s16), 8 per double (d8); ranges such as
+    r4-r7 or d8-d15 count each register."""
+    regs = re.search(r"\{([^}]*)\}", args)
+    if not regs:
+        return 0
+    n = 0
+    for r in regs.group(1).split(","):
+        r = r.strip()
+        rng = re.match(r"[rsd](\d+)-[rsd](\d+)", r)
+        width = 8 if r.startswith("d") else 4
+        n += (int(rng.group(2)) - int(rng.group(1)) + 1) * width if rng else width
+    return n
+
+
 def load_ci_indirect(build_dir):
     """functions the compiler says make an indirect call"""
     callers = set()
@@ -102,25 +118,9 @@ def parse_elf(prefix, elf):
                 and t.group(2) != cur:
             calls[cur].add(t.group(2))  # tail call
         if insn_no <= 8:  # prologue
-            if op in ("push", "push.w", "stmdb", "stmdb.w") and ("sp!" in args or op.startswith("push")):
-                regs = re.search(r"\{([^}]*)\}", args)
-                if regs:
-                    n = 0
-                    for r in regs.group(1).split(","):
-                        r = r.strip()
-                        rng = re.match(r"r(\d+)-r(\d+)", r)
-                        n += int(rng.group(2)) - int(rng.group(1)) + 1 if rng else 1
-                    prologue[cur] += 4 * n
-            elif op.startswith("vpush"):
-                regs = re.search(r"\{([^}]*)\}", args)
-                if regs:
-                    n = 0
-                    for r in regs.group(1).split(","):
-                        r = r.strip()
-                        rng = re.match(r"([sd])(\d+)-[sd](\d+)", r)
-                        width = 8 if r.startswith("d") else 4
-                        n += (int(rng.group(3)) - int(rng.group(2)) + 1) * width if rng else width
-                    prologue[cur] += n
+            if op in ("push", "push.w", "stmdb", "stmdb.w") and ("sp!" in args or op.startswith("push")) \
+                    or op.startswith("vpush"):
+                prologue[cur] += pushed_bytes(args)
             elif op.startswith("sub") and args.startswith("sp, sp, #") or \
                     (op.startswith("sub") and re.match(r"sp, #", args)):
                 prologue[cur] += int(re.search(r"#(\d+)", args).group(1))

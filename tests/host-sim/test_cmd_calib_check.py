@@ -26,10 +26,7 @@ _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
 ROOT = os.path.dirname(_TESTS)
-BINARIES = {
-    "float": os.path.join(ROOT, "build", "host", "squeal-sim"),
-    "fixed": os.path.join(ROOT, "build", "host-fixed", "squeal-sim"),
-}
+from sim_cli import SIMS as BINARIES, Results  # noqa: E402
 
 TEMPLATE = """# written by test_calib_check.py
 [input S]
@@ -67,17 +64,7 @@ FIXTURES = {  # file -> (inputs, corners)
     "torque_rpm.cal": (2, 1),
 }
 
-passed = 0
-failed = 0
-
-
-def result(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL " + what)
+result = Results()
 
 
 def run(args):
@@ -158,8 +145,7 @@ def main():
         result(rc != 0 and "calib" not in err and good not in err,
                "%s ecu --calib 2^-10: stops at the interface, not the file: %r" % (build, err))
 
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 1 if failed else 0
+    return result.finish()
 
 
 if __name__ == "__main__":

@@ -26,10 +26,7 @@ sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("suppo
 ROOT = os.path.dirname(_TESTS)
 import squeal_reference as ref  # noqa: E402
 
-BINARIES = {
-    "float": os.path.join(ROOT, "build", "host", "squeal-sim"),
-    "fixed": os.path.join(ROOT, "build", "host-fixed", "squeal-sim"),
-}
+from sim_cli import SIMS as BINARIES, Results  # noqa: E402
 REL = {"float": 1e-5, "fixed": 1e-3}
 CLASS_BORDER_TOL = 1e-3
 FLT_MAX = 3.4028234663852886e38
@@ -49,17 +46,7 @@ FIELDS = {
     "basin_ratio": ("basin_ratio", 1.0, 24),
 }
 
-passed = 0
-failed = 0
-
-
-def result(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL " + what)
+result = Results()
 
 
 def field_max(build, q):
@@ -310,9 +297,8 @@ def main():
         if not os.access(path, os.X_OK):
             print("missing %s (make %s)" % (path, os.path.relpath(path, ROOT)))
             result(False, "binary %s" % path)
-    if failed:
-        print("RESULT: %d passed, %d failed" % (passed, failed))
-        return 1
+    if result.counts[False]:
+        return result.finish()
     rows = sample(load_rows())
     for build in BINARIES:
         check_literal(build)
@@ -320,8 +306,7 @@ def main():
         for row in rows:
             check_row(build, row)
     print("%d golden rows x %d builds checked" % (len(rows), len(BINARIES)))
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 0 if failed == 0 else 1
+    return result.finish()
 
 
 if __name__ == "__main__":

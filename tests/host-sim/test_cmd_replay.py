@@ -33,34 +33,19 @@ sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("suppo
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, HERE)
 
 import gen_inputs  # noqa: E402
 import squeal_reference as ref  # noqa: E402
+from dbc_common import Results  # noqa: E402
+from sim_cli import SAN_SIMS, SIMS  # noqa: E402
 
-SIM_TEST = os.path.join(ROOT, "build", "test", "squeal-sim")
-SIM_HOST = os.path.join(ROOT, "build", "host", "squeal-sim")
-SIM_FIXED = os.path.join(ROOT, "build", "test-fixed", "squeal-sim")
+SIM_TEST, SIM_HOST, SIM_FIXED = SAN_SIMS["float"], SIMS["float"], SAN_SIMS["fixed"]
 
 # Monitor calibration defaults (calib.h): below these it is "not sliding".
 V0_MIN_MPS = 0.01
 FORCE_MIN_N = 100.0
 
 LINE = re.compile(r"^\((\d{10})\.(\d{6})\) (\S+) ([0-9A-F]{3})#((?:[0-9A-F]{2})*)$")
-
-
-class Results:
-    def __init__(self):
-        self.passed = 0
-        self.failed = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-        else:
-            self.failed += 1
-            print("FAIL: " + what)
-        return cond
 
 
 def run(sim, args, stdin=None):

@@ -34,6 +34,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
 import squeal_reference as ref  # noqa: E402
 from dbc_common import Results  # noqa: E402
+from vehref import crc16_ccitt_false  # noqa: E402
 
 SIMS = [os.path.join(ROOT, "build", v, "squeal-sim") for v in ("test", "test-fixed")]
 CAL = os.path.join(HERE, "fd_p05.cal")
@@ -42,15 +43,6 @@ DATA_ID_WS, DATA_ID_P = 0x10A0, 0x10B0
 R_PAD_M, R_WHEEL_M = 0.12, 0.30      # the calibration's defaults
 AREA_M2 = 2290e-6
 FORCE_N = 9000.0
-
-
-def crc16_ccitt_false(data):
-    crc = 0xFFFF
-    for b in data:
-        crc ^= b << 8
-        for _ in range(8):
-            crc = ((crc << 1) ^ 0x1021) & 0xFFFF if crc & 0x8000 else (crc << 1) & 0xFFFF
-    return crc
 
 
 def p05_protect(buf, data_id, counter):

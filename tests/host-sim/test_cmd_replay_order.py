@@ -38,29 +38,14 @@ from decimal import Decimal
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, HERE)
 
 import gen_inputs  # noqa: E402
+from dbc_common import Results  # noqa: E402
+from sim_cli import SAN_SIMS  # noqa: E402
 
-SIM = os.path.join(ROOT, "build", "test", "squeal-sim")
-SIM_FIXED = os.path.join(ROOT, "build", "test-fixed", "squeal-sim")
+SIM, SIM_FIXED = SAN_SIMS["float"], SAN_SIMS["fixed"]
 LINE = re.compile(r"^\((\d+)\.(\d{6})\) (\S+) ([0-9A-F]{3})#([0-9A-F]*)$")
-
-
-class Results:
-    def __init__(self):
-        self.passed = 0
-        self.failed = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-        else:
-            self.failed += 1
-            print("FAIL: " + what)
-        return cond
 
 
 R = Results()

@@ -29,12 +29,11 @@ from decimal import Decimal
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
 import dbc_common  # noqa: E402
+from sim_cli import SAN_SIMS  # noqa: E402
 
-SIM = os.path.join(ROOT, "build", "test", "squeal-sim")
-SIM_FIXED = os.path.join(ROOT, "build", "test-fixed", "squeal-sim")
+SIM, SIM_FIXED = SAN_SIMS["float"], SAN_SIMS["fixed"]
 DRIVER = os.path.join(ROOT, "build", "test", "tests", "host-sim", "summary_driver")
 R = dbc_common.Results()
 DB = dbc_common.load_dbc()

@@ -93,19 +93,10 @@ def read_int(path, default=None):
         return default
 
 
-class Checks:
-    def __init__(self):
-        self.passed = 0
-        self.failed = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-            print("ok    " + what)
-        else:
-            self.failed += 1
-            print("FAIL  " + what)
-        return cond
+class Checks(dbc_common.Results):
+    """The shared counter, one line per check."""
+    OK = "ok    "
+    FAIL = "FAIL  "
 
 
 class Decoder:

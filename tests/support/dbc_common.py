@@ -54,6 +54,10 @@ def snake(name):
 
 
 class Results:
+    """Counts checks; prints a failed one (and a passed one where OK is set)."""
+    OK = None
+    FAIL = "FAIL: "
+
     def __init__(self):
         self.passed = 0
         self.failed = 0
@@ -61,9 +65,11 @@ class Results:
     def check(self, cond, what):
         if cond:
             self.passed += 1
+            if self.OK is not None:
+                print(self.OK + str(what))
         else:
             self.failed += 1
-            print("FAIL:", what)
+            print(self.FAIL + str(what))
         return cond
 
     def finish(self):

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """What the squeal-sim command-line tests share: the two release programs
-(float, fixed), one way to run a command, and the counting of checks that
+(float, fixed) and their sanitizer builds, one way to run a command, and the counting of checks that
 ends with the runner's "RESULT: N passed, M failed" line."""
 
 import os
@@ -9,6 +9,9 @@ import subprocess
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SIMS = {build: os.path.join(ROOT, "build", variant, "squeal-sim")
         for build, variant in (("float", "host"), ("fixed", "host-fixed"))}
+# the sanitizer builds (ASan + UBSan) of the same two
+SAN_SIMS = {build: os.path.join(ROOT, "build", variant, "squeal-sim")
+            for build, variant in (("float", "test"), ("fixed", "test-fixed"))}
 
 
 def run(argv, cwd=None, timeout=300):

@@ -238,6 +238,17 @@ def yes(d, k):
     return d.get(k, "no").lower() in ("yes", "1")
 
 
+def input_messages(inputs):
+    """The (identifier, extended) of the messages the inputs read, each once,
+    in the order of the inputs."""
+    keys = []
+    for inp in inputs.values():
+        k = (ival(inp, "id"), yes(inp, "extended"))
+        if k not in keys:
+            keys.append(k)
+    return keys
+
+
 def same_num(text, value):
     return abs(float(text) - float(value)) <= 1e-12 * max(1.0, abs(float(value)))
 

@@ -31,9 +31,7 @@ import sys
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, HERE)
 import vehref  # noqa: E402
 import gen_drive  # noqa: E402
 import squeal_reference as ref  # noqa: E402

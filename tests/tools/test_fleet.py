@@ -29,9 +29,7 @@ import tempfile
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, HERE)
 import dbc_common  # noqa: E402
 PY = "/usr/bin/python3"
 SIM = os.path.join(ROOT, "build", "host", "squeal-sim")

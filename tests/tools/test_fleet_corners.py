@@ -33,14 +33,10 @@ _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.path.dirname(_TESTS), "tools"))
 import squeal_reference as REF  # noqa: E402
-from test_fleet import Results  # noqa: E402
+from test_fleet import PY, ROOT, SIM, Results  # noqa: E402
 
-PY = "/usr/bin/python3"
-SIM = os.path.join(ROOT, "build", "host", "squeal-sim")
 CAL = os.path.join(HERE, "fixtures", "two_corner.cal")
 DBC = os.path.join(ROOT, "firmware", "protocol", "squeal.dbc")
 STATES = ("stable", "bistable", "unstable", "not_sliding", "fault")

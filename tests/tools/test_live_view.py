@@ -28,15 +28,10 @@ import time
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(os.path.dirname(_TESTS), "tools"))
 import live_view  # noqa: E402
-from test_fleet import Results  # noqa: E402
+from test_fleet import PY, ROOT, SIM, Results  # noqa: E402
 
-PY = "/usr/bin/python3"
-SIM = os.path.join(ROOT, "build", "host", "squeal-sim")
 TOOL = os.path.join(ROOT, "tools", "live_view.py")
 R = Results()
 STATE_NAMES = {"0": "stable", "1": "bistable", "2": "unstable", "3": "not_sliding"}

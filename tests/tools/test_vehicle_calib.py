@@ -33,8 +33,6 @@ import tempfile
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
 import vehref  # noqa: E402
 import gen_drive  # noqa: E402
 import e2e_harness  # noqa: E402

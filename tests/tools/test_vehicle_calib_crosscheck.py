@@ -48,11 +48,7 @@ def random_frames(layout, db, inputs, n, seed):
     """[(t_text, id, extended, data)]: frames of the inputs' messages and a few
     foreign ones, each with its own timestamp (1 ms apart)."""
     rng = random.Random(seed)
-    msgs = []
-    for inp in inputs.values():
-        key = (vehref.ival(inp, "id"), vehref.yes(inp, "extended"))
-        if key not in msgs:
-            msgs.append(key)
+    msgs = vehref.input_messages(inputs)
     out = []
     for k in range(n):
         t = "%d.%06d" % (1700000000 + k // 1000, (k % 1000) * 1000)
@@ -213,6 +209,24 @@ def compare(r, label, csv_text, exp, inputs):
     return len(exp)
 
 
+def decoded_rows(r, name, cal, text, frames, tmp, self_test):
+    """The input rows of frames decoded with cal: written as a candump log
+    and decoded by `squeal-sim decode --calib --inputs-csv`, or by the
+    reference decoder under --self-test; None (a counted failure) where the
+    program did not run."""
+    logp = os.path.join(tmp, name + "-random.log")
+    with open(logp, "w") as f:
+        for t, cid, ext, data in frames:
+            f.write("(%s) can0 %s#%s\n" % (t, ("%08X" if ext else "%03X") % cid, data.hex().upper()))
+    if self_test:
+        return reference_csv(text, frames)
+    rc, out, err = sim_rows(cal, logp)
+    if rc != 0:
+        vehref.sim_missing(r, "%s: decode --calib %s --inputs-csv" % (name, os.path.basename(cal)), rc, err)
+        return None
+    return out
+
+
 def run_layout(r, name, layout, tmp, n, self_test):
     db = vehref.load_dbc(vehref.layout_dbc(layout))
     extra = []
@@ -231,17 +245,9 @@ def run_layout(r, name, layout, tmp, n, self_test):
     _, inputs, _ = vehref.parse_calib(text)
     frames = random_frames(layout, db, inputs, n, seed=zlib.crc32(name.encode()))
     exp = canmatrix_rows(db, inputs, frames)
-    logp = os.path.join(tmp, name + "-random.log")
-    with open(logp, "w") as f:
-        for t, cid, ext, data in frames:
-            f.write("(%s) can0 %s#%s\n" % (t, ("%08X" if ext else "%03X") % cid, data.hex().upper()))
-    if self_test:
-        out = reference_csv(text, frames)
-    else:
-        rc, out, err = sim_rows(cal, logp)
-        if rc != 0:
-            vehref.sim_missing(r, "%s: decode --calib %s --inputs-csv" % (name, os.path.basename(cal)), rc, err)
-            return 0
+    out = decoded_rows(r, name, cal, text, frames, tmp, self_test)
+    if out is None:
+        return 0
     return compare(r, name, out, exp, inputs)
 
 
@@ -262,17 +268,9 @@ def run_field(r, name, layout, tmp, n, self_test):
         inp["_ref"] = inp.get("signal")
     frames = random_frames(layout, db, inputs, n, seed=zlib.crc32(name.encode()))
     exp = canmatrix_rows(db, inputs, frames, layout["scale"])
-    logp = os.path.join(tmp, name + "-random.log")
-    with open(logp, "w") as f:
-        for t, cid, ext, data in frames:
-            f.write("(%s) can0 %s#%s\n" % (t, ("%08X" if ext else "%03X") % cid, data.hex().upper()))
-    if self_test:
-        out = reference_csv(text, frames)
-    else:
-        rc, out, err = sim_rows(cal, logp)
-        if rc != 0:
-            vehref.sim_missing(r, "%s: decode --calib %s --inputs-csv" % (name, os.path.basename(cal)), rc, err)
-            return 0
+    out = decoded_rows(r, name, cal, text, frames, tmp, self_test)
+    if out is None:
+        return 0
     r.check(CM_CONSISTENCY["bad"] == 0, "%s: the page rule agrees with canmatrix's decode() (%d frames, %d not)"
             % (name, CM_CONSISTENCY["frames"], CM_CONSISTENCY["bad"]))
     return compare(r, name, out, exp, inputs)

@@ -35,11 +35,9 @@ import zlib
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, os.path.join(HERE, "fixtures"))
-import fd_layouts  # noqa: E402
 import vehref  # noqa: E402
+sys.path.insert(0, vehref.FIXTURES)
+import fd_layouts  # noqa: E402
 import gen_drive  # noqa: E402
 import e2e_harness  # noqa: E402
 import test_vehicle_calib_crosscheck as xcheck  # noqa: E402
@@ -263,11 +261,7 @@ def random_fd_frames(db, inputs, n, seed):
     frames at its length (FdData), shorter FD lengths, classic frames of its
     identifier; a classic message's classic frames, some short."""
     rng = random.Random(seed)
-    keys = []
-    for inp in inputs.values():
-        k = (vehref.ival(inp, "id"), vehref.yes(inp, "extended"))
-        if k not in keys:
-            keys.append(k)
+    keys = vehref.input_messages(inputs)
     frames = {(f.arbitration_id.id, bool(f.arbitration_id.extended)): f for f in db.frames}
     out = []
     for k in range(n):

@@ -28,11 +28,9 @@ import tempfile
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(_TESTS)
-sys.path.insert(0, os.path.join(HERE, "fixtures"))
-import fd_layouts  # noqa: E402
 import vehref  # noqa: E402
+sys.path.insert(0, vehref.FIXTURES)
+import fd_layouts  # noqa: E402
 import gen_drive  # noqa: E402
 import e2e_harness  # noqa: E402
 
@@ -65,7 +63,7 @@ def main(argv):
         if why:
             sim, w = why[0]
             print("SKIP: FD end to end on the held-out layout (%s calib-check refuses the FD calibration: %s)"
-                  % (os.path.relpath(sim, ROOT), w))
+                  % (os.path.relpath(sim, vehref.ROOT), w))
             print("RESULT: 0 passed, 0 failed, 1 skipped")
             return 0
     e2e_harness.main(argv, [("fd unseen", LAYOUT, SEED)])

@@ -41,7 +41,6 @@ _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
 import vehref  # noqa: E402
 
 ESC = os.path.join(HERE, "fixtures", "field", "field_esc.dbc")
@@ -331,23 +330,25 @@ def check_mux(r, tmp):
 
     def keys(d):
         return {k: d[k] for k in d if k.startswith("mux")}
-    d = one("SG_MUL_VAL_ range", "WhlMux_Ext.WME_Front")
-    r.check(keys(d) == {"mux_start_bit": "0", "mux_length": "4", "mux_byte_order": "intel", "mux_value": "0",
-                        "mux_value_max": "2"}, "extended mux: pages 0-2 (%s)" % keys(d))
-    d = one("one page", "WhlMux_Ext.WME_Press")
-    r.check(keys(d) == {"mux_start_bit": "0", "mux_length": "4", "mux_byte_order": "intel", "mux_value": "6"},
-            "extended mux, one page: no mux_value_max (%s)" % keys(d))
-    d = one("cascaded", "BrkMux_Casc.BMC_PressRear")
-    r.check(keys(d) == {"mux_start_bit": "0", "mux_length": "2", "mux_byte_order": "intel", "mux_value": "1",
-                        "mux2_start_bit": "2", "mux2_length": "3", "mux2_byte_order": "intel", "mux2_value": "2",
-                        "mux2_value_max": "4"}, "cascaded: outer page 1, inner 2-4 (%s)" % keys(d))
-    d = one("outer page only", "BrkMux_Casc.BMC_Speed")
-    r.check(keys(d) == {"mux_start_bit": "0", "mux_length": "2", "mux_byte_order": "intel", "mux_value": "2"},
-            "cascaded frame, a signal of the outer selector only (%s)" % keys(d))
-    d = one("independent", "WhlMux_Indep.WMI_PressB23")
-    r.check(keys(d) == {"mux_start_bit": "2", "mux_length": "2", "mux_byte_order": "intel", "mux_value": "2",
-                        "mux_value_max": "3"},
-            "independent multiplexors: the signal's own selector (%s)" % keys(d))
+    def mux(start, length, value, value_max=None, pre="mux"):
+        """The calibration keys of one selector (intel), as written by hand."""
+        k = {pre + "_start_bit": str(start), pre + "_length": str(length), pre + "_byte_order": "intel",
+             pre + "_value": str(value)}
+        if value_max is not None:
+            k[pre + "_value_max"] = str(value_max)
+        return k
+    for what, force, want, label in (
+            ("SG_MUL_VAL_ range", "WhlMux_Ext.WME_Front", mux(0, 4, 0, 2), "extended mux: pages 0-2"),
+            ("one page", "WhlMux_Ext.WME_Press", mux(0, 4, 6), "extended mux, one page: no mux_value_max"),
+            ("cascaded", "BrkMux_Casc.BMC_PressRear", dict(mux(0, 2, 1), **mux(2, 3, 2, 4, pre="mux2")),
+             "cascaded: outer page 1, inner 2-4"),
+            ("outer page only", "BrkMux_Casc.BMC_Speed", mux(0, 2, 2),
+             "cascaded frame, a signal of the outer selector only"),
+            ("independent", "WhlMux_Indep.WMI_PressB23", mux(2, 2, 2, 3),
+             "independent multiplexors: the signal's own selector")):
+        d = one(what, force)
+        r.check(keys(d) == want, "%s (%s)" % (label, keys(d)))
+    # d: the independent multiplexor's input, the last of the table
     r.check(d.get("period_ms") == "20", "GenMsgCycleTime 10 ms, 2 of 4 pages: 20 ms (%s)" % d.get("period_ms"))
     refused(r, "two ranges", base + ["--speed", "WhlMux_Indep.WMI_Plain", "--force", "WhlMux_Ext.WME_Temp",
                                      "--force-unit", "bar", "--piston-area-mm2", "2000", "--period-ms", "10"],

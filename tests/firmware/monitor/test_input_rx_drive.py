@@ -39,6 +39,8 @@ sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("suppo
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
+import dbc_common  # noqa: E402
+import vehref  # noqa: E402
 SIM = os.environ.get("SQUEAL_SIM", os.path.join(ROOT, "build", "host", "squeal-sim"))
 DBC = os.path.join(ROOT, "firmware", "protocol", "squeal.dbc")
 LAYOUTS = ["moto15_p02.cal", "intel14_counter.cal", "mux_psi.cal", "ext29_kn.cal",
@@ -57,42 +59,17 @@ HOLD_ENDS = [1.0, 2.3, 3.6, 4.9, 6.2, 7.5, 8.8]
 MU_INF, DMU, SLOPE = 0.25, 0.15, 2.0
 
 
-class Results:
-    def __init__(self):
-        self.passed = 0
-        self.failed = 0
-        self.skipped = 0
-
-    def check(self, cond, what):
-        if cond:
-            self.passed += 1
-        else:
-            self.failed += 1
-            print("FAIL: " + what)
-        return cond
+class Results(dbc_common.Results):
+    """The shared counter, with the skips of this test."""
+    skipped = 0
 
 
 def read_cal(path):
     """The calibration text as {'flat': {...}, 'inputs': {name: {...}},
     'corners': [(pos, {...})]} (keys and values as written)."""
-    cal = {"flat": {}, "inputs": {}, "corners": []}
-    cur = cal["flat"]
     with open(path) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if not line:
-                continue
-            m = re.match(r"\[(input|corner)\s+(\w+)\]$", line)
-            if m:
-                cur = {}
-                if m.group(1) == "input":
-                    cal["inputs"][m.group(2)] = cur
-                else:
-                    cal["corners"].append((m.group(2).upper(), cur))
-                continue
-            k, v = [s.strip() for s in line.split("=", 1)]
-            cur[k] = v
-    return cal
+        flat, inputs, corners = vehref.parse_calib(f.read())
+    return {"flat": flat, "inputs": inputs, "corners": list(corners.items())}
 
 
 def num(d, key, default):

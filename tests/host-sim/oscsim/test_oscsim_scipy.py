@@ -17,30 +17,23 @@ Usage: test_oscsim_scipy.py [path/to/oscsim]   (default build/host/oscsim)
 Prints one line per check and "RESULT: N passed, M failed".
 """
 import math
+import os
 import subprocess
 import sys
 
 import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
+# tests/support of this checkout (the shared check counter)
+sys.path.insert(0, os.path.join(os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0], "tests", "support"))
+from named_checks import NamedChecks  # noqa: E402
 
 OSCSIM = sys.argv[1] if len(sys.argv) > 1 else "build/host/oscsim"
 
 DEFAULT = dict(mass=1.0, omega0=5000.0, damping=0.023, mu_inf=0.25,
                delta_mu=0.15, slope=2.0, v0=1.0, force=9000.0)
 
-passed = 0
-failed = 0
-
-
-def check(name, ok, detail=""):
-    global passed, failed
-    if ok:
-        passed += 1
-        print(f"PASS  {name}  {detail}")
-    else:
-        failed += 1
-        print(f"FAIL  {name}  {detail}")
+check = NamedChecks()
 
 
 def run(args):
@@ -339,8 +332,7 @@ def main():
             fn()
         except Exception as exc:  # a crash is a failure, never a skip
             check(fn.__name__, False, f"raised {exc!r}")
-    print(f"RESULT: {passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return check.finish()
 
 
 if __name__ == "__main__":

@@ -33,17 +33,22 @@ gen=$!
 latency load
 kill "$gen"; wait "$gen" 2>/dev/null
 
+# plant_flood RATE NAME: the plant at RATE frames/s per message into the
+# consumer just started, for flood_s; its messages to NAME.plant.
+plant_flood() {
+	sleep 0.5
+	timeout -s INT "$flood_s" $sim plant --iface "$ifc" --scenario point \
+		--v0 3 --force 9000 --rate-hz "$1" --duration 100000 \
+		2>"$out/$2.plant"
+	sleep 0.3
+}
 # Highest input rate with zero loss: the plant as fast as it can (one
 # vCPU: sender and receiver share it), each consumer in turn. If the ECU
 # lost anything, retry at lower plant rates (frames/s per message).
 for rate in 1000000 4000 2000 1000 500; do
 	$sim ecu --iface "$ifc" --calib "$cal" 2>"$out/rate-ecu-$rate.ecu" &
 	ecu=$!
-	sleep 0.5
-	timeout -s INT "$flood_s" $sim plant --iface "$ifc" --scenario point \
-		--v0 3 --force 9000 --rate-hz "$rate" --duration 100000 \
-		2>"$out/rate-ecu-$rate.plant"
-	sleep 0.3
+	plant_flood "$rate" "rate-ecu-$rate"
 	kill -TERM "$ecu"; wait "$ecu"
 	if grep -q 'hal_rx_kernel_drops=0 ' "$out/rate-ecu-$rate.ecu" &&
 	   grep -q 'speed_e2e_lost=0 ' "$out/rate-ecu-$rate.ecu" &&
@@ -54,11 +59,7 @@ done
 for rate in 1000000 4000 2000 1000 500; do
 	candump -d -L "$ifc" >"$out/rate-cd-$rate.log" &
 	cd=$!
-	sleep 0.5
-	timeout -s INT "$flood_s" $sim plant --iface "$ifc" --scenario point \
-		--v0 3 --force 9000 --rate-hz "$rate" --duration 100000 \
-		2>"$out/rate-cd-$rate.plant"
-	sleep 0.3
+	plant_flood "$rate" "rate-cd-$rate"
 	kill -INT "$cd"; wait "$cd" 2>/dev/null
 	grep -q DROPCOUNT "$out/rate-cd-$rate.log" || break
 done
@@ -68,32 +69,28 @@ if [ "${SQ_GUEST:-0}" = 1 ]; then
 	echo 8388608 >/proc/sys/net/core/rmem_max
 	$sim ecu --iface "$ifc" --calib "$cal" --rcvbuf 4194304 2>"$out/deep-ecu.ecu" &
 	ecu=$!
-	sleep 0.5
-	timeout -s INT "$flood_s" $sim plant --iface "$ifc" --scenario point \
-		--v0 3 --force 9000 --rate-hz 1000000 --duration 100000 \
-		2>"$out/deep-ecu.plant"
-	sleep 0.3
+	plant_flood 1000000 deep-ecu
 	kill -TERM "$ecu"; wait "$ecu"
 fi
 # The cheapest sender vcan has: cangen back to back on DiscSpeed's
 # identifier (random payloads: the ECU counts them as CRC errors, but must
 # still take every one off the socket), into each consumer.
+# cangen_flood NAME: the flood into the consumer just started, its start and
+# end uptime (s) to NAME.time for the host's rate.
+cangen_flood() {
+	sleep 0.5
+	t0=$(cat /proc/uptime | cut -d' ' -f1)
+	timeout -s INT "$flood_s" cangen "$ifc" -I 110 -L 4 -D r -g 0 2>/dev/null
+	t1=$(cat /proc/uptime | cut -d' ' -f1)
+	echo "$t0 $t1" >"$out/$1.time"
+	sleep 0.3
+}
 $sim ecu --iface "$ifc" --calib "$cal" 2>"$out/gen-ecu.ecu" &
 ecu=$!
-sleep 0.5
-t0=$(cat /proc/uptime | cut -d' ' -f1)
-timeout -s INT "$flood_s" cangen "$ifc" -I 110 -L 4 -D r -g 0 2>/dev/null
-t1=$(cat /proc/uptime | cut -d' ' -f1)
-echo "$t0 $t1" >"$out/gen-ecu.time"
-sleep 0.3
+cangen_flood gen-ecu
 kill -TERM "$ecu"; wait "$ecu"
 candump -d -L "$ifc" >"$out/gen-cd.log" &
 cd=$!
-sleep 0.5
-t0=$(cat /proc/uptime | cut -d' ' -f1)
-timeout -s INT "$flood_s" cangen "$ifc" -I 110 -L 4 -D r -g 0 2>/dev/null
-t1=$(cat /proc/uptime | cut -d' ' -f1)
-echo "$t0 $t1" >"$out/gen-cd.time"
-sleep 0.3
+cangen_flood gen-cd
 kill -INT "$cd"; wait "$cd" 2>/dev/null
 echo "bench: done"

@@ -30,6 +30,8 @@ import tempfile
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
 
+import dbc_common  # noqa: E402
+
 ROOT = os.path.dirname(_TESTS)
 REALCAN = os.environ.get("REALCAN_DIR", os.path.join(os.path.dirname(ROOT), "shared", "realcan"))
 SIM = os.path.join(ROOT, "build", "host", "squeal-sim")
@@ -176,15 +178,9 @@ def main(argv):
         print("SKIP: realcan drives (no recorded drives at %s)" % REALCAN)
         print("RESULT: 0 passed, 0 failed, 1 skipped")
         return 0
-    passed = failed = 0
-
-    def check(ok, what):
-        nonlocal passed, failed
-        if ok:
-            passed += 1
-        else:
-            failed += 1
-        print("%s: %s" % ("PASS" if ok else "FAIL", what))
+    counts = dbc_common.Results()
+    counts.OK = "PASS: "
+    check = counts.check
 
     results = {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -252,8 +248,8 @@ def main(argv):
         print()
         for case in CASES:
             print("%s: %s" % (case[0], " ".join(results[case[0]]["calib_cmd"][1:]).replace(REALCAN, "realcan")))
-    print("RESULT: %d passed, %d failed, 0 skipped" % (passed, failed))
-    return 1 if failed else 0
+    print("RESULT: %d passed, %d failed, 0 skipped" % (counts.passed, counts.failed))
+    return 1 if counts.failed else 0
 
 
 if __name__ == "__main__":

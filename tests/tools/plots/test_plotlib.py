@@ -33,18 +33,9 @@ matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import numpy as np  # noqa: E402
 import plotlib  # noqa: E402
+from named_checks import NamedChecks  # noqa: E402
 
-passed = 0
-failed = 0
-
-
-def check(name, ok, detail=""):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-    print(f"{'PASS' if ok else 'FAIL'}  {name}  {detail}")
+check = NamedChecks()
 
 
 def run(cmd):
@@ -179,8 +170,7 @@ def main():
     committed = sorted(glob.glob(os.path.join(ROOT, "docs", "img", "*.png")))
     for path in committed:
         check_png(path, min_w=600, min_h=400, max_bytes=300_000)
-    print(f"RESULT: {passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return check.finish()
 
 
 if __name__ == "__main__":
