@@ -29,9 +29,8 @@
 #include "bxcan.h"
 #include "bxcan_regs.h"
 #include "chip.h"
+#include "cortex_sim.h"
 #include "sq_status.h"
-#include "stm32_platform_faults.h"
-#include "stm32_time.h"
 
 uint32_t bxcan_sim_rcc[64];
 uint32_t bxcan_sim_gpiob[16];
@@ -70,12 +69,7 @@ static struct {
 	uint32_t head;
 	uint32_t n;
 } wire[SIM_BUSES];
-static uint64_t now_us;
-static uint32_t primask;
-static bool nvic_en[128];
-static bool in_isr;
 static uint32_t seq_counter;
-static uint32_t faults;
 
 static const uint32_t irq_tx[SIM_BUSES] = { CHIP_IRQ_CAN1_TX, CHIP_IRQ_CAN2_TX };
 static const uint32_t irq_rx0[SIM_BUSES] = { CHIP_IRQ_CAN1_RX0, CHIP_IRQ_CAN2_RX0 };
@@ -133,18 +127,14 @@ void sim_reset(void)
 	memset(wire, 0, sizeof(wire));
 	memset(bxcan_sim_rcc, 0, sizeof(bxcan_sim_rcc));
 	memset(bxcan_sim_gpiob, 0, sizeof(bxcan_sim_gpiob));
-	memset(nvic_en, 0, sizeof(nvic_en));
 	for (c = 0; c < SIM_BUSES; c++) {
 		ctl[c].mcr = 0x00010002U;
 		ctl[c].msr = 0x00000C02U;
 		ctl[c].esr = 0U;
 	}
 	flt.fmr = 0x2A1C0E01U;
-	now_us = 1000U;
-	primask = 0U;
-	in_isr = false;
+	cortex_sim_reset();
 	seq_counter = 0U;
-	faults = 0U;
 	bxcan_sim_driver_reset();
 }
 
@@ -516,10 +506,9 @@ static void irqs(void)
 {
 	uint32_t round;
 
-	if (primask != 0U || in_isr) {
+	if (!cortex_sim_isr_enter()) {
 		return;
 	}
-	in_isr = true;
 	for (round = 0; round < IRQ_ROUNDS; round++) {
 		bool any = false;
 		uint32_t c;
@@ -530,18 +519,18 @@ static void irqs(void)
 			if (!clocked(c)) {
 				continue;
 			}
-			if (nvic_en[irq_rx0[c]] && (((k->ier & CAN_IER_FMPIE0) != 0U && k->fifo_n > 0U) ||
+			if (cortex_sim_irq_enabled(irq_rx0[c]) && (((k->ier & CAN_IER_FMPIE0) != 0U && k->fifo_n > 0U) ||
 						    ((k->ier & CAN_IER_FOVIE0) != 0U && k->fovr))) {
 				k->rx_irq_runs++;
 				h_rx0[c]();
 				any = true;
 			}
-			if (nvic_en[irq_tx[c]] && (k->ier & CAN_IER_TMEIE) != 0U &&
+			if (cortex_sim_irq_enabled(irq_tx[c]) && (k->ier & CAN_IER_TMEIE) != 0U &&
 			    (k->tsr_flags & (CAN_TSR_RQCP(0U) | CAN_TSR_RQCP(1U) | CAN_TSR_RQCP(2U))) != 0U) {
 				h_tx[c]();
 				any = true;
 			}
-			if (nvic_en[irq_sce[c]] && (k->ier & CAN_IER_ERRIE) != 0U &&
+			if (cortex_sim_irq_enabled(irq_sce[c]) && (k->ier & CAN_IER_ERRIE) != 0U &&
 			    (k->msr & CAN_MSR_ERRI) != 0U) {
 				h_sce[c]();
 				any = true;
@@ -552,19 +541,13 @@ static void irqs(void)
 			break;
 		}
 	}
-	in_isr = false;
+	cortex_sim_isr_leave();
 }
 
-void sim_advance_us(uint32_t us)
+void cortex_sim_run(void)
 {
-	now_us += us;
 	step();
 	irqs();
-}
-
-uint64_t sim_now_us(void)
-{
-	return now_us;
 }
 
 bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
@@ -657,83 +640,11 @@ uint32_t sim_btr(uint8_t bus) { return ctl[bus].btr; }
 uint32_t sim_mcr(uint8_t bus) { return ctl[bus].mcr; }
 uint32_t sim_fmr(void) { return flt.fmr; }
 uint32_t sim_aborts(uint8_t bus) { return ctl[bus].aborts; }
-uint32_t sim_fault_bits(void) { return faults; }
 uint32_t sim_rx_irq_runs(uint8_t bus) { return ctl[bus].rx_irq_runs; }
 
-/* ---- what the driver needs from the board and the core -------------------- */
-
-uint64_t hal_time_us(void)
-{
-	return now_us;
-}
-
-void stm32_fault_raise(uint32_t hal_fault_bits)
-{
-	faults |= hal_fault_bits;
-}
+/* ---- what the driver needs from the board (the core: cortex_sim.c) ------ */
 
 uint32_t chip_apb1_hz(void)
 {
 	return CHIP_APB1_HZ;
-}
-
-/* Every poll is one microsecond of simulated time. */
-void stm32_timeout_start(stm32_timeout_t *t, uint32_t timeout_us)
-{
-	t->last_val = 0U;
-	t->elapsed_ticks = 0U;
-	t->limit_ticks = timeout_us;
-	t->polls = 0U;
-}
-
-bool stm32_timeout_expired(stm32_timeout_t *t)
-{
-	sim_advance_us(1U);
-	t->polls++;
-	return t->polls >= t->limit_ticks;
-}
-
-void cm_dsb(void) {}
-void cm_isb(void) {}
-void cm_dmb(void) {}
-void cm_wfi(void) {}
-
-void cm_irq_disable(void)
-{
-	primask = 1U;
-}
-
-void cm_irq_enable(void)
-{
-	primask = 0U;
-	step();
-	irqs();
-}
-
-uint32_t cm_irq_save(void)
-{
-	uint32_t old = primask;
-
-	primask = 1U;
-	return old;
-}
-
-void cm_irq_restore(uint32_t pm)
-{
-	primask = pm;
-	if (pm == 0U) {
-		step();
-		irqs();
-	}
-}
-
-void cm_nvic_enable(uint32_t irq, uint8_t prio)
-{
-	(void)prio;
-	nvic_en[irq] = true;
-}
-
-void cm_nvic_disable(uint32_t irq)
-{
-	nvic_en[irq] = false;
 }

@@ -35,11 +35,10 @@
 #include <string.h>
 
 #include "chip.h"
+#include "cortex_sim.h"
 #include "fdcan.h"
 #include "fdcan_regs.h"
 #include "sq_status.h"
-#include "stm32_platform_faults.h"
-#include "stm32_time.h"
 
 #define WIRE_LEN 512U
 #define IRQ_ROUNDS 32U
@@ -64,11 +63,6 @@ static struct {
 	uint32_t n;
 } wire[SIM_BUSES];
 static bool connected;
-static uint64_t now_us;
-static uint32_t primask;
-static bool nvic_en[128];
-static bool in_isr;
-static uint32_t faults;
 static uint32_t kernel_clock_hz;
 
 static const uint32_t irq_of[SIM_BUSES] = { CHIP_IRQ_FDCAN1_IT0, CHIP_IRQ_FDCAN2_IT0 };
@@ -119,12 +113,8 @@ void sim_reset(void)
 	/* message RAM is not initialised by a reset: garbage */
 	memset(ram, 0xA5, sizeof(ram));
 	memset(wire, 0, sizeof(wire));
-	memset(nvic_en, 0, sizeof(nvic_en));
 	connected = false;
-	now_us = 1000U;
-	primask = 0U;
-	in_isr = false;
-	faults = 0U;
+	cortex_sim_reset();
 	kernel_clock_hz = 170000000U;
 	fdcan_sim_driver_reset();
 }
@@ -334,7 +324,7 @@ static void rx_deliver(uint32_t c, const hal_can_frame_t *f)
 			 (((f->flags & HAL_CAN_FLAG_ESI) != 0U) ? FDCAN_E0_ESI : 0U);
 	*ram_at(c, at + 4U) = ((rtr ? f->dlc : code_of_len(f->dlc)) << 16) | (fd ? FDCAN_E1_FDF : 0U) |
 			      (((f->flags & HAL_CAN_FLAG_BRS) != 0U) ? FDCAN_E1_BRS : 0U) |
-			      ((uint32_t)(now_us & 0xFFFFU));
+			      ((uint32_t)(sim_now_us() & 0xFFFFU));
 	for (i = 0U; i < 16U; i++) {
 		*ram_at(c, at + 8U + 4U * i) = 0xDEADBEEFU; /* beyond the frame: garbage */
 	}
@@ -643,10 +633,9 @@ static void irqs(void)
 {
 	uint32_t round;
 
-	if (primask != 0U || in_isr) {
+	if (!cortex_sim_isr_enter()) {
 		return;
 	}
-	in_isr = true;
 	for (round = 0U; round < IRQ_ROUNDS; round++) {
 		bool any = false;
 		uint32_t c;
@@ -658,7 +647,7 @@ static void irqs(void)
 				fprintf(stderr, "fdcan_sim: ILS 0x%x (the model has line 0 only)\n", (unsigned int)k->ils);
 				abort();
 			}
-			if (!k->dead && nvic_en[irq_of[c]] && ((k->ile & FDCAN_ILE_EINT0) != 0U) &&
+			if (!k->dead && cortex_sim_irq_enabled(irq_of[c]) && ((k->ile & FDCAN_ILE_EINT0) != 0U) &&
 			    ((k->ir & k->ie) != 0U)) {
 				k->irq_runs++;
 				handler_of[c]();
@@ -670,19 +659,13 @@ static void irqs(void)
 			break;
 		}
 	}
-	in_isr = false;
+	cortex_sim_isr_leave();
 }
 
-void sim_advance_us(uint32_t us)
+void cortex_sim_run(void)
 {
-	now_us += us;
 	step();
 	irqs();
-}
-
-uint64_t sim_now_us(void)
-{
-	return now_us;
 }
 
 bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
@@ -787,22 +770,11 @@ void sim_controller_dead(uint8_t bus, bool dead)
 
 uint32_t sim_reg(uint8_t bus, uint32_t off) { return reg_value(bus, off); }
 uint32_t sim_ram(uint8_t bus, uint32_t byte_off) { return *ram_at(bus, byte_off); }
-uint32_t sim_fault_bits(void) { return faults; }
 uint32_t sim_irq_runs(uint8_t bus) { return ctl[bus].irq_runs; }
 uint32_t sim_rx_lost(uint8_t bus) { return ctl[bus].rx_lost; }
 uint32_t sim_protected_writes_ignored(uint8_t bus) { return ctl[bus].ignored; }
 
-/* ---- what the driver needs from the board and the core ------------------------------ */
-
-uint64_t hal_time_us(void)
-{
-	return now_us;
-}
-
-void stm32_fault_raise(uint32_t hal_fault_bits)
-{
-	faults |= hal_fault_bits;
-}
+/* ---- what the driver needs from the board (the core: cortex_sim.c) ------ */
 
 uint32_t chip_fdcan_kernel_hz(void)
 {
@@ -812,65 +784,4 @@ uint32_t chip_fdcan_kernel_hz(void)
 void chip_can_pins_init(uint8_t bus)
 {
 	(void)bus;
-}
-
-/* Every poll is one microsecond of simulated time. */
-void stm32_timeout_start(stm32_timeout_t *t, uint32_t timeout_us)
-{
-	t->last_val = 0U;
-	t->elapsed_ticks = 0U;
-	t->limit_ticks = timeout_us;
-	t->polls = 0U;
-}
-
-bool stm32_timeout_expired(stm32_timeout_t *t)
-{
-	sim_advance_us(1U);
-	t->polls++;
-	return t->polls >= t->limit_ticks;
-}
-
-void cm_dsb(void) {}
-void cm_isb(void) {}
-void cm_dmb(void) {}
-void cm_wfi(void) {}
-
-void cm_irq_disable(void)
-{
-	primask = 1U;
-}
-
-void cm_irq_enable(void)
-{
-	primask = 0U;
-	step();
-	irqs();
-}
-
-uint32_t cm_irq_save(void)
-{
-	const uint32_t old = primask;
-
-	primask = 1U;
-	return old;
-}
-
-void cm_irq_restore(uint32_t pm)
-{
-	primask = pm;
-	if (pm == 0U) {
-		step();
-		irqs();
-	}
-}
-
-void cm_nvic_enable(uint32_t irq, uint8_t prio)
-{
-	(void)prio;
-	nvic_en[irq] = true;
-}
-
-void cm_nvic_disable(uint32_t irq)
-{
-	nvic_en[irq] = false;
 }
