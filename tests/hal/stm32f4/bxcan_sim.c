@@ -30,12 +30,12 @@
 #include "bxcan_regs.h"
 #include "chip.h"
 #include "cortex_sim.h"
+#include "wire_sim.h"
 #include "sq_status.h"
 
 uint32_t bxcan_sim_rcc[64];
 uint32_t bxcan_sim_gpiob[16];
 
-#define WIRE_LEN 512U
 #define BANKS 28U
 #define IRQ_ROUNDS 32U
 
@@ -64,11 +64,6 @@ static struct {
 	uint32_t fmr, fm1r, fs1r, ffa1r, fa1r;
 	uint32_t fr1[BANKS], fr2[BANKS];
 } flt;
-static struct {
-	hal_can_frame_t q[WIRE_LEN];
-	uint32_t head;
-	uint32_t n;
-} wire[SIM_BUSES];
 static uint32_t seq_counter;
 
 static const uint32_t irq_tx[SIM_BUSES] = { CHIP_IRQ_CAN1_TX, CHIP_IRQ_CAN2_TX };
@@ -124,7 +119,7 @@ void sim_reset(void)
 
 	memset(ctl, 0, sizeof(ctl));
 	memset(&flt, 0, sizeof(flt));
-	memset(wire, 0, sizeof(wire));
+	wire_sim_reset();
 	memset(bxcan_sim_rcc, 0, sizeof(bxcan_sim_rcc));
 	memset(bxcan_sim_gpiob, 0, sizeof(bxcan_sim_gpiob));
 	for (c = 0; c < SIM_BUSES; c++) {
@@ -446,14 +441,6 @@ void bxcan_sim_write(uintptr_t base, uint32_t off, uint32_t v)
 
 /* ---- the wire and time ---------------------------------------------------- */
 
-static void wire_push(uint32_t bus, const hal_can_frame_t *f)
-{
-	if (wire[bus].n < WIRE_LEN) {
-		wire[bus].q[(wire[bus].head + wire[bus].n) % WIRE_LEN] = *f;
-		wire[bus].n++;
-	}
-}
-
 static void transmit(uint32_t c)
 {
 	ctl_t *k = &ctl[c];
@@ -483,7 +470,7 @@ static void transmit(uint32_t c)
 				rx_deliver(c, &m);
 			}
 			if (!silm) {
-				wire_push(c, &f);
+				wire_sim_push(c, &f);
 			}
 		}
 		k->pending[best] = false;
@@ -565,22 +552,6 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 	rx_deliver(bus, &m);
 	irqs();
 	return ack;
-}
-
-bool sim_wire_take(uint8_t bus, hal_can_frame_t *f)
-{
-	if (wire[bus].n == 0U) {
-		return false;
-	}
-	*f = wire[bus].q[wire[bus].head];
-	wire[bus].head = (wire[bus].head + 1U) % WIRE_LEN;
-	wire[bus].n--;
-	return true;
-}
-
-uint32_t sim_wire_count(uint8_t bus)
-{
-	return wire[bus].n;
 }
 
 uint32_t sim_dominant_count(uint8_t bus)

@@ -36,11 +36,11 @@
 
 #include "chip.h"
 #include "cortex_sim.h"
+#include "wire_sim.h"
 #include "fdcan.h"
 #include "fdcan_regs.h"
 #include "sq_status.h"
 
-#define WIRE_LEN 512U
 #define IRQ_ROUNDS 32U
 #define RAM_WORDS (SRAMCAN_SIZE / 4U)
 #define ACT_IDLE (1UL << FDCAN_PSR_ACT_SHIFT)
@@ -57,11 +57,6 @@ typedef struct {
 
 static ctl_t ctl[SIM_BUSES];
 static uint32_t ram[SIM_BUSES][RAM_WORDS];
-static struct {
-	hal_can_frame_t q[WIRE_LEN];
-	uint32_t head;
-	uint32_t n;
-} wire[SIM_BUSES];
 static bool connected;
 static uint32_t kernel_clock_hz;
 
@@ -112,7 +107,7 @@ void sim_reset(void)
 	}
 	/* message RAM is not initialised by a reset: garbage */
 	memset(ram, 0xA5, sizeof(ram));
-	memset(wire, 0, sizeof(wire));
+	wire_sim_reset();
 	connected = false;
 	cortex_sim_reset();
 	kernel_clock_hz = 170000000U;
@@ -561,14 +556,6 @@ void fdcan_sim_write(uintptr_t addr, uint32_t v)
 
 /* ---- the wires and time ---------------------------------------------------------- */
 
-static void wire_push(uint32_t bus, const hal_can_frame_t *f)
-{
-	if (wire[bus].n < WIRE_LEN) {
-		wire[bus].q[(wire[bus].head + wire[bus].n) % WIRE_LEN] = *f;
-		wire[bus].n++;
-	}
-}
-
 /* Someone on c's wire ACKs a frame of c: the harness's node (unless
  * blocked), or, with the instances connected, the other one if it runs
  * and is not monitoring. */
@@ -602,7 +589,7 @@ static void transmit(uint32_t c)
 			if (!lbck && !acked(c)) {
 				return; /* no ACK: retransmitted later */
 			}
-			wire_push(c, &f);
+			wire_sim_push(c, &f);
 			if (connected) {
 				rx_deliver(1U - c, &f);
 				ctl[1U - c].dominant++; /* its ACK */
@@ -686,22 +673,6 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 	}
 	irqs();
 	return ack;
-}
-
-bool sim_wire_take(uint8_t bus, hal_can_frame_t *f)
-{
-	if (wire[bus].n == 0U) {
-		return false;
-	}
-	*f = wire[bus].q[wire[bus].head];
-	wire[bus].head = (wire[bus].head + 1U) % WIRE_LEN;
-	wire[bus].n--;
-	return true;
-}
-
-uint32_t sim_wire_count(uint8_t bus)
-{
-	return wire[bus].n;
 }
 
 uint32_t sim_dominant_count(uint8_t bus)
