@@ -25,18 +25,29 @@ void cortex_sim_reset(void)
 	faults = 0U;
 }
 
-bool cortex_sim_isr_enter(void)
+void cortex_sim_irqs(void)
 {
+	uint32_t round;
+
 	if (primask != 0U || in_isr) {
-		return false;
+		return;
 	}
 	in_isr = true;
-	return true;
+	for (round = 0U; round < CORTEX_SIM_IRQ_ROUNDS; round++) {
+		const bool any = cortex_sim_irq_round();
+
+		cortex_sim_step();
+		if (!any) {
+			break;
+		}
+	}
+	in_isr = false;
 }
 
-void cortex_sim_isr_leave(void)
+void cortex_sim_run(void)
 {
-	in_isr = false;
+	cortex_sim_step();
+	cortex_sim_irqs();
 }
 
 bool cortex_sim_irq_enabled(uint32_t irq)

@@ -18,15 +18,19 @@
 /* Power-on: clock at 1000 us, interrupts unmasked, every NVIC line off. */
 void cortex_sim_reset(void);
 
-/* Interrupt dispatch: enter is false (dispatch nothing) while PRIMASK is
- * set or a handler is already running; otherwise it marks one as running
- * until leave. */
-bool cortex_sim_isr_enter(void);
-void cortex_sim_isr_leave(void);
 bool cortex_sim_irq_enabled(uint32_t irq);
 
-/* Provided by the peripheral simulation: move the wire on and take the
- * pending interrupts (after time passes or interrupts are unmasked). */
+/* Provided by the peripheral simulation: move the wire on one step; run
+ * once the handler of every enabled interrupt that is pending, true when
+ * any ran. */
+void cortex_sim_step(void);
+bool cortex_sim_irq_round(void);
+
+/* Interrupt dispatch unless PRIMASK is set or a handler is running: rounds
+ * of handlers, each followed by a step, until a round runs none (at most
+ * CORTEX_SIM_IRQ_ROUNDS). cortex_sim_run: a step, then the dispatch. */
+#define CORTEX_SIM_IRQ_ROUNDS 32U
+void cortex_sim_irqs(void);
 void cortex_sim_run(void);
 
 void sim_advance_us(uint32_t us);

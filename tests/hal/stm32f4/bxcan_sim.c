@@ -37,7 +37,6 @@ uint32_t bxcan_sim_rcc[64];
 uint32_t bxcan_sim_gpiob[16];
 
 #define BANKS 28U
-#define IRQ_ROUNDS 32U
 
 typedef struct {
 	uint32_t rir, rdtr, rdlr, rdhr;
@@ -73,8 +72,6 @@ static void (*const h_tx[SIM_BUSES])(void) = { CAN1_TX_IRQHandler, CAN2_TX_IRQHa
 static void (*const h_rx0[SIM_BUSES])(void) = { CAN1_RX0_IRQHandler, CAN2_RX0_IRQHandler };
 static void (*const h_sce[SIM_BUSES])(void) = { CAN1_SCE_IRQHandler, CAN2_SCE_IRQHandler };
 
-static void step(void);
-static void irqs(void);
 
 /* ---- clocks and state ----------------------------------------------------- */
 
@@ -478,7 +475,7 @@ static void transmit(uint32_t c)
 	}
 }
 
-static void step(void)
+void cortex_sim_step(void)
 {
 	uint32_t c;
 
@@ -489,52 +486,35 @@ static void step(void)
 	}
 }
 
-static void irqs(void)
+bool cortex_sim_irq_round(void)
 {
-	uint32_t round;
+	bool any = false;
+	uint32_t c;
 
-	if (!cortex_sim_isr_enter()) {
-		return;
-	}
-	for (round = 0; round < IRQ_ROUNDS; round++) {
-		bool any = false;
-		uint32_t c;
+	for (c = 0; c < SIM_BUSES; c++) {
+		ctl_t *k = &ctl[c];
 
-		for (c = 0; c < SIM_BUSES; c++) {
-			ctl_t *k = &ctl[c];
-
-			if (!clocked(c)) {
-				continue;
-			}
-			if (cortex_sim_irq_enabled(irq_rx0[c]) && (((k->ier & CAN_IER_FMPIE0) != 0U && k->fifo_n > 0U) ||
-						    ((k->ier & CAN_IER_FOVIE0) != 0U && k->fovr))) {
-				k->rx_irq_runs++;
-				h_rx0[c]();
-				any = true;
-			}
-			if (cortex_sim_irq_enabled(irq_tx[c]) && (k->ier & CAN_IER_TMEIE) != 0U &&
-			    (k->tsr_flags & (CAN_TSR_RQCP(0U) | CAN_TSR_RQCP(1U) | CAN_TSR_RQCP(2U))) != 0U) {
-				h_tx[c]();
-				any = true;
-			}
-			if (cortex_sim_irq_enabled(irq_sce[c]) && (k->ier & CAN_IER_ERRIE) != 0U &&
-			    (k->msr & CAN_MSR_ERRI) != 0U) {
-				h_sce[c]();
-				any = true;
-			}
+		if (!clocked(c)) {
+			continue;
 		}
-		step();
-		if (!any) {
-			break;
+		if (cortex_sim_irq_enabled(irq_rx0[c]) && (((k->ier & CAN_IER_FMPIE0) != 0U && k->fifo_n > 0U) ||
+					    ((k->ier & CAN_IER_FOVIE0) != 0U && k->fovr))) {
+			k->rx_irq_runs++;
+			h_rx0[c]();
+			any = true;
+		}
+		if (cortex_sim_irq_enabled(irq_tx[c]) && (k->ier & CAN_IER_TMEIE) != 0U &&
+		    (k->tsr_flags & (CAN_TSR_RQCP(0U) | CAN_TSR_RQCP(1U) | CAN_TSR_RQCP(2U))) != 0U) {
+			h_tx[c]();
+			any = true;
+		}
+		if (cortex_sim_irq_enabled(irq_sce[c]) && (k->ier & CAN_IER_ERRIE) != 0U &&
+		    (k->msr & CAN_MSR_ERRI) != 0U) {
+			h_sce[c]();
+			any = true;
 		}
 	}
-	cortex_sim_isr_leave();
-}
-
-void cortex_sim_run(void)
-{
-	step();
-	irqs();
+	return any;
 }
 
 bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
@@ -550,7 +530,7 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 		ack = true;
 	}
 	rx_deliver(bus, &m);
-	irqs();
+	cortex_sim_irqs();
 	return ack;
 }
 
@@ -572,7 +552,7 @@ void sim_error_frame(uint8_t bus)
 	if ((k->btr & CAN_BTR_SILM) == 0U) {
 		k->dominant++; /* its error flag */
 	}
-	irqs();
+	cortex_sim_irqs();
 }
 
 void sim_bus_off(uint8_t bus, bool on)
@@ -586,15 +566,13 @@ void sim_bus_off(uint8_t bus, bool on)
 			    (0xFFU << CAN_ESR_REC_SHIFT));
 	}
 	k->msr |= CAN_MSR_ERRI;
-	step();
-	irqs();
+	cortex_sim_run();
 }
 
 void sim_block_tx(uint8_t bus, bool blocked)
 {
 	ctl[bus].blocked = blocked;
-	step();
-	irqs();
+	cortex_sim_run();
 }
 
 void sim_controller_dead(uint8_t bus, bool dead)

@@ -41,7 +41,6 @@
 #include "fdcan_regs.h"
 #include "sq_status.h"
 
-#define IRQ_ROUNDS 32U
 #define RAM_WORDS (SRAMCAN_SIZE / 4U)
 #define ACT_IDLE (1UL << FDCAN_PSR_ACT_SHIFT)
 #define PROTECTED_CCCR 0x0000F3E4U /* ASM, MON, DAR, TEST, FDOE, BRSE, PXHD, EFBI, TXP, NISO */
@@ -63,8 +62,6 @@ static uint32_t kernel_clock_hz;
 static const uint32_t irq_of[SIM_BUSES] = { CHIP_IRQ_FDCAN1_IT0, CHIP_IRQ_FDCAN2_IT0 };
 static void (*const handler_of[SIM_BUSES])(void) = { FDCAN1_IT0_IRQHandler, FDCAN2_IT0_IRQHandler };
 
-static void step(void);
-static void irqs(void);
 
 /* ---- state ------------------------------------------------------------------ */
 
@@ -607,7 +604,7 @@ static void transmit(uint32_t c)
 	}
 }
 
-static void step(void)
+void cortex_sim_step(void)
 {
 	uint32_t c;
 
@@ -616,43 +613,26 @@ static void step(void)
 	}
 }
 
-static void irqs(void)
+bool cortex_sim_irq_round(void)
 {
-	uint32_t round;
+	bool any = false;
+	uint32_t c;
 
-	if (!cortex_sim_isr_enter()) {
-		return;
-	}
-	for (round = 0U; round < IRQ_ROUNDS; round++) {
-		bool any = false;
-		uint32_t c;
+	for (c = 0U; c < SIM_BUSES; c++) {
+		ctl_t *k = &ctl[c];
 
-		for (c = 0U; c < SIM_BUSES; c++) {
-			ctl_t *k = &ctl[c];
-
-			if (k->ils != 0U) {
-				fprintf(stderr, "fdcan_sim: ILS 0x%x (the model has line 0 only)\n", (unsigned int)k->ils);
-				abort();
-			}
-			if (!k->dead && cortex_sim_irq_enabled(irq_of[c]) && ((k->ile & FDCAN_ILE_EINT0) != 0U) &&
-			    ((k->ir & k->ie) != 0U)) {
-				k->irq_runs++;
-				handler_of[c]();
-				any = true;
-			}
+		if (k->ils != 0U) {
+			fprintf(stderr, "fdcan_sim: ILS 0x%x (the model has line 0 only)\n", (unsigned int)k->ils);
+			abort();
 		}
-		step();
-		if (!any) {
-			break;
+		if (!k->dead && cortex_sim_irq_enabled(irq_of[c]) && ((k->ile & FDCAN_ILE_EINT0) != 0U) &&
+		    ((k->ir & k->ie) != 0U)) {
+			k->irq_runs++;
+			handler_of[c]();
+			any = true;
 		}
 	}
-	cortex_sim_isr_leave();
-}
-
-void cortex_sim_run(void)
-{
-	step();
-	irqs();
+	return any;
 }
 
 bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
@@ -671,7 +651,7 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 	if (connected) {
 		rx_deliver(1U - bus, f);
 	}
-	irqs();
+	cortex_sim_irqs();
 	return ack;
 }
 
@@ -693,13 +673,13 @@ void sim_error_frame(uint8_t bus)
 	if (!monitoring(k)) {
 		k->dominant++; /* its error flag */
 	}
-	irqs();
+	cortex_sim_irqs();
 }
 
 void sim_set_counters(uint8_t bus, uint32_t tec, uint32_t rec)
 {
 	counters_set(&ctl[bus], tec, rec);
-	irqs();
+	cortex_sim_irqs();
 }
 
 void sim_protocol_exception(uint8_t bus)
@@ -722,16 +702,14 @@ bool sim_bus_off(uint8_t bus, bool on)
 		counters_set(k, 0U, 0U);
 		k->ir |= FDCAN_IR_BO;
 	}
-	step();
-	irqs();
+	cortex_sim_run();
 	return !bus_off(k);
 }
 
 void sim_block_tx(uint8_t bus, bool blocked)
 {
 	ctl[bus].blocked = blocked;
-	step();
-	irqs();
+	cortex_sim_run();
 }
 
 void sim_controller_dead(uint8_t bus, bool dead)
