@@ -8,6 +8,7 @@ static struct {
 	hal_can_frame_t q[WIRE_SIM_LEN];
 	uint32_t head;
 	uint32_t n;
+	uint32_t dominant;
 } wire[WIRE_SIM_BUSES];
 
 /* a bus the simulation does not have is the harness's mistake */
@@ -32,6 +33,12 @@ void wire_sim_push(uint32_t bus, const hal_can_frame_t *f)
 	}
 }
 
+void wire_sim_dominant(uint32_t bus)
+{
+	check_bus(bus);
+	wire[bus].dominant++;
+}
+
 bool sim_wire_take(uint8_t bus, hal_can_frame_t *f)
 {
 	check_bus(bus);
@@ -48,4 +55,10 @@ uint32_t sim_wire_count(uint8_t bus)
 {
 	check_bus(bus);
 	return wire[bus].n;
+}
+
+uint32_t sim_dominant_count(uint8_t bus)
+{
+	check_bus(bus);
+	return wire[bus].dominant;
 }

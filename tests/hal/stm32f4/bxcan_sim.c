@@ -54,7 +54,6 @@ typedef struct {
 	bool dead;
 	bool blocked;
 	uint32_t aborts;
-	uint32_t dominant;
 	uint32_t rx_irq_runs;
 } ctl_t;
 
@@ -526,17 +525,12 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 		abort();
 	}
 	if (running(bus) && (ctl[bus].btr & CAN_BTR_SILM) == 0U) {
-		ctl[bus].dominant++; /* its ACK bit */
+		wire_sim_dominant(bus); /* its ACK bit */
 		ack = true;
 	}
 	rx_deliver(bus, &m);
 	cortex_sim_irqs();
 	return ack;
-}
-
-uint32_t sim_dominant_count(uint8_t bus)
-{
-	return ctl[bus].dominant;
 }
 
 void sim_error_frame(uint8_t bus)
@@ -550,7 +544,7 @@ void sim_error_frame(uint8_t bus)
 	k->esr += 1U << CAN_ESR_REC_SHIFT;
 	k->msr |= CAN_MSR_ERRI;
 	if ((k->btr & CAN_BTR_SILM) == 0U) {
-		k->dominant++; /* its error flag */
+		wire_sim_dominant(bus); /* its error flag */
 	}
 	cortex_sim_irqs();
 }

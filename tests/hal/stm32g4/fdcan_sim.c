@@ -51,7 +51,7 @@ typedef struct {
 	uint32_t rx_get, rx_fill, rx_lost_flag;
 	uint32_t tx_get, tx_fill;
 	bool dead, blocked;
-	uint32_t dominant, irq_runs, rx_lost, ignored, txbar_misuse;
+	uint32_t irq_runs, rx_lost, ignored, txbar_misuse;
 } ctl_t;
 
 static ctl_t ctl[SIM_BUSES];
@@ -589,7 +589,7 @@ static void transmit(uint32_t c)
 			wire_sim_push(c, &f);
 			if (connected) {
 				rx_deliver(1U - c, &f);
-				ctl[1U - c].dominant++; /* its ACK */
+				wire_sim_dominant(1U - c); /* its ACK */
 			}
 		}
 		k->tx_get = (k->tx_get + 1U) % SRAMCAN_TXB_NBR;
@@ -644,7 +644,7 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 		abort();
 	}
 	if (running(k) && !monitoring(k)) {
-		k->dominant++; /* its ACK bit */
+		wire_sim_dominant(bus); /* its ACK bit */
 		ack = true;
 	}
 	rx_deliver(bus, f);
@@ -653,11 +653,6 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 	}
 	cortex_sim_irqs();
 	return ack;
-}
-
-uint32_t sim_dominant_count(uint8_t bus)
-{
-	return ctl[bus].dominant;
 }
 
 void sim_error_frame(uint8_t bus)
@@ -671,7 +666,7 @@ void sim_error_frame(uint8_t bus)
 	counters_set(k, k->ecr_tec, k->ecr_rec + 1U);
 	k->ir |= FDCAN_IR_PEA;
 	if (!monitoring(k)) {
-		k->dominant++; /* its error flag */
+		wire_sim_dominant(bus); /* its error flag */
 	}
 	cortex_sim_irqs();
 }
