@@ -61,22 +61,12 @@ void sim_advance_us(uint32_t us)
 	cortex_sim_run();
 }
 
-uint64_t sim_now_us(void)
-{
-	return now_us;
-}
-
-uint32_t sim_fault_bits(void)
-{
-	return faults;
-}
+uint64_t sim_now_us(void) { return now_us; }
+uint32_t sim_fault_bits(void) { return faults; }
 
 /* ---- what the driver needs from the board and the core -------------------- */
 
-uint64_t hal_time_us(void)
-{
-	return now_us;
-}
+uint64_t hal_time_us(void) { return now_us; }
 
 void stm32_fault_raise(uint32_t hal_fault_bits)
 {
@@ -118,7 +108,7 @@ uint32_t cm_irq_save(void)
 {
 	const uint32_t old = primask;
 
-	primask = 1U;
+	cm_irq_disable();
 	return old;
 }
 

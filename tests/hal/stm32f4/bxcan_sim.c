@@ -516,6 +516,22 @@ bool cortex_sim_irq_round(void)
 	return any;
 }
 
+void sim_error_frame(uint8_t bus)
+{
+	ctl_t *k = &ctl[bus];
+
+	if (!running(bus)) {
+		return;
+	}
+	k->esr = (k->esr & ~CAN_ESR_LEC_MSK) | (3U << CAN_ESR_LEC_SHIFT); /* form error */
+	k->esr += 1U << CAN_ESR_REC_SHIFT;
+	k->msr |= CAN_MSR_ERRI;
+	if ((k->btr & CAN_BTR_SILM) == 0U) {
+		wire_sim_dominant(bus); /* its error flag */
+	}
+	cortex_sim_irqs();
+}
+
 bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 {
 	sim_msg_t m = msg_of(f);
@@ -531,22 +547,6 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 	rx_deliver(bus, &m);
 	cortex_sim_irqs();
 	return ack;
-}
-
-void sim_error_frame(uint8_t bus)
-{
-	ctl_t *k = &ctl[bus];
-
-	if (!running(bus)) {
-		return;
-	}
-	k->esr = (k->esr & ~CAN_ESR_LEC_MSK) | (3U << CAN_ESR_LEC_SHIFT); /* form error */
-	k->esr += 1U << CAN_ESR_REC_SHIFT;
-	k->msr |= CAN_MSR_ERRI;
-	if ((k->btr & CAN_BTR_SILM) == 0U) {
-		wire_sim_dominant(bus); /* its error flag */
-	}
-	cortex_sim_irqs();
 }
 
 void sim_bus_off(uint8_t bus, bool on)

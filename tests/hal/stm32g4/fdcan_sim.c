@@ -637,12 +637,13 @@ bool cortex_sim_irq_round(void)
 
 bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 {
-	ctl_t *k = &ctl[bus];
+	ctl_t *k;
 	bool ack = false;
 
 	if (bus >= SIM_BUSES) {
 		abort();
 	}
+	k = &ctl[bus];
 	if (running(k) && !monitoring(k)) {
 		wire_sim_dominant(bus); /* its ACK bit */
 		ack = true;
