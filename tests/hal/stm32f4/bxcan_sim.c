@@ -29,6 +29,7 @@
 #include "bxcan.h"
 #include "bxcan_regs.h"
 #include "chip.h"
+#include "can_sim.h"
 #include "cortex_sim.h"
 #include "wire_sim.h"
 #include "sq_status.h"
@@ -549,7 +550,7 @@ bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 	return ack;
 }
 
-void sim_bus_off(uint8_t bus, bool on)
+bool sim_bus_off(uint8_t bus, bool on)
 {
 	ctl_t *k = &ctl[bus];
 
@@ -561,6 +562,7 @@ void sim_bus_off(uint8_t bus, bool on)
 	}
 	k->msr |= CAN_MSR_ERRI;
 	cortex_sim_run();
+	return (k->esr & CAN_ESR_BOFF) == 0U;
 }
 
 void sim_block_tx(uint8_t bus, bool blocked)

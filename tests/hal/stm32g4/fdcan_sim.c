@@ -35,6 +35,7 @@
 #include <string.h>
 
 #include "chip.h"
+#include "can_sim.h"
 #include "cortex_sim.h"
 #include "wire_sim.h"
 #include "fdcan.h"
