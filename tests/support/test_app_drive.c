@@ -56,3 +56,20 @@ uint64_t test_app_tx_last_sig(uint32_t id, uint32_t start, uint32_t len)
 	assert_non_null(f);
 	return (f != NULL) ? test_frame_sig(f->data, start, len) : 0U;
 }
+
+uint16_t test_app_diag_at(uint32_t diag_id, uint64_t t_us, uint32_t *page, const uint8_t **data)
+{
+	const hal_can_frame_t *f = test_hal_tx_at(diag_id, t_us);
+
+	if (f == NULL) {
+		fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
+		return 0U;
+	}
+	if (page != NULL) {
+		*page = (uint32_t)test_frame_sig(f->data, 12, 4);
+	}
+	if (data != NULL) {
+		*data = f->data;
+	}
+	return (uint16_t)test_frame_sig(f->data, 16, 11);
+}

@@ -29,4 +29,8 @@ uint64_t test_app_tx_first(uint32_t id, uint64_t t_us, uint32_t start, uint32_t 
  * (fails the test when there is none). */
 uint64_t test_app_tx_last_sig(uint32_t id, uint32_t start, uint32_t len);
 
+/* The SquealDiag frame (identifier diag_id) sent at exactly t_us (fails the
+ * test when there is none): its fault bits; its page and payload if asked. */
+uint16_t test_app_diag_at(uint32_t diag_id, uint64_t t_us, uint32_t *page, const uint8_t **data);
+
 #endif /* TEST_APP_DRIVE_H */

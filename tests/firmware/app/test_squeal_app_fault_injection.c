@@ -47,6 +47,7 @@
 #include "monitor_expect.h"
 #include "sq_status.h"
 #include "squeal_app.h"
+#include "test_app_drive.h"
 #include "test_hal.h"
 
 #define T0_US 1000000ULL
@@ -85,19 +86,13 @@ static const monitor_t *mon(void)
 
 static void boot(void)
 {
-	test_hal_reset();
-	test_hal_set_time_us(T0_US);
-	assert_int_equal(squeal_app_init(), SQ_OK);
-	(void)squeal_app_poll();
+	test_app_boot(NULL, T0_US);
 	test_sender_init(&snd);
 }
 
 static void run_to(uint64_t t_us)
 {
-	while (hal_time_us() < t_us) {
-		test_hal_advance_us(TICK_US);
-		(void)squeal_app_poll();
-	}
+	test_app_run_to(t_us);
 }
 
 static void push(const hal_can_frame_t *f)
@@ -142,42 +137,18 @@ static uint64_t produced(uint64_t t_us, uint64_t extra)
  * not (!want) st: its time, or 0. */
 static uint64_t first_status(uint64_t t_us, uint8_t st, bool want)
 {
-	int32_t i = -1;
-
-	while ((i = test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, (uint32_t)(i + 1))) >= 0) {
-		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
-
-		if ((f->timestamp_us >= t_us) && ((test_frame_sig(f->data, 12, 4) == st) == want)) {
-			return f->timestamp_us;
-		}
-	}
-	return 0U;
+	return test_app_tx_first(EXP_DBC_SQUEALSTATUS_ID, t_us, 12, 4, st, want);
 }
 
 static uint8_t last_state(void)
 {
-	const hal_can_frame_t *f = test_hal_tx_last(EXP_DBC_SQUEALSTATUS_ID);
-
-	assert_non_null(f);
-	return (uint8_t)test_frame_sig(f->data, 12, 4);
+	return (uint8_t)test_app_tx_last_sig(EXP_DBC_SQUEALSTATUS_ID, 12, 4);
 }
 
 /* The SquealDiag sent at t_us: fault bits; page and payload if asked. */
 static uint16_t diag_at(uint64_t t_us, uint32_t *page, const uint8_t **data)
 {
-	const hal_can_frame_t *f = test_hal_tx_at(EXP_DBC_SQUEALDIAG_ID, t_us);
-
-	if (f == NULL) {
-		fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
-		return 0U;
-	}
-	if (page != NULL) {
-		*page = (uint32_t)test_frame_sig(f->data, 12, 4);
-	}
-	if (data != NULL) {
-		*data = f->data;
-	}
-	return (uint16_t)test_frame_sig(f->data, 16, 11);
+	return test_app_diag_at(EXP_DBC_SQUEALDIAG_ID, t_us, page, data);
 }
 
 static void assert_no_e2e_errors(bool speed)
