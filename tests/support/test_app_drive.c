@@ -34,6 +34,11 @@ void test_app_run_to(uint64_t t_us)
 	}
 }
 
+void test_app_push(const hal_can_frame_t *f)
+{
+	assert_int_equal(test_hal_rx_push(f), SQ_OK);
+}
+
 uint64_t test_app_tx_first(uint32_t id, uint64_t t_us, uint32_t start, uint32_t len,
 			   uint64_t value, bool want)
 {

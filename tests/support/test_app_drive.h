@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 #include "calib.h"
+#include "hal.h"
 
 /* Reset the test HAL, set the clock to t0_us, store cal (NULL: none stored,
  * the firmware takes its defaults), init the app and poll once. */
@@ -18,6 +19,9 @@ void test_app_boot(const calib_t *cal, uint64_t t0_us);
 
 /* One poll per virtual millisecond up to and including t_us. */
 void test_app_run_to(uint64_t t_us);
+
+/* Another node's frame reaches the receive queue (asserted accepted). */
+void test_app_push(const hal_can_frame_t *f);
 
 /* The time of the first frame with identifier id sent at or after t_us whose
  * signal (Intel start, len) equals (want) or differs from (!want) value; 0

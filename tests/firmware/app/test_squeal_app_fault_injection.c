@@ -43,6 +43,7 @@
 
 #include "calib.h"
 #include "e2e_p01.h"
+#include "fault_drive.h"
 #include "monitor.h"
 #include "monitor_expect.h"
 #include "sq_status.h"
@@ -50,12 +51,6 @@
 #include "test_app_drive.h"
 #include "test_hal.h"
 
-#define T0_US 1000000ULL
-#define IN_OFFSET_US 5000ULL
-#define IN_PERIOD_US 10000ULL
-#define SPEED_RAW 2500U   /* 25 rad/s: v0 = 3 m/s */
-#define FORCE_RAW 18000U  /* 9000 N */
-#define STALE_US 30000ULL /* 3 x 10 ms */
 #define TICK_US 1000ULL
 #define STATUS_US 10000ULL
 #define DETAIL_US 100000ULL
@@ -74,11 +69,6 @@
 
 static test_sender_t snd;
 
-static uint64_t in_time(uint32_t k)
-{
-	return T0_US + IN_OFFSET_US + IN_PERIOD_US * k;
-}
-
 static const monitor_t *mon(void)
 {
 	return squeal_app_monitor();
@@ -88,16 +78,6 @@ static void boot(void)
 {
 	test_app_boot(NULL, T0_US);
 	test_sender_init(&snd);
-}
-
-static void run_to(uint64_t t_us)
-{
-	test_app_run_to(t_us);
-}
-
-static void push(const hal_can_frame_t *f)
-{
-	assert_int_equal(test_hal_rx_push(f), SQ_OK);
 }
 
 static void pair(uint32_t k)
@@ -183,16 +163,16 @@ static void dropout(bool speed, uint32_t n)
 		const bool lost = (k > k0) && (k < k_back);
 
 		if (!(lost && speed)) {
-			push(&fs);
+			test_app_push(&fs);
 		}
 		if (!(lost && !speed)) {
-			push(&ff);
+			test_app_push(&ff);
 		}
 	}
-	run_to(in_time(k0));
+	test_app_run_to(in_time(k0));
 	assert_int_equal(last_state(), ST_STABLE);
 	if (n <= 2U) {
-		run_to(in_time(k_end - 1U));
+		test_app_run_to(in_time(k_end - 1U));
 		assert_int_equal(first_status(in_time(0U), ST_STABLE, false), 0U);
 		assert_int_equal(cnt(speed)->e2e_lost, n);
 		assert_int_equal(cnt(speed)->stale_events, 0);
@@ -200,14 +180,14 @@ static void dropout(bool speed, uint32_t n)
 	} else {
 		uint64_t t_fault;
 
-		run_to(in_time(k0) + STALE_US + TICK_US);
+		test_app_run_to(in_time(k0) + STALE_US + TICK_US);
 		t_fault = first_status(in_time(k0), ST_FAULT, true);
 		assert_true(t_fault != 0U);
 		assert_true(t_fault - in_time(k0) >= STALE_US);
 		assert_true(t_fault - in_time(k0) <= STALE_US + TICK_US);
 		assert_int_equal(monitor_fault_bits(mon()), bit);
 		assert_int_equal(cnt(speed)->stale_events, 1);
-		run_to(in_time(k_end - 1U));
+		test_app_run_to(in_time(k_end - 1U));
 		/* recovers at the first frame after the dropout */
 		assert_int_equal(first_status(t_fault, ST_FAULT, false), in_time(k_back));
 		assert_int_equal(last_state(), ST_STABLE);
@@ -247,7 +227,7 @@ static void test_counter_wrap_1000_frames(void **state)
 	(void)state;
 	boot();
 	steady(0U, 1000U);
-	run_to(in_time(999U));
+	test_app_run_to(in_time(999U));
 	assert_int_equal(first_status(in_time(0U), ST_STABLE, false), 0U);
 	assert_int_equal(first_status(T0_US, ST_STABLE, true), in_time(0U));
 	for (uint32_t s = 0U; s < 2U; s++) {
@@ -284,13 +264,13 @@ static void test_counter_jump_every_size(void **state)
 		steady(0U, kj);
 		snd.speed_counter = (uint8_t)((snd.speed_counter + d - 1U) % 15U);
 		steady(kj, kj + 20U);
-		run_to(in_time(kj) - TICK_US);
+		test_app_run_to(in_time(kj) - TICK_US);
 		assert_int_equal(last_state(), ST_STABLE);
-		run_to(in_time(kj));
+		test_app_run_to(in_time(kj));
 		if (d <= 3U) {
 			assert_int_equal(last_state(), ST_STABLE);
 			assert_int_equal(monitor_fault_bits(mon()), 0U);
-			run_to(in_time(kj + 19U));
+			test_app_run_to(in_time(kj + 19U));
 			assert_int_equal(first_status(in_time(0U), ST_STABLE, false), 0U);
 			assert_int_equal(mon()->speed.count.e2e_lost, d - 1U);
 			assert_int_equal(mon()->speed.count.e2e_wrong_sequence, 0);
@@ -298,7 +278,7 @@ static void test_counter_jump_every_size(void **state)
 		} else {
 			assert_int_equal(first_status(in_time(kj), ST_FAULT, true), in_time(kj));
 			assert_int_equal(monitor_fault_bits(mon()), F_E2E_SPEED);
-			run_to(in_time(kj + 19U));
+			test_app_run_to(in_time(kj + 19U));
 			assert_int_equal(first_status(in_time(kj), ST_FAULT, false),
 					 in_time(kj + 1U));
 			assert_int_equal(last_state(), ST_STABLE);
@@ -341,20 +321,20 @@ static void test_crc_storm_1s(void **state)
 			fs.data[0] ^= (uint8_t)(1U + (k % 255U));
 			ff.data[0] ^= (uint8_t)(0x80U >> (k % 8U));
 		}
-		push(&fs);
-		push(&ff);
+		test_app_push(&fs);
+		test_app_push(&ff);
 	}
-	run_to(in_time(ks));
+	test_app_run_to(in_time(ks));
 	assert_int_equal(first_status(in_time(ks), ST_FAULT, true), in_time(ks));
 	assert_int_equal(monitor_fault_bits(mon()), F_E2E_SPEED | F_E2E_FORCE);
-	run_to(in_time(ks - 1U) + STALE_US + TICK_US);
+	test_app_run_to(in_time(ks - 1U) + STALE_US + TICK_US);
 	assert_int_equal(monitor_fault_bits(mon()),
 			 F_E2E_SPEED | F_E2E_FORCE | F_SPEED_STALE | F_FORCE_STALE);
 	/* SquealDiag at T0 + 1 s (inside the storm): exactly these bits */
-	run_to(T0_US + 1000000U);
+	test_app_run_to(T0_US + 1000000U);
 	assert_int_equal(diag_at(T0_US + 1000000U, NULL, NULL),
 			 F_E2E_SPEED | F_E2E_FORCE | F_SPEED_STALE | F_FORCE_STALE);
-	run_to(in_time(599U));
+	test_app_run_to(in_time(599U));
 	assert_int_equal(first_status(in_time(ks), ST_FAULT, false), in_time(ke));
 	assert_int_equal(last_state(), ST_STABLE);
 	assert_int_equal(monitor_fault_bits(mon()), 0U);
@@ -371,7 +351,7 @@ static void test_crc_storm_1s(void **state)
 	assert_int_equal(mon()->count.state_changes, 3);
 	/* SquealDiag page 2 at T0 + 7 s (pages 0..4, one a second):
 	 * E2eErrorCountSpeed/Force */
-	run_to(T0_US + 7000000U);
+	test_app_run_to(T0_US + 7000000U);
 	(void)diag_at(T0_US + 7000000U, &page, &d);
 	assert_int_equal(page, 2);
 	assert_int_equal(test_frame_sig(d, 32, 16), 100);
@@ -397,10 +377,10 @@ static void test_crc_storm_alternating(void **state)
 		if ((k >= ks) && (k < ke) && (((k - ks) % 2U) == 0U)) {
 			fs.data[0] ^= 0x5AU;
 		}
-		push(&fs);
-		push(&ff);
+		test_app_push(&fs);
+		test_app_push(&ff);
 	}
-	run_to(in_time(ke + 19U));
+	test_app_run_to(in_time(ke + 19U));
 	assert_int_equal(mon()->speed.count.e2e_wrong_crc, 50);
 	assert_int_equal(mon()->speed.count.e2e_lost, 50);
 	assert_int_equal(mon()->speed.count.used, ke + 20U - 50U);
@@ -449,22 +429,22 @@ static void test_every_wrong_dlc(void **state)
 			fb = frame_of(speed, k);
 			fo = frame_of(!speed, k);
 			fb.dlc = dlc;
-			push(&fb);
-			push(&fo);
+			test_app_push(&fb);
+			test_app_push(&fo);
 			pair(k + 1U);
 			pair(k + 2U);
-			run_to(in_time(k));
+			test_app_run_to(in_time(k));
 			n_bad++;
 			assert_int_equal(first_status(in_time(k), ST_FAULT, true), in_time(k));
 			assert_int_equal(monitor_fault_bits(mon()), speed ? F_E2E_SPEED : F_E2E_FORCE);
-			run_to(in_time(k + 1U));
+			test_app_run_to(in_time(k + 1U));
 			assert_int_equal(last_state(), ST_STABLE);
 			assert_int_equal(monitor_fault_bits(mon()), 0U);
 			k += 3U;
 		}
 	}
 	assert_int_equal(n_bad, 16);
-	run_to(in_time(k - 1U));
+	test_app_run_to(in_time(k - 1U));
 	for (uint32_t s = 0U; s < 2U; s++) {
 		const bool speed = s == 0U;
 
@@ -479,7 +459,7 @@ static void test_every_wrong_dlc(void **state)
 	assert_int_equal(mon()->count.state_changes, 1U + 2U * 16U);
 	/* page 3 at T0 + 3 s */
 	steady(k, 310U);
-	run_to(T0_US + 3000000U);
+	test_app_run_to(T0_US + 3000000U);
 	(void)diag_at(T0_US + 3000000U, &page, &d);
 	assert_int_equal(page, 3);
 	assert_int_equal(test_frame_sig(d, 48, 16), 16);
@@ -501,7 +481,7 @@ static void run_steady(uint64_t t_us)
 			pair(next_k);
 			next_k++;
 		}
-		run_to(chunk);
+		test_app_run_to(chunk);
 	}
 }
 
@@ -701,7 +681,7 @@ static void test_clock_jump_10s(void **state)
 	(void)state;
 	boot();
 	steady(0U, 100U);
-	run_to(t1);
+	test_app_run_to(t1);
 	assert_int_equal(last_state(), ST_STABLE);
 	kicks = test_hal_watchdog_kicks();
 	/* the senders go on in the new time base, counters continuing */
@@ -717,9 +697,9 @@ static void test_clock_jump_10s(void **state)
 	assert_int_equal(monitor_fault_bits(mon()), F_SPEED_STALE | F_FORCE_STALE);
 	assert_int_equal(mon()->speed.count.stale_events, 1);
 	assert_int_equal(mon()->force.count.stale_events, 1);
-	run_to(tj + IN_PERIOD_US);
+	test_app_run_to(tj + IN_PERIOD_US);
 	assert_int_equal(first_status(tj, ST_FAULT, false), tj + IN_PERIOD_US);
-	run_to(tj + 299U * IN_PERIOD_US);
+	test_app_run_to(tj + 299U * IN_PERIOD_US);
 	assert_int_equal(first_status(tj + IN_PERIOD_US, ST_STABLE, false), 0U);
 	assert_int_equal(monitor_fault_bits(mon()), 0U);
 	for (uint32_t s = 0U; s < 2U; s++) {
@@ -737,7 +717,7 @@ static void test_clock_jump_10s(void **state)
 	 * 1), then every second from the jump on; Uptime_s jumped too */
 	(void)diag_at(tj, &page, &d);
 	assert_int_equal(page, 1);
-	run_to(tj + 4U * DIAG_US);
+	test_app_run_to(tj + 4U * DIAG_US);
 	(void)diag_at(tj + 4U * DIAG_US, &page, &d);
 	assert_int_equal(page, 0); /* pages 0..4 */
 	assert_int_equal(test_frame_sig(d, 32, 24), (tj + 4U * DIAG_US - T0_US) / 1000000U); /* Uptime_s */
