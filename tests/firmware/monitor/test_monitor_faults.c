@@ -84,6 +84,20 @@ static const monitor_t *mon(void)
 	return squeal_app_monitor();
 }
 
+/* At the k-th input pair: the last SquealStatus says want; fault_at: says
+ * FAULT, with exactly these fault bits. */
+static void state_at(uint32_t k, uint8_t want)
+{
+	test_app_run_to(in_time(k));
+	assert_int_equal(last_state(NULL), want);
+}
+
+static void fault_at(uint32_t k, uint32_t bits)
+{
+	state_at(k, MSG_SQUEAL_STATE_FAULT);
+	assert_int_equal(monitor_fault_bits(mon()), bits);
+}
+
 /* healthy start: stable after the first pair */
 static void healthy_until(uint32_t k_end)
 {
@@ -179,12 +193,10 @@ static void test_bad_crc(void **state)
 	test_app_push(&f);
 	/* k 6..: good again (the receiver has lost one counter value) */
 	steady(6U, 220U);
-	test_app_run_to(in_time(5U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
+	state_at(5U, MSG_SQUEAL_STATE_FAULT);
 	assert_int_equal(first_status(in_time(5U), MSG_SQUEAL_STATE_FAULT, true), in_time(5U));
 	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_E2E_SPEED);
-	test_app_run_to(in_time(6U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(6U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(mon()->speed.count.e2e_wrong_crc, 1);
 	assert_int_equal(mon()->speed.count.e2e_lost, 1);
 	assert_int_equal(mon()->force.count.e2e_wrong_crc, 0);
@@ -298,8 +310,7 @@ static void test_counter_jump(void **state)
 	assert_int_equal(first_status(in_time(10U), MSG_SQUEAL_STATE_FAULT, true), in_time(10U));
 	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_E2E_SPEED);
 	assert_int_equal(mon()->speed.count.e2e_wrong_sequence, 1);
-	test_app_run_to(in_time(11U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(11U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(monitor_fault_bits(mon()), 0U);
 	/* a jump within the tolerance (one frame lost) is fine */
 	snd.force_counter = (uint8_t)((snd.force_counter + 1U) % 15U);
@@ -327,9 +338,7 @@ static void test_counter_15_rejected(void **state)
 	test_app_push(&f);
 	f = test_frame_force(&snd, FORCE_RAW, in_time(10U));
 	test_app_push(&f);
-	test_app_run_to(in_time(10U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_E2E_SPEED);
+	fault_at(10U, MSG_FAULT_E2E_SPEED);
 }
 
 /* ---- plausibility -------------------------------------------------------------- */
@@ -348,18 +357,11 @@ static void test_speed_out_of_range(void **state)
 	pair(3U, 4995U, FORCE_RAW);
 	pair(4U, 0xFFFFU, FORCE_RAW); /* "not available" */
 	pair(5U, 4995U, FORCE_RAW);
-	test_app_run_to(in_time(1U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
-	test_app_run_to(in_time(2U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_SPEED_IMPLAUSIBLE);
-	test_app_run_to(in_time(3U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
-	test_app_run_to(in_time(4U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_SPEED_IMPLAUSIBLE);
-	test_app_run_to(in_time(5U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(1U, MSG_SQUEAL_STATE_STABLE);
+	fault_at(2U, MSG_FAULT_SPEED_IMPLAUSIBLE);
+	state_at(3U, MSG_SQUEAL_STATE_STABLE);
+	fault_at(4U, MSG_FAULT_SPEED_IMPLAUSIBLE);
+	state_at(5U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(mon()->speed.count.implausible, 2);
 }
 
@@ -373,9 +375,7 @@ static void test_force_out_of_range(void **state)
 	pair(3U, SPEED_RAW, 59999U);
 	test_app_run_to(in_time(1U));
 	assert_true(last_state(NULL) != MSG_SQUEAL_STATE_FAULT);
-	test_app_run_to(in_time(2U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_FORCE_IMPLAUSIBLE);
+	fault_at(2U, MSG_FAULT_FORCE_IMPLAUSIBLE);
 	test_app_run_to(in_time(3U));
 	assert_true(last_state(NULL) != MSG_SQUEAL_STATE_FAULT);
 	assert_int_equal(mon()->force.count.implausible, 1);
@@ -394,18 +394,12 @@ static void test_speed_rate_limit(void **state)
 	pair(3U, 4501U, FORCE_RAW);
 	pair(4U, 3500U, FORCE_RAW); /* -1001 */
 	pair(5U, 3400U, FORCE_RAW);
-	test_app_run_to(in_time(1U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
-	test_app_run_to(in_time(2U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_SPEED_IMPLAUSIBLE);
-	test_app_run_to(in_time(3U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(1U, MSG_SQUEAL_STATE_STABLE);
+	fault_at(2U, MSG_FAULT_SPEED_IMPLAUSIBLE);
+	state_at(3U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(mon()->speed.value, 4501 * 1200);
-	test_app_run_to(in_time(4U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	test_app_run_to(in_time(5U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(4U, MSG_SQUEAL_STATE_FAULT);
+	state_at(5U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(mon()->speed.count.implausible, 2);
 }
 
