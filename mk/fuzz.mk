@@ -70,7 +70,7 @@ FUZZ_TARGETS :=
 FUZZ_COV_TARGETS :=
 $(eval $(call fuzz_target,fuzz_model_float,fuzz,tests/firmware/model/fuzz_squeal_model.c))
 $(eval $(call fuzz_target,fuzz_model_fixed,fuzz-fixed,tests/firmware/model/fuzz_squeal_model.c))
-$(eval $(call fuzz_target,fuzz_msgs,fuzz,tests/firmware/protocol/fuzz_squeal_msgs.c))
+$(eval $(call fuzz_target,fuzz_msgs,fuzz,tests/firmware/protocol/fuzz_squeal_msgs.c,build/fuzz/app/tests/support/any_msg.o))
 $(eval $(call fuzz_target,fuzz_calib_block,fuzz,tests/firmware/monitor/fuzz_calib.c))
 $(eval $(call fuzz_target,fuzz_monitor,fuzz,tests/firmware/monitor/fuzz_monitor.c))
 $(eval $(call fuzz_target,fuzz_monitor_fixed,fuzz-fixed,tests/firmware/monitor/fuzz_monitor.c))

@@ -6,9 +6,9 @@
 #   build/test/tests/hal/stm32g4/test_fdcan
 #   build/test/tests/hal/stm32g4/conf_fdcan
 #   build/test/tests/hal/stm32g4/test_fdcan_timing
-FDCAN_SIM_SRCS := tests/hal/stm32g4/fdcan_sim.c hal/stm32g4/fdcan.c hal/stm32g4/fdcan_timing.c \
+FDCAN_SIM_SRCS := tests/hal/stm32g4/fdcan_sim.c tests/hal/cortex_sim.c tests/hal/wire_sim.c hal/stm32g4/fdcan.c hal/stm32g4/fdcan_timing.c \
 	hal/common/hal_can_common.c
-FDCAN_SIM_DEPS := $(FDCAN_SIM_SRCS) tests/hal/stm32g4/fdcan_sim.h tests/hal/stm32g4/sim/chip.h \
+FDCAN_SIM_DEPS := $(FDCAN_SIM_SRCS) tests/hal/stm32g4/fdcan_sim.h tests/hal/cortex_sim.h tests/hal/wire_sim.h tests/hal/can_sim.h tests/hal/stm32g4/sim/chip.h \
 	hal/stm32g4/fdcan.h hal/stm32g4/fdcan_regs.h hal/stm32f4/cortex_m.h hal/stm32f4/chip_api.h \
 	hal/hal.h hal/hal_can_common.h
 # tests/hal/stm32g4/sim first: its chip.h puts the instances on the simulation
@@ -20,11 +20,11 @@ build/test/tests/hal/stm32g4/test_fdcan: tests/hal/stm32g4/test_fdcan.c $(FDCAN_
 	$(CC) $(FDCAN_SIM_CFLAGS) -o $@ tests/hal/stm32g4/test_fdcan.c $(FDCAN_SIM_SRCS) -lcmocka
 
 build/test/tests/hal/stm32g4/conf_fdcan: tests/hal/conformance.c tests/hal/stm32g4/conf_fdcan.c \
-		tests/hal/conf_contract.c tests/hal/conformance_backend.h \
+		tests/hal/conf_contract.c tests/hal/conf_can_sim.c tests/hal/conformance_backend.h \
 		tests/hal/conformance_contract.h $(FDCAN_SIM_DEPS)
 	@mkdir -p $(@D)
 	$(CC) $(FDCAN_SIM_CFLAGS) -o $@ tests/hal/conformance.c tests/hal/stm32g4/conf_fdcan.c \
-		tests/hal/conf_contract.c $(FDCAN_SIM_SRCS)
+		tests/hal/conf_contract.c tests/hal/conf_can_sim.c $(FDCAN_SIM_SRCS)
 
 # pure arithmetic: no simulation
 build/test/tests/hal/stm32g4/test_fdcan_timing: tests/hal/stm32g4/test_fdcan_timing.c \

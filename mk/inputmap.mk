@@ -16,7 +16,7 @@ TEST_PROGS += $(foreach v,$(INPUTMAP_TEST_VARIANTS),build/$(v)/tests/firmware/mo
 # text parser and the monitor's input path, both numeric builds.
 #   build/<v>/tests/firmware/monitor/test_input_rx
 define vehicle_inputs_rules
-build/$(1)/tests/firmware/monitor/test_input_rx: build/$(1)/app/tests/firmware/monitor/test_input_rx.o build/$(1)/app/tests/support/test_contract.o build/$(1)/app/host-sim/calib_text.o build/$(1)/app/host-sim/calib_sections.o build/$(1)/libfirmware.a
+build/$(1)/tests/firmware/monitor/test_input_rx: build/$(1)/app/tests/firmware/monitor/test_input_rx.o build/$(1)/app/tests/support/map_fixture.o build/$(1)/app/tests/support/test_contract.o build/$(1)/app/host-sim/calib_text.o build/$(1)/app/host-sim/calib_sections.o build/$(1)/libfirmware.a
 	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef

@@ -62,7 +62,7 @@ BENCH_PROGS += tests/firmware/monitor/bench_monitor_ram.sh
 #   build/<v>/tests/firmware/protocol/test_e2e_p02
 #   build/<v>/tests/firmware/model/test_squeal_sigma_criterion
 define input_verdict_rules
-build/$(1)/tests/firmware/monitor/test_input_rx_verdict: build/$(1)/app/tests/firmware/monitor/test_input_rx_verdict.o build/$(1)/app/tests/support/test_contract.o build/$(1)/app/host-sim/calib_text.o build/$(1)/app/host-sim/calib_sections.o build/$(1)/libfirmware.a
+build/$(1)/tests/firmware/monitor/test_input_rx_verdict: build/$(1)/app/tests/firmware/monitor/test_input_rx_verdict.o build/$(1)/app/tests/support/map_fixture.o build/$(1)/app/tests/support/test_contract.o build/$(1)/app/host-sim/calib_text.o build/$(1)/app/host-sim/calib_sections.o build/$(1)/libfirmware.a
 	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 build/$(1)/tests/firmware/protocol/test_e2e_p02: build/$(1)/app/tests/firmware/protocol/test_e2e_p02.o build/$(1)/app/tests/support/test_contract.o build/$(1)/libfirmware.a

@@ -39,7 +39,7 @@ endef
 $(foreach v,test test-fixed,$(eval $(call protocol_signal_rules,$(v))))
 TEST_PROGS += $(foreach v,test test-fixed,build/$(v)/tests/firmware/protocol/test_can_signal)
 
-$(PROTOCOL_EMIT): build/test/app/tests/firmware/protocol/emit_frames.o build/test/libfirmware.a
+$(PROTOCOL_EMIT): build/test/app/tests/firmware/protocol/emit_frames.o build/test/app/tests/support/any_msg.o build/test/libfirmware.a
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^
 

@@ -19,7 +19,7 @@ define soak_test_rules
 build/$(1)/app/tests/firmware/app/test_squeal_app_fault_injection.o: tests/firmware/app/test_squeal_app_fault_injection.c build/monitor/monitor_expect.h
 	@mkdir -p $$(@D)
 	$$(CC) $$(WARN) -D_GNU_SOURCE $$(OPT_$(1)) $$(DEF_$$(NUM_$(1))) $$(FW_INC) -Itests/support -Ibuild/monitor -MMD -MP -c $$< -o $$@
-build/$(1)/tests/firmware/app/test_squeal_app_fault_injection: build/$(1)/app/tests/firmware/app/test_squeal_app_fault_injection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
+build/$(1)/tests/firmware/app/test_squeal_app_fault_injection: build/$(1)/app/tests/firmware/app/test_squeal_app_fault_injection.o build/$(1)/app/tests/support/test_hal.o build/$(1)/app/tests/support/test_app_drive.o build/$(1)/libfirmware.a build/$(1)/libhal_vbus.a
 	@mkdir -p $$(@D)
 	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka -lm
 endef

@@ -34,6 +34,11 @@ void test_app_run_to(uint64_t t_us)
 	}
 }
 
+void test_app_push(const hal_can_frame_t *f)
+{
+	assert_int_equal(test_hal_rx_push(f), SQ_OK);
+}
+
 uint64_t test_app_tx_first(uint32_t id, uint64_t t_us, uint32_t start, uint32_t len,
 			   uint64_t value, bool want)
 {
@@ -55,4 +60,21 @@ uint64_t test_app_tx_last_sig(uint32_t id, uint32_t start, uint32_t len)
 
 	assert_non_null(f);
 	return (f != NULL) ? test_frame_sig(f->data, start, len) : 0U;
+}
+
+uint16_t test_app_diag_at(uint32_t diag_id, uint64_t t_us, uint32_t *page, const uint8_t **data)
+{
+	const hal_can_frame_t *f = test_hal_tx_at(diag_id, t_us);
+
+	if (f == NULL) {
+		fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
+		return 0U;
+	}
+	if (page != NULL) {
+		*page = (uint32_t)test_frame_sig(f->data, 12, 4);
+	}
+	if (data != NULL) {
+		*data = f->data;
+	}
+	return (uint16_t)test_frame_sig(f->data, 16, 11);
 }

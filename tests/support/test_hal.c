@@ -245,30 +245,33 @@ static hal_can_frame_t protect(uint32_t id, uint16_t data_id, uint8_t *counter,
 	return f;
 }
 
-hal_can_frame_t test_frame_speed(test_sender_t *s, uint16_t raw, uint64_t t_us)
+/* One input's frame (DiscSpeed or PadForce, the same layout), packed by
+ * the firmware and protected with the sender's next counter. */
+static hal_can_frame_t input_frame(test_sender_t *s, bool speed, uint16_t raw, uint64_t t_us)
 {
-	const msg_disc_speed_t m = { 0U, 0U, raw };
+	const msg_disc_speed_t ds = { 0U, 0U, raw };
+	const msg_pad_force_t pf = { 0U, 0U, raw };
 	uint8_t data[8] = { 0 };
 	uint8_t dlc = 0U;
+	const int rc = speed ? msg_disc_speed_pack(&ds, data, &dlc) : msg_pad_force_pack(&pf, data, &dlc);
 
-	if (msg_disc_speed_pack(&m, data, &dlc) != SQ_OK) {
+	if (rc != SQ_OK) {
 		dlc = 0U;
 	}
-	return protect(MSG_DISC_SPEED_ID, MSG_DISC_SPEED_DATA_ID, &s->speed_counter,
-		       data, dlc, t_us);
+	if (speed) {
+		return protect(MSG_DISC_SPEED_ID, MSG_DISC_SPEED_DATA_ID, &s->speed_counter, data, dlc, t_us);
+	}
+	return protect(MSG_PAD_FORCE_ID, MSG_PAD_FORCE_DATA_ID, &s->force_counter, data, dlc, t_us);
+}
+
+hal_can_frame_t test_frame_speed(test_sender_t *s, uint16_t raw, uint64_t t_us)
+{
+	return input_frame(s, true, raw, t_us);
 }
 
 hal_can_frame_t test_frame_force(test_sender_t *s, uint16_t raw, uint64_t t_us)
 {
-	const msg_pad_force_t m = { 0U, 0U, raw };
-	uint8_t data[8] = { 0 };
-	uint8_t dlc = 0U;
-
-	if (msg_pad_force_pack(&m, data, &dlc) != SQ_OK) {
-		dlc = 0U;
-	}
-	return protect(MSG_PAD_FORCE_ID, MSG_PAD_FORCE_DATA_ID, &s->force_counter,
-		       data, dlc, t_us);
+	return input_frame(s, false, raw, t_us);
 }
 
 int test_send_pair(test_sender_t *s, uint16_t speed_raw, uint16_t force_raw,

@@ -57,8 +57,19 @@ static const row_t rows[] = {
 	{ 0.600, 4000.0, SQUEAL_CRITERION_CUBIC, SQUEAL_STATE_UNSTABLE, -0.451997527, -0.617511965, 0.122905985, 0.120097122 },
 };
 
-static void inputs(const row_t *r, squeal_params_t *p, squeal_param_sd_t *sd, squeal_point_t *pt)
+/* One row's inputs: the default parameters, fixed deviations, its point. */
+typedef struct {
+	squeal_params_t p;
+	squeal_param_sd_t sd;
+	squeal_point_t pt;
+} inputs_t;
+
+static void inputs(const row_t *r, inputs_t *in)
 {
+	squeal_params_t *p = &in->p;
+	squeal_param_sd_t *sd = &in->sd;
+	squeal_point_t *pt = &in->pt;
+
 	squeal_model_default_params(p);
 	squeal_sigma_sd_zero(sd);
 	sd->mass_kg_sd = sq_num_from_double(0.05, SQUEAL_Q_MASS);
@@ -87,19 +98,17 @@ static void test_borders_follow_the_criterion(void **state)
 	(void)state;
 	for (size_t i = 0; i < sizeof(rows) / sizeof(rows[0]); i++) {
 		const row_t *r = &rows[i];
-		squeal_params_t p;
-		squeal_param_sd_t sd;
-		squeal_point_t pt;
+		inputs_t in;
 		squeal_result_t res;
 		squeal_result_t alone;
 		squeal_sigma_result_t sig;
 		double got;
 		double want;
 
-		inputs(r, &p, &sd, &pt);
-		assert_int_equal(squeal_sigma_classify(&p, &sd, &pt, r->criterion, &res, &sig), SQ_OK);
+		inputs(r, &in);
+		assert_int_equal(squeal_sigma_classify(&in.p, &in.sd, &in.pt, r->criterion, &res, &sig), SQ_OK);
 		/* the classification is squeal_model_classify's, unchanged */
-		assert_int_equal(squeal_model_classify(&p, &pt, r->criterion, &alone), SQ_OK);
+		assert_int_equal(squeal_model_classify(&in.p, &in.pt, r->criterion, &alone), SQ_OK);
 		assert_int_equal(res.state, alone.state);
 		assert_true(res.flags == alone.flags && res.basin_ratio == alone.basin_ratio);
 		assert_int_equal(res.state, r->state);
@@ -126,7 +135,7 @@ static void test_borders_follow_the_criterion(void **state)
 		if (r->criterion == SQUEAL_CRITERION_EXACT) {
 			squeal_sigma_result_t ex;
 
-			assert_int_equal(squeal_sigma_eval(&p, &sd, &pt, &ex), SQ_OK);
+			assert_int_equal(squeal_sigma_eval(&in.p, &in.sd, &in.pt, &ex), SQ_OK);
 			assert_int_equal(ex.state, sig.state);
 			assert_true(ex.g_stable == sig.g_stable && ex.sigma_stable == sig.sigma_stable &&
 				    ex.margin_sigma == sig.margin_sigma);
@@ -138,40 +147,38 @@ static void test_borders_follow_the_criterion(void **state)
  * the two NULL is a programming error. Not sliding: no border. */
 static void test_without_deviations_and_not_sliding(void **state)
 {
-	squeal_params_t p;
-	squeal_param_sd_t sd;
-	squeal_point_t pt;
+	inputs_t in;
 	squeal_result_t res;
 	squeal_result_t alone;
 	squeal_sigma_result_t sig;
 
 	(void)state;
-	inputs(&rows[5], &p, &sd, &pt);
-	assert_int_equal(squeal_sigma_classify(&p, NULL, &pt, SQUEAL_CRITERION_CUBIC, &res, NULL),
+	inputs(&rows[5], &in);
+	assert_int_equal(squeal_sigma_classify(&in.p, NULL, &in.pt, SQUEAL_CRITERION_CUBIC, &res, NULL),
 			 SQ_OK);
-	assert_int_equal(squeal_model_classify(&p, &pt, SQUEAL_CRITERION_CUBIC, &alone), SQ_OK);
+	assert_int_equal(squeal_model_classify(&in.p, &in.pt, SQUEAL_CRITERION_CUBIC, &alone), SQ_OK);
 	assert_int_equal(res.state, alone.state);
-	expect_assert_failure(squeal_sigma_classify(&p, &sd, &pt, SQUEAL_CRITERION_CUBIC, &res, NULL));
-	expect_assert_failure(squeal_sigma_classify(&p, NULL, &pt, SQUEAL_CRITERION_CUBIC, &res, &sig));
-	expect_assert_failure(squeal_sigma_classify(NULL, &sd, &pt, SQUEAL_CRITERION_CUBIC, &res, &sig));
-	expect_assert_failure(squeal_sigma_classify(&p, &sd, NULL, SQUEAL_CRITERION_CUBIC, &res, &sig));
-	expect_assert_failure(squeal_sigma_classify(&p, &sd, &pt, SQUEAL_CRITERION_CUBIC, NULL, &sig));
-	pt.v0_mps = 0;
-	assert_int_equal(squeal_sigma_classify(&p, &sd, &pt, SQUEAL_CRITERION_CUBIC, &res, &sig),
+	expect_assert_failure(squeal_sigma_classify(&in.p, &in.sd, &in.pt, SQUEAL_CRITERION_CUBIC, &res, NULL));
+	expect_assert_failure(squeal_sigma_classify(&in.p, NULL, &in.pt, SQUEAL_CRITERION_CUBIC, &res, &sig));
+	expect_assert_failure(squeal_sigma_classify(NULL, &in.sd, &in.pt, SQUEAL_CRITERION_CUBIC, &res, &sig));
+	expect_assert_failure(squeal_sigma_classify(&in.p, &in.sd, NULL, SQUEAL_CRITERION_CUBIC, &res, &sig));
+	expect_assert_failure(squeal_sigma_classify(&in.p, &in.sd, &in.pt, SQUEAL_CRITERION_CUBIC, NULL, &sig));
+	in.pt.v0_mps = 0;
+	assert_int_equal(squeal_sigma_classify(&in.p, &in.sd, &in.pt, SQUEAL_CRITERION_CUBIC, &res, &sig),
 			 SQ_OK);
 	assert_int_equal(sig.state, SQUEAL_STATE_NOT_SLIDING);
 	assert_true(sig.flags == 0U && sig.margin_sigma == SQUEAL_SIGMA_MARGIN_MAX);
 	/* an unknown criterion is an invalid classification, and so is the
 	 * uncertainty */
-	inputs(&rows[5], &p, &sd, &pt);
-	assert_int_equal(squeal_sigma_classify(&p, &sd, &pt, (squeal_criterion_t)7, &res, &sig),
+	inputs(&rows[5], &in);
+	assert_int_equal(squeal_sigma_classify(&in.p, &in.sd, &in.pt, (squeal_criterion_t)7, &res, &sig),
 			 SQ_EINVAL);
 	assert_int_equal(res.state, SQUEAL_STATE_INVALID);
 	assert_int_equal(sig.state, SQUEAL_STATE_INVALID);
 	/* deviations outside their domain: the classification stands, the
 	 * uncertainty is invalid */
-	sd.damping_sd = p.damping + 1;
-	assert_int_equal(squeal_sigma_classify(&p, &sd, &pt, SQUEAL_CRITERION_CUBIC, &res, &sig),
+	in.sd.damping_sd = in.p.damping + 1;
+	assert_int_equal(squeal_sigma_classify(&in.p, &in.sd, &in.pt, SQUEAL_CRITERION_CUBIC, &res, &sig),
 			 SQ_OK);
 	assert_int_equal(res.state, SQUEAL_STATE_STABLE);
 	assert_int_equal(sig.state, SQUEAL_STATE_INVALID);

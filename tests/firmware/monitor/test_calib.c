@@ -462,6 +462,18 @@ static void test_every_single_byte_corruption_rejected(void **state)
 
 static void test_header_errors(void **state)
 {
+	/* one header field set to a wrong value (little endian), block resealed */
+	static const struct {
+		size_t off;
+		uint32_t value;
+		uint32_t size;
+		calib_error_t why;
+	} bad_header[] = {
+		{ 0U, 'X', 1U, CALIB_ERR_MAGIC },
+		{ 4U, CALIB_VERSION + 1U, 2U, CALIB_ERR_VERSION },
+		{ 4U, CALIB_VERSION - 1U, 2U, CALIB_ERR_VERSION }, /* an older layout: not read as this one */
+		{ 6U, CALIB_BLOCK_LEN + 1U, 2U, CALIB_ERR_LENGTH },
+	};
 	uint8_t buf[CALIB_BLOCK_LEN + 8U];
 	calib_t out;
 	calib_error_t why = CALIB_OK;
@@ -474,27 +486,13 @@ static void test_header_errors(void **state)
 	memset(&buf[CALIB_BLOCK_LEN], 0xFF, 8U);
 	assert_int_equal(calib_decode(buf, sizeof(buf), &out, &why), SQ_OK);
 	/* magic, version, length field: with a correct CRC still refused */
-	encode_default(buf);
-	buf[0] = 'X';
-	reseal(buf);
-	assert_int_equal(calib_decode(buf, CALIB_BLOCK_LEN, &out, &why), SQ_EBADMSG);
-	assert_int_equal(why, CALIB_ERR_MAGIC);
-	encode_default(buf);
-	put_le(&buf[4], CALIB_VERSION + 1U, 2U);
-	reseal(buf);
-	assert_int_equal(calib_decode(buf, CALIB_BLOCK_LEN, &out, &why), SQ_EBADMSG);
-	assert_int_equal(why, CALIB_ERR_VERSION);
-	/* an older layout is refused too, not read as this one */
-	encode_default(buf);
-	put_le(&buf[4], CALIB_VERSION - 1U, 2U);
-	reseal(buf);
-	assert_int_equal(calib_decode(buf, CALIB_BLOCK_LEN, &out, &why), SQ_EBADMSG);
-	assert_int_equal(why, CALIB_ERR_VERSION);
-	encode_default(buf);
-	put_le(&buf[6], CALIB_BLOCK_LEN + 1U, 2U);
-	reseal(buf);
-	assert_int_equal(calib_decode(buf, CALIB_BLOCK_LEN, &out, &why), SQ_EBADMSG);
-	assert_int_equal(why, CALIB_ERR_LENGTH);
+	for (size_t i = 0U; i < sizeof(bad_header) / sizeof(bad_header[0]); i++) {
+		encode_default(buf);
+		put_le(&buf[bad_header[i].off], bad_header[i].value, bad_header[i].size);
+		reseal(buf);
+		assert_int_equal(calib_decode(buf, CALIB_BLOCK_LEN, &out, &why), SQ_EBADMSG);
+		assert_int_equal(why, bad_header[i].why);
+	}
 	/* erased flash */
 	memset(buf, 0xFF, sizeof(buf));
 	assert_int_equal(calib_decode(buf, CALIB_BLOCK_LEN, &out, &why), SQ_EBADMSG);

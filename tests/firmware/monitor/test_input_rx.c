@@ -36,6 +36,7 @@
 
 #include "calib_map.h"
 #include "calib_text.h"
+#include "map_fixture.h"
 #include "e2e_p01.h"
 #include "input_rx.h"
 #include "monitor.h"
@@ -50,24 +51,12 @@ static calib_names_t names;
 
 static void load(const char *file)
 {
-	char path[256];
-	char err[300] = "";
-
-	snprintf(path, sizeof(path), "%s/%s", FIXTURE_DIR, file);
-	if (calib_text_load_map(path, &cal, &names, err, sizeof(err)) != SQ_OK) {
-		fail_msg("%s", err);
-	}
+	map_fixture_load(FIXTURE_DIR, file, &cal, &names);
 }
 
 static uint32_t input_named(const char *name)
 {
-	for (uint32_t i = 0U; i < cal.n_inputs; i++) {
-		if (strcmp(names.input[i], name) == 0) {
-			return i;
-		}
-	}
-	fail_msg("no input %s", name);
-	return 0U;
+	return map_fixture_input(&cal, &names, name);
 }
 
 /* input `name` prepared with the geometry of corner k */

@@ -28,6 +28,7 @@
 #include <cmocka.h>
 
 #include "calib_text.h"
+#include "map_fixture.h"
 #include "input_rx.h"
 #include "monitor.h"
 #include "sq_status.h"
@@ -47,23 +48,12 @@ static calib_names_t names;
 
 static void load(void)
 {
-	char err[300] = "";
-
-	if (calib_text_load_map(FIXTURE_DIR "/moto15_p02.cal", &cal, &names, err,
-				sizeof(err)) != SQ_OK) {
-		fail_msg("%s", err);
-	}
+	map_fixture_load(FIXTURE_DIR, "moto15_p02.cal", &cal, &names);
 }
 
 static uint32_t input_named(const char *name)
 {
-	for (uint32_t i = 0U; i < cal.n_inputs; i++) {
-		if (strcmp(names.input[i], name) == 0) {
-			return i;
-		}
-	}
-	fail_msg("no input %s", name);
-	return 0U;
+	return map_fixture_input(&cal, &names, name);
 }
 
 static input_rx_cfg_t prepared(const calib_input_t *in)

@@ -27,52 +27,20 @@
 
 #include "calib.h"
 #include "e2e_p01.h"
+#include "fault_drive.h"
 #include "monitor.h"
 #include "monitor_expect.h"
 #include "sq_status.h"
 #include "squeal_app.h"
+#include "test_app_drive.h"
 #include "test_hal.h"
-
-#define T0_US 1000000ULL
-#define IN_OFFSET_US 5000ULL
-#define IN_PERIOD_US 10000ULL
-#define SPEED_RAW 2500U   /* 25 rad/s: v0 = 3 m/s */
-#define FORCE_RAW 18000U  /* 9000 N */
-#define STALE_US 30000ULL /* 3 x 10 ms */
 
 static test_sender_t snd;
 
-static uint64_t in_time(uint32_t k)
-{
-	return T0_US + IN_OFFSET_US + IN_PERIOD_US * k;
-}
-
 static void boot(const calib_t *cal)
 {
-	uint8_t buf[CALIB_BLOCK_LEN];
-
-	test_hal_reset();
-	test_hal_set_time_us(T0_US);
-	if (cal != NULL) {
-		assert_int_equal(calib_encode(cal, buf, sizeof(buf)), SQ_OK);
-		test_hal_calib_store(buf, sizeof(buf));
-	}
-	assert_int_equal(squeal_app_init(), SQ_OK);
-	(void)squeal_app_poll();
+	test_app_boot(cal, T0_US);
 	test_sender_init(&snd);
-}
-
-static void run_to(uint64_t t_us)
-{
-	while (hal_time_us() < t_us) {
-		test_hal_advance_us(1000U);
-		(void)squeal_app_poll();
-	}
-}
-
-static void push(const hal_can_frame_t *f)
-{
-	assert_int_equal(test_hal_rx_push(f), SQ_OK);
 }
 
 static void pair(uint32_t k, uint16_t speed_raw, uint16_t force_raw)
@@ -93,46 +61,22 @@ static void steady(uint32_t k_from, uint32_t k_to)
  * or not (want == false) equal to st; its time, or 0 if none. */
 static uint64_t first_status(uint64_t t_us, uint8_t st, bool want)
 {
-	int32_t i = -1;
-
-	while ((i = test_hal_tx_find(EXP_DBC_SQUEALSTATUS_ID, (uint32_t)(i + 1))) >= 0) {
-		const hal_can_frame_t *f = test_hal_tx_frame((uint32_t)i);
-
-		if ((f->timestamp_us >= t_us) && ((test_frame_sig(f->data, 12, 4) == st) == want)) {
-			return f->timestamp_us;
-		}
-	}
-	return 0U;
+	return test_app_tx_first(EXP_DBC_SQUEALSTATUS_ID, t_us, 12, 4, st, want);
 }
 
 /* state and level of the last SquealStatus sent */
 static uint8_t last_state(uint8_t *warning)
 {
-	const hal_can_frame_t *f = test_hal_tx_last(EXP_DBC_SQUEALSTATUS_ID);
-
-	assert_non_null(f);
 	if (warning != NULL) {
-		*warning = (uint8_t)test_frame_sig(f->data, 16, 4);
+		*warning = (uint8_t)test_app_tx_last_sig(EXP_DBC_SQUEALSTATUS_ID, 16, 4);
 	}
-	return (uint8_t)test_frame_sig(f->data, 12, 4);
+	return (uint8_t)test_app_tx_last_sig(EXP_DBC_SQUEALSTATUS_ID, 12, 4);
 }
 
 /* The SquealDiag frame sent at t_us (exactly): fault bits and page. */
 static uint16_t diag_faults_at(uint64_t t_us, uint32_t *page, const uint8_t **data)
 {
-	const hal_can_frame_t *f = test_hal_tx_at(EXP_DBC_SQUEALDIAG_ID, t_us);
-
-	if (f == NULL) {
-		fail_msg("no SquealDiag at %llu us", (unsigned long long)t_us);
-		return 0U;
-	}
-	if (page != NULL) {
-		*page = (uint32_t)test_frame_sig(f->data, 12, 4);
-	}
-	if (data != NULL) {
-		*data = f->data;
-	}
-	return (uint16_t)test_frame_sig(f->data, 16, 11);
+	return test_app_diag_at(EXP_DBC_SQUEALDIAG_ID, t_us, page, data);
 }
 
 static const monitor_t *mon(void)
@@ -140,11 +84,25 @@ static const monitor_t *mon(void)
 	return squeal_app_monitor();
 }
 
+/* At the k-th input pair: the last SquealStatus says want; fault_at: says
+ * FAULT, with exactly these fault bits. */
+static void state_at(uint32_t k, uint8_t want)
+{
+	test_app_run_to(in_time(k));
+	assert_int_equal(last_state(NULL), want);
+}
+
+static void fault_at(uint32_t k, uint32_t bits)
+{
+	state_at(k, MSG_SQUEAL_STATE_FAULT);
+	assert_int_equal(monitor_fault_bits(mon()), bits);
+}
+
 /* healthy start: stable after the first pair */
 static void healthy_until(uint32_t k_end)
 {
 	steady(0U, k_end);
-	run_to(in_time(k_end - 1U));
+	test_app_run_to(in_time(k_end - 1U));
 	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(monitor_fault_bits(mon()), 0U);
 }
@@ -166,10 +124,10 @@ static void stale_one(bool speed)
 		hal_can_frame_t f = speed ? test_frame_force(&snd, FORCE_RAW, in_time(k)) :
 			test_frame_speed(&snd, SPEED_RAW, in_time(k));
 
-		push(&f);
+		test_app_push(&f);
 	}
 	steady(120U, 220U);
-	run_to(in_time(60U));
+	test_app_run_to(in_time(60U));
 	t_fault = first_status(in_time(9U), MSG_SQUEAL_STATE_FAULT, true);
 	assert_true(t_fault != 0U);
 	print_message("  last frame at +%llu us, FAULT sent %llu us later\n",
@@ -180,10 +138,10 @@ static void stale_one(bool speed)
 	assert_int_equal(last_state(&warning), MSG_SQUEAL_STATE_FAULT);
 	assert_int_equal(warning, 0);
 	/* SquealDiag at T0 + 1 s carries the bit, and only that one */
-	run_to(T0_US + 1000000U);
+	test_app_run_to(T0_US + 1000000U);
 	assert_int_equal(diag_faults_at(T0_US + 1000000U, NULL, NULL), bit);
 	/* frames return at k 120: usable at once (E2E starts over) */
-	run_to(T0_US + 2000000U);
+	test_app_run_to(T0_US + 2000000U);
 	t_back = first_status(in_time(120U), MSG_SQUEAL_STATE_FAULT, false);
 	assert_int_equal(t_back, in_time(120U));
 	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
@@ -209,7 +167,7 @@ static void test_never_seen_is_fault(void **state)
 {
 	(void)state;
 	boot(NULL);
-	run_to(T0_US + 1000000U);
+	test_app_run_to(T0_US + 1000000U);
 	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
 	assert_int_equal(first_status(T0_US, MSG_SQUEAL_STATE_FAULT, false), 0U);
 	assert_int_equal(diag_faults_at(T0_US, NULL, NULL),
@@ -230,22 +188,20 @@ static void test_bad_crc(void **state)
 	/* k 5: a speed frame whose CRC byte was hit on the bus */
 	f = test_frame_speed(&snd, SPEED_RAW, in_time(5U));
 	f.data[0] ^= 0x10U;
-	push(&f);
+	test_app_push(&f);
 	f = test_frame_force(&snd, FORCE_RAW, in_time(5U));
-	push(&f);
+	test_app_push(&f);
 	/* k 6..: good again (the receiver has lost one counter value) */
 	steady(6U, 220U);
-	run_to(in_time(5U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
+	state_at(5U, MSG_SQUEAL_STATE_FAULT);
 	assert_int_equal(first_status(in_time(5U), MSG_SQUEAL_STATE_FAULT, true), in_time(5U));
 	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_E2E_SPEED);
-	run_to(in_time(6U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(6U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(mon()->speed.count.e2e_wrong_crc, 1);
 	assert_int_equal(mon()->speed.count.e2e_lost, 1);
 	assert_int_equal(mon()->force.count.e2e_wrong_crc, 0);
 	/* SquealDiag page 2 (at T0 + 2 s) counts it */
-	run_to(T0_US + 2000000U);
+	test_app_run_to(T0_US + 2000000U);
 	assert_int_equal(diag_faults_at(T0_US + 2000000U, &page, &d), 0U);
 	assert_int_equal(page, 2);
 	assert_int_equal(test_frame_sig(d, 32, 16), 1); /* E2eErrorCountSpeed */
@@ -264,12 +220,12 @@ static void test_bad_crc_persistent(void **state)
 	for (k = 10U; k < 120U; k++) {
 		hal_can_frame_t f = test_frame_force(&snd, FORCE_RAW, in_time(k));
 
-		push(&f);
+		test_app_push(&f);
 		f = test_frame_speed(&snd, SPEED_RAW, in_time(k));
 		f.data[2] ^= 0x01U; /* payload bit flip */
-		push(&f);
+		test_app_push(&f);
 	}
-	run_to(T0_US + 1000000U);
+	test_app_run_to(T0_US + 1000000U);
 	assert_int_equal(diag_faults_at(T0_US + 1000000U, NULL, NULL),
 			 MSG_FAULT_E2E_SPEED | MSG_FAULT_SPEED_STALE);
 	assert_int_equal(mon()->speed.count.e2e_wrong_crc, 90); /* k 10..99 */
@@ -287,17 +243,17 @@ static uint64_t frozen_sender(void)
 	boot(NULL);
 	steady(0U, 9U);
 	frozen = test_frame_speed(&snd, SPEED_RAW, in_time(9U));
-	push(&frozen);
+	test_app_push(&frozen);
 	for (k = 9U; k < 30U; k++) {
 		hal_can_frame_t f = test_frame_force(&snd, FORCE_RAW, in_time(k));
 
 		if (k > 9U) {
 			frozen.timestamp_us = in_time(k);
-			push(&frozen);
+			test_app_push(&frozen);
 		}
-		push(&f);
+		test_app_push(&f);
 	}
-	run_to(in_time(29U));
+	test_app_run_to(in_time(29U));
 	t_fault = first_status(in_time(9U), MSG_SQUEAL_STATE_FAULT, true);
 	assert_true(t_fault != 0U);
 	return t_fault;
@@ -350,17 +306,16 @@ static void test_counter_jump(void **state)
 	healthy_until(10U);
 	snd.speed_counter = (uint8_t)((snd.speed_counter + 5U) % 15U); /* skips 5 */
 	steady(10U, 12U);
-	run_to(in_time(10U));
+	test_app_run_to(in_time(10U));
 	assert_int_equal(first_status(in_time(10U), MSG_SQUEAL_STATE_FAULT, true), in_time(10U));
 	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_E2E_SPEED);
 	assert_int_equal(mon()->speed.count.e2e_wrong_sequence, 1);
-	run_to(in_time(11U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(11U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(monitor_fault_bits(mon()), 0U);
 	/* a jump within the tolerance (one frame lost) is fine */
 	snd.force_counter = (uint8_t)((snd.force_counter + 1U) % 15U);
 	steady(12U, 30U);
-	run_to(in_time(29U));
+	test_app_run_to(in_time(29U));
 	assert_int_equal(first_status(in_time(11U), MSG_SQUEAL_STATE_FAULT, true), 0U);
 	assert_int_equal(mon()->force.count.e2e_lost, 1);
 	assert_int_equal(mon()->force.count.e2e_wrong_sequence, 0);
@@ -380,12 +335,10 @@ static void test_counter_15_rejected(void **state)
 	f.data[1] = (uint8_t)((f.data[1] & 0xF0U) | 0x0FU);
 	assert_int_equal(e2e_p01_crc(&cfg, f.data, 4U, &crc), SQ_OK);
 	f.data[0] = crc;
-	push(&f);
+	test_app_push(&f);
 	f = test_frame_force(&snd, FORCE_RAW, in_time(10U));
-	push(&f);
-	run_to(in_time(10U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_E2E_SPEED);
+	test_app_push(&f);
+	fault_at(10U, MSG_FAULT_E2E_SPEED);
 }
 
 /* ---- plausibility -------------------------------------------------------------- */
@@ -404,18 +357,11 @@ static void test_speed_out_of_range(void **state)
 	pair(3U, 4995U, FORCE_RAW);
 	pair(4U, 0xFFFFU, FORCE_RAW); /* "not available" */
 	pair(5U, 4995U, FORCE_RAW);
-	run_to(in_time(1U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
-	run_to(in_time(2U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_SPEED_IMPLAUSIBLE);
-	run_to(in_time(3U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
-	run_to(in_time(4U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_SPEED_IMPLAUSIBLE);
-	run_to(in_time(5U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(1U, MSG_SQUEAL_STATE_STABLE);
+	fault_at(2U, MSG_FAULT_SPEED_IMPLAUSIBLE);
+	state_at(3U, MSG_SQUEAL_STATE_STABLE);
+	fault_at(4U, MSG_FAULT_SPEED_IMPLAUSIBLE);
+	state_at(5U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(mon()->speed.count.implausible, 2);
 }
 
@@ -427,12 +373,10 @@ static void test_force_out_of_range(void **state)
 	pair(1U, SPEED_RAW, 60000U); /* default limit 30 kN */
 	pair(2U, SPEED_RAW, 60001U);
 	pair(3U, SPEED_RAW, 59999U);
-	run_to(in_time(1U));
+	test_app_run_to(in_time(1U));
 	assert_true(last_state(NULL) != MSG_SQUEAL_STATE_FAULT);
-	run_to(in_time(2U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_FORCE_IMPLAUSIBLE);
-	run_to(in_time(3U));
+	fault_at(2U, MSG_FAULT_FORCE_IMPLAUSIBLE);
+	test_app_run_to(in_time(3U));
 	assert_true(last_state(NULL) != MSG_SQUEAL_STATE_FAULT);
 	assert_int_equal(mon()->force.count.implausible, 1);
 }
@@ -450,18 +394,12 @@ static void test_speed_rate_limit(void **state)
 	pair(3U, 4501U, FORCE_RAW);
 	pair(4U, 3500U, FORCE_RAW); /* -1001 */
 	pair(5U, 3400U, FORCE_RAW);
-	run_to(in_time(1U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
-	run_to(in_time(2U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_SPEED_IMPLAUSIBLE);
-	run_to(in_time(3U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(1U, MSG_SQUEAL_STATE_STABLE);
+	fault_at(2U, MSG_FAULT_SPEED_IMPLAUSIBLE);
+	state_at(3U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(mon()->speed.value, 4501 * 1200);
-	run_to(in_time(4U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
-	run_to(in_time(5U));
-	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
+	state_at(4U, MSG_SQUEAL_STATE_FAULT);
+	state_at(5U, MSG_SQUEAL_STATE_STABLE);
 	assert_int_equal(mon()->speed.count.implausible, 2);
 }
 
@@ -472,9 +410,9 @@ static void test_force_rate_limit(void **state)
 	pair(0U, SPEED_RAW, 18000U);
 	pair(1U, SPEED_RAW, 38000U); /* +20000: the limit */
 	pair(2U, SPEED_RAW, 17999U); /* -20001 */
-	run_to(in_time(1U));
+	test_app_run_to(in_time(1U));
 	assert_int_equal(monitor_fault_bits(mon()), 0U);
-	run_to(in_time(2U));
+	test_app_run_to(in_time(2U));
 	assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_FORCE_IMPLAUSIBLE);
 	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
 }
@@ -494,21 +432,21 @@ static void test_wrong_dlc(void **state)
 		hal_can_frame_t f = test_frame_speed(&snd, SPEED_RAW, in_time(k));
 
 		f.dlc = dlcs[i];
-		push(&f);
+		test_app_push(&f);
 		f = test_frame_force(&snd, FORCE_RAW, in_time(k));
-		push(&f);
+		test_app_push(&f);
 		pair(k + 1U, SPEED_RAW, FORCE_RAW);
-		run_to(in_time(k));
+		test_app_run_to(in_time(k));
 		assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_FAULT);
 		assert_int_equal(monitor_fault_bits(mon()), MSG_FAULT_E2E_SPEED);
-		run_to(in_time(k + 1U));
+		test_app_run_to(in_time(k + 1U));
 		assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
 	}
 	assert_int_equal(mon()->speed.count.bad_dlc, 3);
 	assert_int_equal(mon()->force.count.bad_dlc, 0);
 	/* SquealDiag page 3 (T0 + 3 s): RxBadFrameCount */
 	steady(11U, 310U);
-	run_to(T0_US + 3000000U);
+	test_app_run_to(T0_US + 3000000U);
 	{
 		uint32_t page = 9U;
 		const uint8_t *d = NULL;
@@ -536,21 +474,21 @@ static void test_unknown_id_rtr_ext_error_frames(void **state)
 		f.dlc = 8U;
 		memset(f.data, 0xA5, 8U);
 		f.timestamp_us = in_time(k) - 2000U;
-		push(&f);
+		test_app_push(&f);
 		f.id = MSG_DISC_SPEED_ID; /* RTR on our id */
 		f.flags = HAL_CAN_FLAG_RTR;
 		f.dlc = 0U;
-		push(&f);
+		test_app_push(&f);
 		f.flags = HAL_CAN_FLAG_EXT; /* 29-bit id equal to ours */
 		f.dlc = 4U;
-		push(&f);
+		test_app_push(&f);
 		f.flags = HAL_CAN_FLAG_ERR;
 		f.id = 0x4U; /* error class */
-		push(&f);
+		test_app_push(&f);
 	}
 	steady(5U, 25U);
 	n_status_before = mon()->count.state_changes;
-	run_to(in_time(24U));
+	test_app_run_to(in_time(24U));
 	assert_int_equal(mon()->count.unknown_id, 20);
 	assert_int_equal(mon()->count.rtr_or_ext, 40);
 	assert_int_equal(mon()->count.error_frames, 20);
@@ -577,9 +515,9 @@ static void test_hal_filter_set_by_app(void **state)
 	f.id = 0x123U;
 	f.dlc = 8U;
 	f.timestamp_us = in_time(0U);
-	push(&f);
+	test_app_push(&f);
 	steady(0U, 3U);
-	run_to(in_time(2U));
+	test_app_run_to(in_time(2U));
 	assert_int_equal(mon()->count.unknown_id, 0);
 	assert_int_equal(last_state(NULL), MSG_SQUEAL_STATE_STABLE);
 }
@@ -608,11 +546,11 @@ static void run_plain(void)
 	for (k = 0U; k < 20U; k++) {
 		hal_can_frame_t f = plain(MSG_DISC_SPEED_ID, SPEED_RAW, in_time(k));
 
-		push(&f);
+		test_app_push(&f);
 		f = plain(MSG_PAD_FORCE_ID, FORCE_RAW, in_time(k));
-		push(&f);
+		test_app_push(&f);
 	}
-	run_to(in_time(19U));
+	test_app_run_to(in_time(19U));
 }
 
 static void test_e2e_off_accepts_plain_frames(void **state)

@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "any_msg.h"
 #include "e2e_p01.h"
 #include "sq_status.h"
 #include "squeal_msgs.h"
@@ -114,19 +115,11 @@ static const char *const fault_names[] = {
 	"Fault_SelfTest",
 };
 
-union any_msg {
-	msg_disc_speed_t ds;
-	msg_pad_force_t pf;
-	msg_squeal_status_t st;
-	msg_squeal_detail_t dt;
-	msg_squeal_detail2_t d2;
-	msg_squeal_diag_t dg;
-};
 
 #define IS(n) (strcmp(name, (n)) == 0)
 
 /* Store raw into the struct field named like the DBC signal. */
-static int set_field(uint16_t id, union any_msg *m, const char *name, int32_t raw)
+static int set_field(uint16_t id, any_msg_t *m, const char *name, int32_t raw)
 {
 	switch (id) {
 	case MSG_DISC_SPEED_ID:
@@ -184,25 +177,6 @@ static int set_field(uint16_t id, union any_msg *m, const char *name, int32_t ra
 	return -1;
 }
 
-static int pack_any(uint16_t id, const union any_msg *m, uint8_t d[8], uint8_t *dlc)
-{
-	switch (id) {
-	case MSG_DISC_SPEED_ID:
-		return msg_disc_speed_pack(&m->ds, d, dlc);
-	case MSG_PAD_FORCE_ID:
-		return msg_pad_force_pack(&m->pf, d, dlc);
-	case MSG_SQUEAL_STATUS_ID:
-		return msg_squeal_status_pack(&m->st, d, dlc);
-	case MSG_SQUEAL_DETAIL_ID:
-		return msg_squeal_detail_pack(&m->dt, d, dlc);
-	case MSG_SQUEAL_DETAIL2_ID:
-		return msg_squeal_detail2_pack(&m->d2, d, dlc);
-	case MSG_SQUEAL_DIAG_ID:
-		return msg_squeal_diag_pack(&m->dg, d, dlc);
-	default:
-		return SQ_EINVAL;
-	}
-}
 
 static int emit_frames(void)
 {
@@ -216,7 +190,7 @@ static int emit_frames(void)
 		const struct frame_case *fc = &cases[c];
 		const msg_desc_t *md = msg_desc_find(fc->id);
 		e2e_p01_config_t cfg;
-		union any_msg m;
+		any_msg_t m;
 		uint8_t d[8];
 		uint8_t dlc = 0;
 		int rc;
@@ -232,7 +206,7 @@ static int emit_frames(void)
 				return 1;
 			}
 		}
-		rc = pack_any(fc->id, &m, d, &dlc);
+		rc = any_msg_pack(fc->id, &m, d, &dlc);
 		if (rc != SQ_OK) {
 			fprintf(stderr, "case %zu: pack failed %d\n", c, rc);
 			return 1;

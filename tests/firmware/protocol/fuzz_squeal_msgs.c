@@ -28,6 +28,7 @@
 
 #include <stdbool.h>
 
+#include "any_msg.h"
 #include "e2e_p01.h"
 #include "sq_status.h"
 #include "squeal_msgs.h"
@@ -101,50 +102,6 @@ static e2e_p01_status_t ref_check(const e2e_p01_config_t *cfg, ref_rx_t *r,
 }
 
 /* ---- one table over the six messages ------------------------------------ */
-typedef union {
-	msg_disc_speed_t ds;
-	msg_pad_force_t pf;
-	msg_squeal_status_t st;
-	msg_squeal_detail_t dt;
-	msg_squeal_detail2_t d2;
-	msg_squeal_diag_t dg;
-} any_msg_t;
-
-static int unpack_any(uint16_t id, const uint8_t *d, uint8_t dlc, any_msg_t *m)
-{
-	switch (id) {
-	case MSG_DISC_SPEED_ID:
-		return msg_disc_speed_unpack(d, dlc, &m->ds);
-	case MSG_PAD_FORCE_ID:
-		return msg_pad_force_unpack(d, dlc, &m->pf);
-	case MSG_SQUEAL_STATUS_ID:
-		return msg_squeal_status_unpack(d, dlc, &m->st);
-	case MSG_SQUEAL_DETAIL_ID:
-		return msg_squeal_detail_unpack(d, dlc, &m->dt);
-	case MSG_SQUEAL_DETAIL2_ID:
-		return msg_squeal_detail2_unpack(d, dlc, &m->d2);
-	default:
-		return msg_squeal_diag_unpack(d, dlc, &m->dg);
-	}
-}
-
-static int pack_any(uint16_t id, const any_msg_t *m, uint8_t d[8], uint8_t *dlc)
-{
-	switch (id) {
-	case MSG_DISC_SPEED_ID:
-		return msg_disc_speed_pack(&m->ds, d, dlc);
-	case MSG_PAD_FORCE_ID:
-		return msg_pad_force_pack(&m->pf, d, dlc);
-	case MSG_SQUEAL_STATUS_ID:
-		return msg_squeal_status_pack(&m->st, d, dlc);
-	case MSG_SQUEAL_DETAIL_ID:
-		return msg_squeal_detail_pack(&m->dt, d, dlc);
-	case MSG_SQUEAL_DETAIL2_ID:
-		return msg_squeal_detail2_pack(&m->d2, d, dlc);
-	default:
-		return msg_squeal_diag_pack(&m->dg, d, dlc);
-	}
-}
 
 /* The descriptor table's opinion of a frame of the right DLC. */
 static bool frame_decodable(const msg_desc_t *desc, const uint8_t *d)
@@ -227,7 +184,7 @@ static void check_unpack_roundtrip(const msg_desc_t *desc, const uint8_t *d,
 
 	memset(&sentinel, 0x6B, sizeof(sentinel));
 	m = sentinel;
-	rc = unpack_any(desc->id, d, dlc, &m);
+	rc = any_msg_unpack(desc->id, d, dlc, &m);
 	FUZZ_REQUIRE((rc == SQ_OK) || (rc == SQ_EBADMSG));
 	if (dlc != desc->dlc) {
 		FUZZ_REQUIRE(rc == SQ_EBADMSG);
@@ -238,7 +195,7 @@ static void check_unpack_roundtrip(const msg_desc_t *desc, const uint8_t *d,
 		FUZZ_REQUIRE(memcmp(&m, &sentinel, sizeof(m)) == 0);
 		return;
 	}
-	prc = pack_any(desc->id, &m, y, &ydlc);
+	prc = any_msg_pack(desc->id, &m, y, &ydlc);
 	FUZZ_REQUIRE((prc == SQ_OK) || (prc == SQ_ERANGE));
 	FUZZ_REQUIRE((prc == SQ_OK) == frame_in_range(desc, full));
 	if (prc != SQ_OK) {
@@ -247,8 +204,8 @@ static void check_unpack_roundtrip(const msg_desc_t *desc, const uint8_t *d,
 	FUZZ_REQUIRE(ydlc == desc->dlc);
 	same_signals(desc, full, y);
 	memset(&m2, 0, sizeof(m2));
-	FUZZ_REQUIRE(unpack_any(desc->id, y, ydlc, &m2) == SQ_OK);
-	FUZZ_REQUIRE(pack_any(desc->id, &m2, z, &zdlc) == SQ_OK);
+	FUZZ_REQUIRE(any_msg_unpack(desc->id, y, ydlc, &m2) == SQ_OK);
+	FUZZ_REQUIRE(any_msg_pack(desc->id, &m2, z, &zdlc) == SQ_OK);
 	FUZZ_REQUIRE((zdlc == ydlc) && (memcmp(y, z, sizeof(y)) == 0));
 }
 

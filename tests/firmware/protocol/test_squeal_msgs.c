@@ -18,6 +18,7 @@
 
 #include <cmocka.h>
 
+#include "any_msg.h"
 #include "e2e_p01.h"
 #include "p01_frames.h"
 #include "sq_status.h"
@@ -462,34 +463,29 @@ static void test_pack_rejects_out_of_range_values(void **state)
 static void test_unpack_rejects_wrong_dlc_for_every_message(void **state)
 {
 	static const uint8_t zeros[8] = { 0 };
-	msg_disc_speed_t ds;
-	msg_pad_force_t pf;
-	msg_squeal_status_t st;
-	msg_squeal_detail_t dt;
-	msg_squeal_detail2_t d2;
-	msg_squeal_diag_t dg;
+	any_msg_t m;
 
 	(void)state;
 	for (uint8_t dlc = 0; dlc <= 8U; dlc++) {
 		int want4 = dlc == 4U ? SQ_OK : SQ_EBADMSG;
 		int want8 = dlc == 8U ? SQ_OK : SQ_EBADMSG;
 
-		assert_int_equal(msg_disc_speed_unpack(zeros, dlc, &ds), want4);
-		assert_int_equal(msg_pad_force_unpack(zeros, dlc, &pf), want4);
-		assert_int_equal(msg_squeal_status_unpack(zeros, dlc, &st), want8);
-		assert_int_equal(msg_squeal_detail_unpack(zeros, dlc, &dt), want8);
-		assert_int_equal(msg_squeal_detail2_unpack(zeros, dlc, &d2), want8);
-		assert_int_equal(msg_squeal_diag_unpack(zeros, dlc, &dg), want8);
+		assert_int_equal(msg_disc_speed_unpack(zeros, dlc, &m.ds), want4);
+		assert_int_equal(msg_pad_force_unpack(zeros, dlc, &m.pf), want4);
+		assert_int_equal(msg_squeal_status_unpack(zeros, dlc, &m.st), want8);
+		assert_int_equal(msg_squeal_detail_unpack(zeros, dlc, &m.dt), want8);
+		assert_int_equal(msg_squeal_detail2_unpack(zeros, dlc, &m.d2), want8);
+		assert_int_equal(msg_squeal_diag_unpack(zeros, dlc, &m.dg), want8);
 	}
-	assert_int_equal(msg_squeal_status_unpack(zeros, 15, &st), SQ_EBADMSG);
-	assert_int_equal(msg_squeal_status_unpack(NULL, 8, &st), SQ_EBADMSG);
+	assert_int_equal(msg_squeal_status_unpack(zeros, 15, &m.st), SQ_EBADMSG);
+	assert_int_equal(msg_squeal_status_unpack(NULL, 8, &m.st), SQ_EBADMSG);
 	expect_assert_failure(msg_squeal_status_unpack(zeros, 8, NULL));
 	{
 		/* diag page 5 does not exist */
 		const uint8_t bad_page[8] = { 0, 0x50, 0, 0, 0, 0, 0, 0 };
-		memset(&dg, 0x5A, sizeof(dg));
-		assert_int_equal(msg_squeal_diag_unpack(bad_page, 8, &dg), SQ_EBADMSG);
-		assert_int_equal(dg.page, 0x5A); /* untouched */
+		memset(&m.dg, 0x5A, sizeof(m.dg));
+		assert_int_equal(msg_squeal_diag_unpack(bad_page, 8, &m.dg), SQ_EBADMSG);
+		assert_int_equal(m.dg.page, 0x5A); /* untouched */
 	}
 }
 

@@ -29,16 +29,15 @@
 #include "bxcan.h"
 #include "bxcan_regs.h"
 #include "chip.h"
+#include "can_sim.h"
+#include "cortex_sim.h"
+#include "wire_sim.h"
 #include "sq_status.h"
-#include "stm32_platform_faults.h"
-#include "stm32_time.h"
 
 uint32_t bxcan_sim_rcc[64];
 uint32_t bxcan_sim_gpiob[16];
 
-#define WIRE_LEN 512U
 #define BANKS 28U
-#define IRQ_ROUNDS 32U
 
 typedef struct {
 	uint32_t rir, rdtr, rdlr, rdhr;
@@ -56,7 +55,6 @@ typedef struct {
 	bool dead;
 	bool blocked;
 	uint32_t aborts;
-	uint32_t dominant;
 	uint32_t rx_irq_runs;
 } ctl_t;
 
@@ -65,17 +63,7 @@ static struct {
 	uint32_t fmr, fm1r, fs1r, ffa1r, fa1r;
 	uint32_t fr1[BANKS], fr2[BANKS];
 } flt;
-static struct {
-	hal_can_frame_t q[WIRE_LEN];
-	uint32_t head;
-	uint32_t n;
-} wire[SIM_BUSES];
-static uint64_t now_us;
-static uint32_t primask;
-static bool nvic_en[128];
-static bool in_isr;
 static uint32_t seq_counter;
-static uint32_t faults;
 
 static const uint32_t irq_tx[SIM_BUSES] = { CHIP_IRQ_CAN1_TX, CHIP_IRQ_CAN2_TX };
 static const uint32_t irq_rx0[SIM_BUSES] = { CHIP_IRQ_CAN1_RX0, CHIP_IRQ_CAN2_RX0 };
@@ -84,8 +72,6 @@ static void (*const h_tx[SIM_BUSES])(void) = { CAN1_TX_IRQHandler, CAN2_TX_IRQHa
 static void (*const h_rx0[SIM_BUSES])(void) = { CAN1_RX0_IRQHandler, CAN2_RX0_IRQHandler };
 static void (*const h_sce[SIM_BUSES])(void) = { CAN1_SCE_IRQHandler, CAN2_SCE_IRQHandler };
 
-static void step(void);
-static void irqs(void);
 
 /* ---- clocks and state ----------------------------------------------------- */
 
@@ -130,21 +116,17 @@ void sim_reset(void)
 
 	memset(ctl, 0, sizeof(ctl));
 	memset(&flt, 0, sizeof(flt));
-	memset(wire, 0, sizeof(wire));
+	wire_sim_reset();
 	memset(bxcan_sim_rcc, 0, sizeof(bxcan_sim_rcc));
 	memset(bxcan_sim_gpiob, 0, sizeof(bxcan_sim_gpiob));
-	memset(nvic_en, 0, sizeof(nvic_en));
 	for (c = 0; c < SIM_BUSES; c++) {
 		ctl[c].mcr = 0x00010002U;
 		ctl[c].msr = 0x00000C02U;
 		ctl[c].esr = 0U;
 	}
 	flt.fmr = 0x2A1C0E01U;
-	now_us = 1000U;
-	primask = 0U;
-	in_isr = false;
+	cortex_sim_reset();
 	seq_counter = 0U;
-	faults = 0U;
 	bxcan_sim_driver_reset();
 }
 
@@ -456,14 +438,6 @@ void bxcan_sim_write(uintptr_t base, uint32_t off, uint32_t v)
 
 /* ---- the wire and time ---------------------------------------------------- */
 
-static void wire_push(uint32_t bus, const hal_can_frame_t *f)
-{
-	if (wire[bus].n < WIRE_LEN) {
-		wire[bus].q[(wire[bus].head + wire[bus].n) % WIRE_LEN] = *f;
-		wire[bus].n++;
-	}
-}
-
 static void transmit(uint32_t c)
 {
 	ctl_t *k = &ctl[c];
@@ -493,7 +467,7 @@ static void transmit(uint32_t c)
 				rx_deliver(c, &m);
 			}
 			if (!silm) {
-				wire_push(c, &f);
+				wire_sim_push(c, &f);
 			}
 		}
 		k->pending[best] = false;
@@ -501,7 +475,7 @@ static void transmit(uint32_t c)
 	}
 }
 
-static void step(void)
+void cortex_sim_step(void)
 {
 	uint32_t c;
 
@@ -512,97 +486,35 @@ static void step(void)
 	}
 }
 
-static void irqs(void)
+bool cortex_sim_irq_round(void)
 {
-	uint32_t round;
+	bool any = false;
+	uint32_t c;
 
-	if (primask != 0U || in_isr) {
-		return;
-	}
-	in_isr = true;
-	for (round = 0; round < IRQ_ROUNDS; round++) {
-		bool any = false;
-		uint32_t c;
+	for (c = 0; c < SIM_BUSES; c++) {
+		ctl_t *k = &ctl[c];
 
-		for (c = 0; c < SIM_BUSES; c++) {
-			ctl_t *k = &ctl[c];
-
-			if (!clocked(c)) {
-				continue;
-			}
-			if (nvic_en[irq_rx0[c]] && (((k->ier & CAN_IER_FMPIE0) != 0U && k->fifo_n > 0U) ||
-						    ((k->ier & CAN_IER_FOVIE0) != 0U && k->fovr))) {
-				k->rx_irq_runs++;
-				h_rx0[c]();
-				any = true;
-			}
-			if (nvic_en[irq_tx[c]] && (k->ier & CAN_IER_TMEIE) != 0U &&
-			    (k->tsr_flags & (CAN_TSR_RQCP(0U) | CAN_TSR_RQCP(1U) | CAN_TSR_RQCP(2U))) != 0U) {
-				h_tx[c]();
-				any = true;
-			}
-			if (nvic_en[irq_sce[c]] && (k->ier & CAN_IER_ERRIE) != 0U &&
-			    (k->msr & CAN_MSR_ERRI) != 0U) {
-				h_sce[c]();
-				any = true;
-			}
+		if (!clocked(c)) {
+			continue;
 		}
-		step();
-		if (!any) {
-			break;
+		if (cortex_sim_irq_enabled(irq_rx0[c]) && (((k->ier & CAN_IER_FMPIE0) != 0U && k->fifo_n > 0U) ||
+					    ((k->ier & CAN_IER_FOVIE0) != 0U && k->fovr))) {
+			k->rx_irq_runs++;
+			h_rx0[c]();
+			any = true;
+		}
+		if (cortex_sim_irq_enabled(irq_tx[c]) && (k->ier & CAN_IER_TMEIE) != 0U &&
+		    (k->tsr_flags & (CAN_TSR_RQCP(0U) | CAN_TSR_RQCP(1U) | CAN_TSR_RQCP(2U))) != 0U) {
+			h_tx[c]();
+			any = true;
+		}
+		if (cortex_sim_irq_enabled(irq_sce[c]) && (k->ier & CAN_IER_ERRIE) != 0U &&
+		    (k->msr & CAN_MSR_ERRI) != 0U) {
+			h_sce[c]();
+			any = true;
 		}
 	}
-	in_isr = false;
-}
-
-void sim_advance_us(uint32_t us)
-{
-	now_us += us;
-	step();
-	irqs();
-}
-
-uint64_t sim_now_us(void)
-{
-	return now_us;
-}
-
-bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
-{
-	sim_msg_t m = msg_of(f);
-	bool ack = false;
-
-	if (bus >= SIM_BUSES) {
-		abort();
-	}
-	if (running(bus) && (ctl[bus].btr & CAN_BTR_SILM) == 0U) {
-		ctl[bus].dominant++; /* its ACK bit */
-		ack = true;
-	}
-	rx_deliver(bus, &m);
-	irqs();
-	return ack;
-}
-
-bool sim_wire_take(uint8_t bus, hal_can_frame_t *f)
-{
-	if (wire[bus].n == 0U) {
-		return false;
-	}
-	*f = wire[bus].q[wire[bus].head];
-	wire[bus].head = (wire[bus].head + 1U) % WIRE_LEN;
-	wire[bus].n--;
-	return true;
-}
-
-uint32_t sim_wire_count(uint8_t bus)
-{
-	return wire[bus].n;
-}
-
-uint32_t sim_dominant_count(uint8_t bus)
-{
-	return ctl[bus].dominant;
+	return any;
 }
 
 void sim_error_frame(uint8_t bus)
@@ -616,12 +528,29 @@ void sim_error_frame(uint8_t bus)
 	k->esr += 1U << CAN_ESR_REC_SHIFT;
 	k->msr |= CAN_MSR_ERRI;
 	if ((k->btr & CAN_BTR_SILM) == 0U) {
-		k->dominant++; /* its error flag */
+		wire_sim_dominant(bus); /* its error flag */
 	}
-	irqs();
+	cortex_sim_irqs();
 }
 
-void sim_bus_off(uint8_t bus, bool on)
+bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
+{
+	sim_msg_t m = msg_of(f);
+	bool ack = false;
+
+	if (bus >= SIM_BUSES) {
+		abort();
+	}
+	if (running(bus) && (ctl[bus].btr & CAN_BTR_SILM) == 0U) {
+		wire_sim_dominant(bus); /* its ACK bit */
+		ack = true;
+	}
+	rx_deliver(bus, &m);
+	cortex_sim_irqs();
+	return ack;
+}
+
+bool sim_bus_off(uint8_t bus, bool on)
 {
 	ctl_t *k = &ctl[bus];
 
@@ -632,15 +561,14 @@ void sim_bus_off(uint8_t bus, bool on)
 			    (0xFFU << CAN_ESR_REC_SHIFT));
 	}
 	k->msr |= CAN_MSR_ERRI;
-	step();
-	irqs();
+	cortex_sim_run();
+	return (k->esr & CAN_ESR_BOFF) == 0U;
 }
 
 void sim_block_tx(uint8_t bus, bool blocked)
 {
 	ctl[bus].blocked = blocked;
-	step();
-	irqs();
+	cortex_sim_run();
 }
 
 void sim_controller_dead(uint8_t bus, bool dead)
@@ -657,83 +585,11 @@ uint32_t sim_btr(uint8_t bus) { return ctl[bus].btr; }
 uint32_t sim_mcr(uint8_t bus) { return ctl[bus].mcr; }
 uint32_t sim_fmr(void) { return flt.fmr; }
 uint32_t sim_aborts(uint8_t bus) { return ctl[bus].aborts; }
-uint32_t sim_fault_bits(void) { return faults; }
 uint32_t sim_rx_irq_runs(uint8_t bus) { return ctl[bus].rx_irq_runs; }
 
-/* ---- what the driver needs from the board and the core -------------------- */
-
-uint64_t hal_time_us(void)
-{
-	return now_us;
-}
-
-void stm32_fault_raise(uint32_t hal_fault_bits)
-{
-	faults |= hal_fault_bits;
-}
+/* ---- what the driver needs from the board (the core: cortex_sim.c) ------ */
 
 uint32_t chip_apb1_hz(void)
 {
 	return CHIP_APB1_HZ;
-}
-
-/* Every poll is one microsecond of simulated time. */
-void stm32_timeout_start(stm32_timeout_t *t, uint32_t timeout_us)
-{
-	t->last_val = 0U;
-	t->elapsed_ticks = 0U;
-	t->limit_ticks = timeout_us;
-	t->polls = 0U;
-}
-
-bool stm32_timeout_expired(stm32_timeout_t *t)
-{
-	sim_advance_us(1U);
-	t->polls++;
-	return t->polls >= t->limit_ticks;
-}
-
-void cm_dsb(void) {}
-void cm_isb(void) {}
-void cm_dmb(void) {}
-void cm_wfi(void) {}
-
-void cm_irq_disable(void)
-{
-	primask = 1U;
-}
-
-void cm_irq_enable(void)
-{
-	primask = 0U;
-	step();
-	irqs();
-}
-
-uint32_t cm_irq_save(void)
-{
-	uint32_t old = primask;
-
-	primask = 1U;
-	return old;
-}
-
-void cm_irq_restore(uint32_t pm)
-{
-	primask = pm;
-	if (pm == 0U) {
-		step();
-		irqs();
-	}
-}
-
-void cm_nvic_enable(uint32_t irq, uint8_t prio)
-{
-	(void)prio;
-	nvic_en[irq] = true;
-}
-
-void cm_nvic_disable(uint32_t irq)
-{
-	nvic_en[irq] = false;
 }

@@ -37,7 +37,7 @@ uint32_t sim_wire_count(uint8_t bus);
 uint32_t sim_dominant_count(uint8_t bus);
 
 void sim_error_frame(uint8_t bus);
-void sim_bus_off(uint8_t bus, bool on);
+bool sim_bus_off(uint8_t bus, bool on); /* true: not bus-off */
 void sim_block_tx(uint8_t bus, bool blocked);
 /* The controller ignores initialisation requests (no clock, QEMU). */
 void sim_controller_dead(uint8_t bus, bool dead);

@@ -35,14 +35,13 @@
 #include <string.h>
 
 #include "chip.h"
+#include "can_sim.h"
+#include "cortex_sim.h"
+#include "wire_sim.h"
 #include "fdcan.h"
 #include "fdcan_regs.h"
 #include "sq_status.h"
-#include "stm32_platform_faults.h"
-#include "stm32_time.h"
 
-#define WIRE_LEN 512U
-#define IRQ_ROUNDS 32U
 #define RAM_WORDS (SRAMCAN_SIZE / 4U)
 #define ACT_IDLE (1UL << FDCAN_PSR_ACT_SHIFT)
 #define PROTECTED_CCCR 0x0000F3E4U /* ASM, MON, DAR, TEST, FDOE, BRSE, PXHD, EFBI, TXP, NISO */
@@ -53,29 +52,17 @@ typedef struct {
 	uint32_t rx_get, rx_fill, rx_lost_flag;
 	uint32_t tx_get, tx_fill;
 	bool dead, blocked;
-	uint32_t dominant, irq_runs, rx_lost, ignored, txbar_misuse;
+	uint32_t irq_runs, rx_lost, ignored, txbar_misuse;
 } ctl_t;
 
 static ctl_t ctl[SIM_BUSES];
 static uint32_t ram[SIM_BUSES][RAM_WORDS];
-static struct {
-	hal_can_frame_t q[WIRE_LEN];
-	uint32_t head;
-	uint32_t n;
-} wire[SIM_BUSES];
 static bool connected;
-static uint64_t now_us;
-static uint32_t primask;
-static bool nvic_en[128];
-static bool in_isr;
-static uint32_t faults;
 static uint32_t kernel_clock_hz;
 
 static const uint32_t irq_of[SIM_BUSES] = { CHIP_IRQ_FDCAN1_IT0, CHIP_IRQ_FDCAN2_IT0 };
 static void (*const handler_of[SIM_BUSES])(void) = { FDCAN1_IT0_IRQHandler, FDCAN2_IT0_IRQHandler };
 
-static void step(void);
-static void irqs(void);
 
 /* ---- state ------------------------------------------------------------------ */
 
@@ -118,13 +105,9 @@ void sim_reset(void)
 	}
 	/* message RAM is not initialised by a reset: garbage */
 	memset(ram, 0xA5, sizeof(ram));
-	memset(wire, 0, sizeof(wire));
-	memset(nvic_en, 0, sizeof(nvic_en));
+	wire_sim_reset();
 	connected = false;
-	now_us = 1000U;
-	primask = 0U;
-	in_isr = false;
-	faults = 0U;
+	cortex_sim_reset();
 	kernel_clock_hz = 170000000U;
 	fdcan_sim_driver_reset();
 }
@@ -334,7 +317,7 @@ static void rx_deliver(uint32_t c, const hal_can_frame_t *f)
 			 (((f->flags & HAL_CAN_FLAG_ESI) != 0U) ? FDCAN_E0_ESI : 0U);
 	*ram_at(c, at + 4U) = ((rtr ? f->dlc : code_of_len(f->dlc)) << 16) | (fd ? FDCAN_E1_FDF : 0U) |
 			      (((f->flags & HAL_CAN_FLAG_BRS) != 0U) ? FDCAN_E1_BRS : 0U) |
-			      ((uint32_t)(now_us & 0xFFFFU));
+			      ((uint32_t)(sim_now_us() & 0xFFFFU));
 	for (i = 0U; i < 16U; i++) {
 		*ram_at(c, at + 8U + 4U * i) = 0xDEADBEEFU; /* beyond the frame: garbage */
 	}
@@ -571,14 +554,6 @@ void fdcan_sim_write(uintptr_t addr, uint32_t v)
 
 /* ---- the wires and time ---------------------------------------------------------- */
 
-static void wire_push(uint32_t bus, const hal_can_frame_t *f)
-{
-	if (wire[bus].n < WIRE_LEN) {
-		wire[bus].q[(wire[bus].head + wire[bus].n) % WIRE_LEN] = *f;
-		wire[bus].n++;
-	}
-}
-
 /* Someone on c's wire ACKs a frame of c: the harness's node (unless
  * blocked), or, with the instances connected, the other one if it runs
  * and is not monitoring. */
@@ -612,10 +587,10 @@ static void transmit(uint32_t c)
 			if (!lbck && !acked(c)) {
 				return; /* no ACK: retransmitted later */
 			}
-			wire_push(c, &f);
+			wire_sim_push(c, &f);
 			if (connected) {
 				rx_deliver(1U - c, &f);
-				ctl[1U - c].dominant++; /* its ACK */
+				wire_sim_dominant(1U - c); /* its ACK */
 			}
 		}
 		k->tx_get = (k->tx_get + 1U) % SRAMCAN_TXB_NBR;
@@ -630,7 +605,7 @@ static void transmit(uint32_t c)
 	}
 }
 
-static void step(void)
+void cortex_sim_step(void)
 {
 	uint32_t c;
 
@@ -639,91 +614,47 @@ static void step(void)
 	}
 }
 
-static void irqs(void)
+bool cortex_sim_irq_round(void)
 {
-	uint32_t round;
+	bool any = false;
+	uint32_t c;
 
-	if (primask != 0U || in_isr) {
-		return;
-	}
-	in_isr = true;
-	for (round = 0U; round < IRQ_ROUNDS; round++) {
-		bool any = false;
-		uint32_t c;
+	for (c = 0U; c < SIM_BUSES; c++) {
+		ctl_t *k = &ctl[c];
 
-		for (c = 0U; c < SIM_BUSES; c++) {
-			ctl_t *k = &ctl[c];
-
-			if (k->ils != 0U) {
-				fprintf(stderr, "fdcan_sim: ILS 0x%x (the model has line 0 only)\n", (unsigned int)k->ils);
-				abort();
-			}
-			if (!k->dead && nvic_en[irq_of[c]] && ((k->ile & FDCAN_ILE_EINT0) != 0U) &&
-			    ((k->ir & k->ie) != 0U)) {
-				k->irq_runs++;
-				handler_of[c]();
-				any = true;
-			}
+		if (k->ils != 0U) {
+			fprintf(stderr, "fdcan_sim: ILS 0x%x (the model has line 0 only)\n", (unsigned int)k->ils);
+			abort();
 		}
-		step();
-		if (!any) {
-			break;
+		if (!k->dead && cortex_sim_irq_enabled(irq_of[c]) && ((k->ile & FDCAN_ILE_EINT0) != 0U) &&
+		    ((k->ir & k->ie) != 0U)) {
+			k->irq_runs++;
+			handler_of[c]();
+			any = true;
 		}
 	}
-	in_isr = false;
-}
-
-void sim_advance_us(uint32_t us)
-{
-	now_us += us;
-	step();
-	irqs();
-}
-
-uint64_t sim_now_us(void)
-{
-	return now_us;
+	return any;
 }
 
 bool sim_inject(uint8_t bus, const hal_can_frame_t *f)
 {
-	ctl_t *k = &ctl[bus];
+	ctl_t *k;
 	bool ack = false;
 
 	if (bus >= SIM_BUSES) {
 		abort();
 	}
+	k = &ctl[bus];
 	if (running(k) && !monitoring(k)) {
-		k->dominant++; /* its ACK bit */
+		wire_sim_dominant(bus); /* its ACK bit */
 		ack = true;
 	}
 	rx_deliver(bus, f);
 	if (connected) {
 		rx_deliver(1U - bus, f);
 	}
-	irqs();
+	cortex_sim_irqs();
 	return ack;
-}
-
-bool sim_wire_take(uint8_t bus, hal_can_frame_t *f)
-{
-	if (wire[bus].n == 0U) {
-		return false;
-	}
-	*f = wire[bus].q[wire[bus].head];
-	wire[bus].head = (wire[bus].head + 1U) % WIRE_LEN;
-	wire[bus].n--;
-	return true;
-}
-
-uint32_t sim_wire_count(uint8_t bus)
-{
-	return wire[bus].n;
-}
-
-uint32_t sim_dominant_count(uint8_t bus)
-{
-	return ctl[bus].dominant;
 }
 
 void sim_error_frame(uint8_t bus)
@@ -737,15 +668,15 @@ void sim_error_frame(uint8_t bus)
 	counters_set(k, k->ecr_tec, k->ecr_rec + 1U);
 	k->ir |= FDCAN_IR_PEA;
 	if (!monitoring(k)) {
-		k->dominant++; /* its error flag */
+		wire_sim_dominant(bus); /* its error flag */
 	}
-	irqs();
+	cortex_sim_irqs();
 }
 
 void sim_set_counters(uint8_t bus, uint32_t tec, uint32_t rec)
 {
 	counters_set(&ctl[bus], tec, rec);
-	irqs();
+	cortex_sim_irqs();
 }
 
 void sim_protocol_exception(uint8_t bus)
@@ -768,16 +699,14 @@ bool sim_bus_off(uint8_t bus, bool on)
 		counters_set(k, 0U, 0U);
 		k->ir |= FDCAN_IR_BO;
 	}
-	step();
-	irqs();
+	cortex_sim_run();
 	return !bus_off(k);
 }
 
 void sim_block_tx(uint8_t bus, bool blocked)
 {
 	ctl[bus].blocked = blocked;
-	step();
-	irqs();
+	cortex_sim_run();
 }
 
 void sim_controller_dead(uint8_t bus, bool dead)
@@ -787,22 +716,11 @@ void sim_controller_dead(uint8_t bus, bool dead)
 
 uint32_t sim_reg(uint8_t bus, uint32_t off) { return reg_value(bus, off); }
 uint32_t sim_ram(uint8_t bus, uint32_t byte_off) { return *ram_at(bus, byte_off); }
-uint32_t sim_fault_bits(void) { return faults; }
 uint32_t sim_irq_runs(uint8_t bus) { return ctl[bus].irq_runs; }
 uint32_t sim_rx_lost(uint8_t bus) { return ctl[bus].rx_lost; }
 uint32_t sim_protected_writes_ignored(uint8_t bus) { return ctl[bus].ignored; }
 
-/* ---- what the driver needs from the board and the core ------------------------------ */
-
-uint64_t hal_time_us(void)
-{
-	return now_us;
-}
-
-void stm32_fault_raise(uint32_t hal_fault_bits)
-{
-	faults |= hal_fault_bits;
-}
+/* ---- what the driver needs from the board (the core: cortex_sim.c) ------ */
 
 uint32_t chip_fdcan_kernel_hz(void)
 {
@@ -812,65 +730,4 @@ uint32_t chip_fdcan_kernel_hz(void)
 void chip_can_pins_init(uint8_t bus)
 {
 	(void)bus;
-}
-
-/* Every poll is one microsecond of simulated time. */
-void stm32_timeout_start(stm32_timeout_t *t, uint32_t timeout_us)
-{
-	t->last_val = 0U;
-	t->elapsed_ticks = 0U;
-	t->limit_ticks = timeout_us;
-	t->polls = 0U;
-}
-
-bool stm32_timeout_expired(stm32_timeout_t *t)
-{
-	sim_advance_us(1U);
-	t->polls++;
-	return t->polls >= t->limit_ticks;
-}
-
-void cm_dsb(void) {}
-void cm_isb(void) {}
-void cm_dmb(void) {}
-void cm_wfi(void) {}
-
-void cm_irq_disable(void)
-{
-	primask = 1U;
-}
-
-void cm_irq_enable(void)
-{
-	primask = 0U;
-	step();
-	irqs();
-}
-
-uint32_t cm_irq_save(void)
-{
-	const uint32_t old = primask;
-
-	primask = 1U;
-	return old;
-}
-
-void cm_irq_restore(uint32_t pm)
-{
-	primask = pm;
-	if (pm == 0U) {
-		step();
-		irqs();
-	}
-}
-
-void cm_nvic_enable(uint32_t irq, uint8_t prio)
-{
-	(void)prio;
-	nvic_en[irq] = true;
-}
-
-void cm_nvic_disable(uint32_t irq)
-{
-	nvic_en[irq] = false;
 }
