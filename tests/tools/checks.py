@@ -4,6 +4,7 @@ runner's "RESULT: N passed, M failed" at the end."""
 
 import os
 import sys
+import tempfile
 # tests/ of this checkout, and the folders its helper modules live in
 _TESTS = os.path.abspath(__file__).rsplit(os.sep + "tests" + os.sep, 1)[0] + os.sep + "tests"
 sys.path[:0] = [os.path.join(_TESTS, d) for d in ("support", os.path.join("support", "reference"), "host-sim", "tools")]
@@ -34,3 +35,13 @@ class Checks:
     def finish(self):
         print(f"RESULT: {self.passed} passed, {self.failed} failed")
         return 0 if self.failed == 0 else 1
+
+    @classmethod
+    def run(cls, *groups):
+        """A test file's main(): each group(c, tmp) in order, sharing one
+        counter and one temporary folder; the exit status of finish()."""
+        c = cls()
+        with tempfile.TemporaryDirectory() as tmp:
+            for group in groups:
+                group(c, tmp)
+        return c.finish()

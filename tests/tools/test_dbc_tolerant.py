@@ -14,7 +14,6 @@ prints "RESULT: N passed, M failed"
 import os
 import random
 import sys
-import tempfile
 import warnings
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -235,13 +234,7 @@ def attributes(c, tmp):
 
 
 def main():
-    c = Checks()
-    with tempfile.TemporaryDirectory() as tmp:
-        skipped_unwanted(c, tmp)
-        refusals(c, tmp)
-        globals_and_multiline(c, tmp)
-        attributes(c, tmp)
-    return c.finish()
+    return Checks.run(skipped_unwanted, refusals, globals_and_multiline, attributes)
 
 
 if __name__ == "__main__":

@@ -24,7 +24,6 @@ import math
 import os
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 
@@ -219,14 +218,7 @@ def example_calibration(c, tmp):
 
 
 def main():
-    c = Checks()
-    with tempfile.TemporaryDirectory() as tmp:
-        friction_refusals(c, tmp)
-        modal_refusals(c, tmp)
-        outputs(c, tmp)
-        examples_reproducible(c, tmp)
-        example_calibration(c, tmp)
-    return c.finish()
+    return Checks.run(friction_refusals, modal_refusals, outputs, examples_reproducible, example_calibration)
 
 
 if __name__ == "__main__":

@@ -22,7 +22,6 @@ import math
 import os
 import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from figures import PLOTS, Checks, draw, files_ok, legend_texts, line_at, lines_of_colour, plotlib, suptitle  # noqa: E402,E501
@@ -117,12 +116,7 @@ def refusal(c, tmp):
 
 
 def main():
-    c = Checks()
-    with tempfile.TemporaryDirectory() as tmp:
-        nominal(c, tmp)
-        damping_only(c, tmp)
-        refusal(c, tmp)
-    return c.finish()
+    return Checks.run(nominal, damping_only, refusal)
 
 
 if __name__ == "__main__":

@@ -19,7 +19,6 @@ import csv
 import math
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from figures import Checks, draw, files_ok, legend_texts, line_at, lines_of_colour, plotlib  # noqa: E402
@@ -136,12 +135,7 @@ def refusals(c, tmp):
 
 
 def main():
-    c = Checks()
-    with tempfile.TemporaryDirectory() as tmp:
-        drive(c, tmp)
-        decoded(c, tmp)
-        refusals(c, tmp)
-    return c.finish()
+    return Checks.run(drive, decoded, refusals)
 
 
 if __name__ == "__main__":
