@@ -35,6 +35,7 @@
 #include <string.h>
 
 #include "conformance_backend.h"
+#include "test_frame.h"
 #include "conformance_contract.h"
 
 #define SETTLE_US 20000U  /* time for frames to cross the wire           */
@@ -86,18 +87,7 @@ static bool set_up(uint8_t bus, const char *what)
 
 static hal_can_frame_t frame(uint32_t id, uint8_t flags, uint8_t dlc, uint8_t seed)
 {
-	hal_can_frame_t f;
-	uint8_t i;
-
-	memset(&f, 0, sizeof(f));
-	f.id = id;
-	f.flags = flags;
-	f.dlc = dlc;
-	/* a remote frame carries no data: its dlc is the length it asks for */
-	for (i = 0U; ((flags & HAL_CAN_FLAG_RTR) == 0U) && (i < dlc) && (i < HAL_CAN_MAX_DLEN); i++) {
-		f.data[i] = (uint8_t)(seed + 17U * i);
-	}
-	return f;
+	return test_frame(id, flags, dlc, seed, 17U);
 }
 
 static bool same_frame(const hal_can_frame_t *a, const hal_can_frame_t *b)

@@ -10,6 +10,7 @@
  */
 #include <setjmp.h>
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -133,27 +134,27 @@ static void test_masked_filters_std_and_ext(void **state)
 	};
 	hal_can_frame_t f;
 
+	/* id, extended, passes: the ext id 0x10F << 18 is the wrong kind whose
+	 * register image matches the standard filter's STID bits (it puts
+	 * 0x10F in STID[10:0]): only the IDE bit in the mask keeps it out */
+	static const struct {
+		uint32_t id;
+		bool ext;
+		bool passes;
+	} cases[] = {
+		{ 0x100U, false, true },        { 0x10FU, false, true },
+		{ 0x110U, false, false },       { 0x0FFU, false, false },
+		{ 0x10FU, true, false },        { 0x10FU << 18, true, false },
+		{ 0x18DAF1F1U, true, true },    { 0x18DAF200U, true, false },
+	};
+	size_t i;
+
 	(void)state;
 	assert_int_equal(hal_can_set_rx_filter(0U, f0, 2U), SQ_OK);
-	f = std_frame(0x100U, 0U);
-	assert_true(passes(0U, &f));
-	f = std_frame(0x10FU, 0U);
-	assert_true(passes(0U, &f));
-	f = std_frame(0x110U, 0U);
-	assert_false(passes(0U, &f));
-	f = std_frame(0x0FFU, 0U);
-	assert_false(passes(0U, &f));
-	f = ext_frame(0x10FU, 0U); /* wrong kind */
-	assert_false(passes(0U, &f));
-	/* wrong kind whose register image matches the standard filter's
-	 * STID bits (0x10F << 18 puts 0x10F in STID[10:0]): only the IDE bit
-	 * in the mask keeps it out */
-	f = ext_frame(0x10FU << 18, 0U);
-	assert_false(passes(0U, &f));
-	f = ext_frame(0x18DAF1F1U, 0U);
-	assert_true(passes(0U, &f));
-	f = ext_frame(0x18DAF200U, 0U);
-	assert_false(passes(0U, &f));
+	for (i = 0U; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		f = cases[i].ext ? ext_frame(cases[i].id, 0U) : std_frame(cases[i].id, 0U);
+		assert_int_equal(passes(0U, &f), cases[i].passes);
+	}
 	f = std_frame(0x100U, 0U);
 	f.flags = HAL_CAN_FLAG_RTR; /* remote frames pass like data frames */
 	f.dlc = 0U;

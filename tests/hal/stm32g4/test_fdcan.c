@@ -23,6 +23,7 @@
 #include "cortex_m.h"
 #include "fdcan.h"
 #include "fdcan_sim.h"
+#include "test_frame.h"
 #include "hal.h"
 #include "sq_status.h"
 
@@ -68,17 +69,7 @@ static int setup(void **state)
 
 static hal_can_frame_t frame(uint32_t id, uint8_t flags, uint8_t dlc, uint8_t seed)
 {
-	hal_can_frame_t f;
-	uint8_t i;
-
-	memset(&f, 0, sizeof(f));
-	f.id = id;
-	f.flags = flags;
-	f.dlc = dlc;
-	for (i = 0U; i < dlc; i++) {
-		f.data[i] = (uint8_t)(seed + 7U * i);
-	}
-	return f;
+	return test_frame(id, flags, dlc, seed, 7U);
 }
 
 static void start_both(void)
