@@ -75,13 +75,14 @@ static inline uint8_t hal_can_dlc_to_len(uint8_t dlc_code)
 static inline uint8_t hal_can_len_to_dlc(uint8_t len)
 {
 	uint8_t code;
+	uint8_t found = 0xFFU;
 
-	for (code = 0U; code < 16U; code++) {
+	for (code = 0U; (code < 16U) && (found == 0xFFU); code++) {
 		if (hal_can_dlc_to_len(code) == len) {
-			return code;
+			found = code;
 		}
 	}
-	return 0xFFU;
+	return found;
 }
 
 #define HAL_CAN_STD_ID_MAX 0x7FFUL

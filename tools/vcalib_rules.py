@@ -397,6 +397,23 @@ def frame_kind(name, size, vformat, given, is_fd):
     return fd, length, why
 
 
+def frame_kind_on_bus(name, fd, length, why, n_fd, n_classic):
+    """(fd, why) of a message once a log shows how the bus carries it.
+    Many DBC files mark every message CAN FD (VFrameFormat StandardCAN_FD
+    by default or per message) although a classic bus carries it: an 8-byte
+    "FD" message that the log shows only in classic frames is classic (and
+    the other way round). A message longer than 8 bytes is FD whatever the
+    log says; without frames of it in the log the DBC decides."""
+    if length > CLASSIC_MAX_DLEN or (n_fd > 0) == (n_classic > 0):
+        return fd, why
+    on_bus = n_fd > 0
+    if on_bus == fd:
+        return fd, why
+    return on_bus, "%s, but the log carries %s in %d %s frames and no %s frame: %s" % (
+        why, name, n_fd if on_bus else n_classic, "FD" if on_bus else "classic",
+        "classic" if on_bus else "FD", "FD" if on_bus else "classic")
+
+
 # ---------------------------------------------------------------- E2E Profile 5
 
 def _plain(s):

@@ -448,6 +448,10 @@ def build_input(dbc, ref, role, c, args, log_frames, manual, notes):
         raise Refusal("%s %s: %s" % (what, ref, e))
     cid_text = "%s.%s" % (frame.name, sig.name)
     fd, length, kind_why = dbc.kind(frame)
+    if log_frames is not None:
+        fd, kind_why = rules.frame_kind_on_bus(frame.name, fd, length, kind_why,
+                                               len(message_frames(frame, True, log_frames)),
+                                               len(message_frames(frame, False, log_frames)))
     last_bit = max(signal_bits(dbc_start_bit(sig), int(sig.size), sig.is_little_endian))
     if last_bit // 8 >= length:
         raise Refusal("%s %s: bit %d lies beyond the %d bytes of %s" % (what, ref, last_bit, length, frame.name))
@@ -458,6 +462,11 @@ def build_input(dbc, ref, role, c, args, log_frames, manual, notes):
     if fd:
         d["fd"] = True
         notes.append("%s: an FD frame of %d bytes (%s)" % (cid_text, length, kind_why))
+        if length <= rules.CLASSIC_MAX_DLEN and log_frames is None:
+            notes.append("%s: many DBC files mark every message CAN FD, also on a classic bus; "
+                         "give --log DRIVE.log and the frames on the bus decide" % cid_text)
+    elif "the log carries" in kind_why:
+        notes.append("%s: a classic frame of %d bytes (%s)" % (cid_text, length, kind_why))
     if re.match(r"^[!-~]{1,%d}$" % SIGNAL_MAX, cid_text):   # the key takes 1..63 printable non-blanks
         d["signal"] = cid_text
     for k, (sel, (lo, hi)) in enumerate(conds):

@@ -74,5 +74,25 @@ check("three 'not available' codes inside the range are refused",
 check("two 'not available' codes inside the range are taken",
       not refuses(na, {254: "init", 255: "error"}, 0, 255))
 
+# frame_kind_on_bus(): an 8-byte message the DBC calls FD but the log shows
+# only in classic frames is classic (a DBC that marks every message FD on a
+# classic bus); longer messages, mixed or absent frames: the DBC decides
+fd, why = R.frame_kind_on_bus("WheelSpeed", True, 8, "VFrameFormat StandardCAN_FD", 0, 3283)
+check("8-byte 'FD' message in 3283 classic frames only is classic",
+      fd is False and "3283 classic frames" in why)
+fd, why = R.frame_kind_on_bus("Esc", False, 8, "classic", 40, 0)
+check("8-byte classic message seen only in FD frames is FD", fd is True and "40 FD frames" in why)
+check("a 24-byte message stays FD whatever the log says",
+      R.frame_kind_on_bus("Whl", True, 24, "DLC 24", 0, 10) == (True, "DLC 24"))
+check("no frames of the message in the log: the DBC decides",
+      R.frame_kind_on_bus("Brk", True, 8, "VFrameFormat StandardCAN_FD", 0, 0) ==
+      (True, "VFrameFormat StandardCAN_FD"))
+check("frames of both kinds: the DBC decides",
+      R.frame_kind_on_bus("Brk", True, 8, "VFrameFormat StandardCAN_FD", 5, 5) ==
+      (True, "VFrameFormat StandardCAN_FD"))
+check("the log agrees with the DBC: unchanged",
+      R.frame_kind_on_bus("Brk", True, 8, "VFrameFormat StandardCAN_FD", 7, 0) ==
+      (True, "VFrameFormat StandardCAN_FD"))
+
 print("RESULT: %d passed, %d failed" % (sum(results), len(results) - sum(results)))
 sys.exit(0 if all(results) else 1)

@@ -12,6 +12,7 @@
 
 #include "cortex_m.h"
 #include "stm32_common_regs.h"
+#include "chip_api.h" /* what this chip provides to the shared HAL files */
 
 #define CHIP_NAME "STM32F103"
 #define CHIP_IRQ_COUNT 43U
@@ -111,6 +112,5 @@ void CAN2_SCE_IRQHandler(void);
 #define AFIO_MAPR_SWJ_CFG_MSK    (7U << 24) /* write-only, reads undefined */
 #define AFIO_MAPR_SWJ_CFG_FULL   (0U << 24) /* JTAG + SWD (reset state)    */
 
-#include "chip_api.h"
 
 #endif /* CHIP_H */

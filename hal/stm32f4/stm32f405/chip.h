@@ -10,6 +10,7 @@
 
 #include "cortex_m.h"
 #include "stm32_common_regs.h"
+#include "chip_api.h" /* what this chip provides to the shared HAL files */
 
 #define CHIP_NAME "STM32F405"
 #define CHIP_IRQ_COUNT 82U /* vector table: 16 system + 82 device entries */
@@ -181,7 +182,5 @@ void CAN2_SCE_IRQHandler(void);
 #define GPIO_SPEED_HIGH 2U
 #define GPIO_AF9_CAN1 9U
 
-/* Chip-specific parts of the HAL (clock.c, can_pins.c, flash.c). */
-#include "chip_api.h"
 
 #endif /* CHIP_H */

@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "cortex_m.h"
+#include "chip_api.h" /* what this chip provides to the shared HAL files */
 
 #define CHIP_NAME "STM32G474"
 /* RM0440 NVIC chapter, vector table: device interrupts 0..101 (FMAC last) */
@@ -236,9 +237,8 @@ void FDCAN2_IT0_IRQHandler(void);
 #define GPIO_SPEED_HIGH 2U
 #define GPIO_AF9_FDCAN 9U
 
-/* Chip parts of the HAL (chip_g4.c): chip_api.h's, plus the FDCAN kernel
- * clock the FDCAN driver times its bits with. */
-#include "chip_api.h"
+/* Beyond chip_api.h (chip_g4.c): the FDCAN kernel clock the FDCAN driver
+ * times its bits with. */
 uint32_t chip_fdcan_kernel_hz(void);
 
 #endif /* CHIP_H */
