@@ -197,8 +197,9 @@ static input_rx_reason_t plausibility(const input_rx_cfg_t *cfg, input_rx_state_
 static bool format_ok(const calib_input_t *in, const hal_can_frame_t *f)
 {
 	const bool fd = (f->flags & HAL_CAN_FLAG_FDF) != 0U;
+	const bool want_fd = in->fd != 0U;
 
-	if (fd != (in->fd != 0U)) {
+	if (fd != want_fd) {
 		return false;
 	}
 	if (f->dlc > HAL_CAN_MAX_DLEN) {
