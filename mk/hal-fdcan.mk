@@ -7,9 +7,9 @@
 #   build/test/tests/hal/stm32g4/conf_fdcan
 #   build/test/tests/hal/stm32g4/test_fdcan_timing
 FDCAN_SIM_SRCS := tests/hal/stm32g4/fdcan_sim.c tests/hal/cortex_sim.c tests/hal/wire_sim.c hal/stm32g4/fdcan.c hal/stm32g4/fdcan_timing.c \
-	hal/common/hal_can_common.c
+	hal/common/hal_can_common.c hal/stm32f4/can_queue.c
 FDCAN_SIM_DEPS := $(FDCAN_SIM_SRCS) tests/hal/stm32g4/fdcan_sim.h tests/hal/cortex_sim.h tests/hal/wire_sim.h tests/hal/can_sim.h tests/hal/stm32g4/sim/chip.h \
-	hal/stm32g4/fdcan.h hal/stm32g4/fdcan_regs.h hal/stm32f4/cortex_m.h hal/stm32f4/chip_api.h \
+	hal/stm32g4/fdcan.h hal/stm32g4/fdcan_regs.h hal/stm32f4/cortex_m.h hal/stm32f4/can_queue.h hal/stm32f4/chip_api.h \
 	hal/hal.h hal/hal_can_common.h
 # tests/hal/stm32g4/sim first: its chip.h puts the instances on the simulation
 FDCAN_SIM_CFLAGS := $(WARN) -O1 -g $(SAN) -DFDCAN_SIM $(FW_INC) -Itests/hal/stm32g4/sim -Itests/hal \

@@ -20,7 +20,15 @@ REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest systick
 $(foreach m,$(filter-out selftest clock,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
 $(eval $(call regsim_f4_test,selftest,tests/support/test_contract.c))
 # the clock rates it sets live in the F4/F103 common part
-$(eval $(call regsim_f4_test,clock,hal/stm32f4/chip_common.c))
+$(eval $(call regsim_f4_test,clock,hal/stm32f4/chip_common.c hal/stm32f4/hse_meter.c))
+
+# the HSE meter alone on a timer in an array (the test's crystal answers
+# the capture waits)
+build/test/tests/hal/stm32f4/test_hse_meter: tests/hal/stm32f4/test_hse_meter.c hal/stm32f4/hse_meter.c \
+		hal/stm32f4/stm32_hse_meter.h hal/stm32f4/cortex_m.h
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -o $@ tests/hal/stm32f4/test_hse_meter.c hal/stm32f4/hse_meter.c -lcmocka
+TEST_PROGS += build/test/tests/hal/stm32f4/test_hse_meter
 
 # board.c's main() built as board_main(): the test has its own
 build/test/regsim/hal/stm32f4/board.o: hal/stm32f4/board.c $(REGSIM_F4_DEPS)
@@ -55,10 +63,10 @@ TEST_PROGS += build/test/tests/hal/stm32f4/test_flash
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
 # answer SQ_ENODEV without touching one)
 build/test/tests/hal/stm32f103/test_chip_f1: tests/hal/stm32f103/test_chip_f1.c hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/chip_common.c \
-		hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c \
+		hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c hal/stm32f4/can_queue.c \
 		tests/support/regsim/f103/chip.h hal/stm32f103/stm32f103xb/chip.h
 	@mkdir -p $(@D)
 	$(CC) $(REGSIM_CFLAGS) -DBXCAN_SIM -Itests/support/regsim/f103 -o $@ tests/hal/stm32f103/test_chip_f1.c \
 		hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/chip_common.c hal/stm32f4/bxcan.c \
-		hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c -lcmocka
+		hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c hal/stm32f4/can_queue.c -lcmocka
 TEST_PROGS += build/test/tests/hal/stm32f103/test_chip_f1

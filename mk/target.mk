@@ -31,7 +31,7 @@ HAL_INC_stm32f4 := -Ihal/stm32f4/stm32f405 -Ihal/stm32f4
 HAL_INC_stm32f103 := -Ihal/stm32f103/stm32f103xb -Ihal/stm32f4
 HAL_INC_stm32g474 := -Ihal/stm32g4/stm32g474 -Ihal/stm32g4 -Ihal/stm32f4
 HAL_GENERIC := startup.c systick.c iwdg.c calib_flash.c board.c selftest.c \
-	platform_faults.c libc_min.c
+	platform_faults.c libc_min.c can_queue.c
 HAL_BXCAN := bxcan.c bxcan_timing.c
 # -DHAL_CAN_CLASSIC_ONLY for the bxCAN images only: bxCAN is a classic
 # controller, so its frames hold 8 data bytes (hal.h's HAL_CAN_MAX_DLEN) and
@@ -44,11 +44,12 @@ CANFLAGS_stm32g474 :=
 # the rules every backend shares (hal/common/: frame and filter checks, the
 # bus-state change)
 HAL_COMMON := $(sort $(wildcard hal/common/*.c))
-# chip_common.c: the F4 and F103 clock rates and flash unlock they share
-HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN) chip_common.c clock.c can_pins.c flash.c) $(HAL_COMMON)
+# chip_common.c: the clock rates and flash unlock every chip shares;
+# hse_meter.c: the crystal against the HSI (F4, G4)
+HAL_SRCS_stm32f4 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN) chip_common.c clock.c hse_meter.c can_pins.c flash.c) $(HAL_COMMON)
 HAL_SRCS_stm32f103 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) $(HAL_BXCAN) chip_common.c) $(sort $(wildcard hal/stm32f103/*.c)) $(HAL_COMMON)
 # the G4: the generic files, its chip part and FDCAN driver (hal/stm32g4/)
-HAL_SRCS_stm32g474 := $(addprefix hal/stm32f4/,$(HAL_GENERIC)) $(sort $(wildcard hal/stm32g4/*.c)) $(HAL_COMMON)
+HAL_SRCS_stm32g474 := $(addprefix hal/stm32f4/,$(HAL_GENERIC) chip_common.c hse_meter.c) $(sort $(wildcard hal/stm32g4/*.c)) $(HAL_COMMON)
 # Test images only (-DSQ_TARGET_TEST): semihosting, the drivers' event sink
 # and the test run around the firmware; never in an ECU image.
 HAL_TEST_SRCS := $(addprefix hal/stm32f4/,semihost.c test_events.c test_run.c)
@@ -77,7 +78,7 @@ build/$(1)/fw/%.o: %.c
 .SECONDARY: $$($(1)_OBJS)
 build/$(1)/%.elf: $$($(1)_OBJS) $(6)
 	@mkdir -p $$(@D)
-	$$(ARM_CC) $$(CPU_$(2)) $$(ARM_LDFLAGS) -T $(6) -Wl,-Map=$$(@:.elf=.map) \
+	$$(ARM_CC) $$(CPU_$(2)) $$(ARM_LDFLAGS) $$(LDX_$(1)) -T $(6) -Wl,-Map=$$(@:.elf=.map) \
 		$$($(1)_OBJS) -lgcc -o $$@
 build/$(1)/%.bin: build/$(1)/%.elf
 	$$(ARM_OBJCOPY) -O binary --gap-fill 0xff $$< $$@
@@ -138,6 +139,15 @@ build/tv/model_vectors_%.c: tests/support/golden/model_vectors.csv tests/system/
 
 $(eval $(call arm_config,tv-m4f,stm32f4,float,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS) $(TV_SRCS) build/tv/model_vectors_float.c,$(LDS_stm32f4)))
 $(eval $(call arm_config,tv-m3,stm32f2,fixed,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS) $(TV_SRCS) build/tv/model_vectors_fixed.c,$(LDS_stm32f4)))
+# ... and the same vectors inside the STM32G474 image (its HAL, its link),
+# both numeric builds on the Cortex-M4F (netduinoplus2: the G4's flash and
+# SRAM addresses; its RCC and FDCAN are absent there and read 0)
+# (the vectors' table is larger than the G4's flash bank 1; these images
+# never write calibration, linker/stm32g474xe.ld)
+LDX_tv-g4 := -Wl,--defsym,__image_spans_banks=1
+LDX_tv-g4-fixed := $(LDX_tv-g4)
+$(eval $(call arm_config,tv-g4,stm32g474,float,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32g474) $(HAL_TEST_SRCS) $(TV_SRCS) build/tv/model_vectors_float.c,$(LDS_stm32g474)))
+$(eval $(call arm_config,tv-g4-fixed,stm32g474,fixed,-DSQ_TARGET_TEST,$(FW_LIB_SRCS) $(HAL_SRCS_stm32g474) $(HAL_TEST_SRCS) $(TV_SRCS) build/tv/model_vectors_fixed.c,$(LDS_stm32g474)))
 
 build/host/tv-digest: build/host/app/tests/system/target/tv_run.o build/host/app/tests/system/target/tv_host.o \
 		build/host/app/build/tv/model_vectors_float.o build/host/libfirmware.a
@@ -156,7 +166,8 @@ build/test/tests/hal/stm32f4/test_bxcan_timing: tests/hal/stm32f4/test_bxcan_tim
 # Two-slot calibration storage over a simulated NOR flash (power cut at every
 # byte); the slot geometry comes from the link, as on the target. No PIE:
 # the slot size is an absolute linker symbol.
-build/test/tests/hal/stm32f4/test_calib_flash: tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h
+build/test/tests/hal/stm32f4/test_calib_flash: tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c hal/stm32f4/stm32_board.h \
+		tests/support/regsim/calib_pattern.h
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -O1 -g $(SAN) -fno-pie -no-pie $(FW_INC) -Ihal/stm32f4/stm32f405 -Ihal/stm32f4 -Itests/support -o $@ \
 		tests/hal/stm32f4/test_calib_flash.c hal/stm32f4/calib_flash.c -lcmocka \
@@ -165,6 +176,7 @@ TEST_PROGS += build/test/tests/hal/stm32f4/test_calib_flash
 
 # Target-in-the-loop tests: the scripts run QEMU on images make builds first.
 tests/system/target/run-golden.sh: build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
+	build/tv-g4/model-vectors.elf build/tv-g4-fixed/model-vectors.elf \
 	build/host/tv-digest build/host-fixed/tv-digest
 tests/system/target/run-ecu-boot.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf
 tests/system/target/check-images.sh: build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
@@ -182,6 +194,12 @@ tests/system/target/bench-target.sh: build/stm32f4/squeal-monitor.elf build/stm3
 	build/tv-m4f/model-vectors.elf build/tv-m3/model-vectors.elf \
 	build/bench-m4f/bench-step.elf build/bench-m3/bench-step.elf
 BENCH_PROGS += tests/system/target/bench-target.sh
+# ... and on the G4 (float, its HAL): the same steps plus four corners on
+# inputs in 64-byte FD frames with E2E P05 (BENCHFD*); its ECU image's
+# flash, RAM (FD frame queues) and stack
+$(eval $(call arm_config,bench-g4,stm32g474,float,-DSQ_TARGET_TEST,$(BENCH_STEP_SRCS) $(HAL_SRCS_stm32g474) $(HAL_TEST_SRCS),$(LDS_stm32g474)))
+tests/system/target/bench-target.sh: build/stm32g474/squeal-monitor.elf build/bench-g4/bench-step.elf \
+	build/tv-g4/model-vectors.elf
 # ... and one that divides by zero once it runs, to test the fault path
 $(eval $(call arm_config,stm32f4-faulttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 # ... one whose stack overflows on purpose (issue 14: fault handler on a broken stack)

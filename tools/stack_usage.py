@@ -195,9 +195,12 @@ def main():
         results[h] = d
         print("  %-24s %5d bytes  %s" % (h, d, " > ".join(p)))
     main_depth = results.get("Reset_Handler", 0)
-    can_isr = max([v for k, v in results.items() if k.startswith("CAN")] or [0])
+    # bxCAN's CAN1_TX_IRQHandler ..., FDCAN's FDCAN1_IT0_IRQHandler ...
+    can_isr = max([v for k, v in results.items() if k.startswith(("CAN", "FDCAN"))] or [0])
     systick = results.get("SysTick_Handler", 0)
-    fault = max(results.get("Fault_Handler", 0), results.get("Default_Handler", 0))
+    # the G4's NMI_Handler runs its ECC check, then the fault handler
+    fault = max(results.get("Fault_Handler", 0), results.get("Default_Handler", 0),
+                results.get("NMI_Handler", 0))
     total = main_depth + 3 * exc_frame + can_isr + systick + fault + exc_frame
     print("  nesting: main %d + CAN ISR %d + SysTick %d + fault %d + 4 exception frames = %d bytes"
           % (main_depth, can_isr, systick, fault, total))

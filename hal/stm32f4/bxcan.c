@@ -37,6 +37,7 @@
 #include "bxcan.h"
 #include "bxcan_regs.h"
 #include "can_ctrl.h"
+#include "can_queue.h"
 #include "chip.h"
 #include "hal.h"
 #include "hal_can_common.h"
@@ -44,30 +45,19 @@
 #include "stm32_test.h"
 #include "stm32_time.h"
 
-#define RX_RING_LEN 32U  /* power of two; 32 frames = 3 ms of a full bus */
-#define TX_QUEUE_LEN 8U   /* + 3 mailboxes; each corner queues at most 4 frames a ms */
 #define INAK_TIMEOUT_US 10000U  /* enter init: end of the current frame  */
 #define JOIN_TIMEOUT_US 20000U  /* leave init: 11 recessive bits         */
 #define LOOPBACK_TIMEOUT_US 5000U /* one frame at 500 kbit/s: 0.3 ms    */
 #define BANKS_PER_BUS (CHIP_CAN_FILTER_BANKS / CHIP_CAN_BUSES)
 #define FILTER_MASTER CAN1_BASE
 
-_Static_assert((RX_RING_LEN & (RX_RING_LEN - 1U)) == 0U, "ring length must be a power of two");
 _Static_assert(HAL_CAN_MAX_FILTERS <= BANKS_PER_BUS, "more filters than one bus has banks");
 _Static_assert(CHIP_CAN_BUSES >= 1U && CHIP_CAN_BUSES <= HAL_CAN_BUSES, "bus count");
 
 typedef struct {
 	bool started;                 /* controller configured             */
 	uint32_t bitrate_bps;         /* rate of the last start            */
-	/* RX ring: rx_head written only by the ISR, rx_tail only by
-	 * hal_can_receive(); free-running indices, count = head - tail. */
-	volatile uint32_t rx_head;
-	volatile uint32_t rx_tail;
-	hal_can_frame_t rx_ring[RX_RING_LEN];
-	/* TX queue: touched with interrupts masked only. */
-	hal_can_frame_t tx_queue[TX_QUEUE_LEN];
-	uint32_t tx_first;
-	uint32_t tx_count;
+	can_queue_t q;                /* RX ring and TX queue (can_queue.h) */
 	volatile uint32_t rx_overruns;
 	volatile uint32_t tx_dropped;
 } bus_state_t;
@@ -196,7 +186,7 @@ static void tx_pump(uint8_t bus)
 	uintptr_t base = bus_hw[bus].base;
 	uint32_t i;
 
-	for (i = 0; i < 3U && st->tx_count > 0U; i++) {
+	for (i = 0; i < 3U && can_queue_tx_peek(&st->q) != NULL; i++) {
 		uint32_t tsr = can_rd(base, CAN_TSR);
 		uint32_t mb;
 
@@ -207,9 +197,8 @@ static void tx_pump(uint8_t bus)
 		if (mb > 2U || (tsr & CAN_TSR_TME(mb)) == 0U) {
 			return;
 		}
-		mailbox_write(base, mb, &st->tx_queue[st->tx_first]);
-		st->tx_first = (st->tx_first + 1U) % TX_QUEUE_LEN;
-		st->tx_count--;
+		mailbox_write(base, mb, can_queue_tx_peek(&st->q));
+		can_queue_tx_pop(&st->q);
 	}
 }
 
@@ -349,10 +338,7 @@ static void configure(uint8_t bus, uint32_t btr, uint32_t ier)
 	can_wr(base, CAN_MCR, (can_rd(base, CAN_MCR) & CAN_MCR_DBF) | CAN_MCR_INRQ | CAN_MCR_ABOM | CAN_MCR_TXFP);
 	can_wr(base, CAN_BTR, btr);
 	filter_banks_write(bus, NULL, 1U);
-	st->rx_head = 0U;
-	st->rx_tail = 0U;
-	st->tx_first = 0U;
-	st->tx_count = 0U;
+	can_queue_reset(&st->q);
 	can_wr(base, CAN_TSR, CAN_TSR_RQCP(0U) | CAN_TSR_RQCP(1U) | CAN_TSR_RQCP(2U));
 	can_wr(base, CAN_ESR, CAN_ESR_LEC_USER << CAN_ESR_LEC_SHIFT);
 	can_wr(base, CAN_IER, ier);
@@ -506,7 +492,7 @@ bool bxcan_rx_pending(void)
 	uint32_t bus;
 
 	for (bus = 0; bus < CHIP_CAN_BUSES; bus++) {
-		if (can_bus[bus].rx_head != can_bus[bus].rx_tail) {
+		if (can_queue_rx_pending(&can_bus[bus].q)) {
 			return true;
 		}
 	}
@@ -518,7 +504,7 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
 	bus_state_t *st = bxcan_bus_get(bus);
 	uint32_t primask;
-	uint32_t slot;
+	int queued;
 	/* a classic controller: every FD frame is refused */
 	const int rc = hal_can_send_admit(frame, (st != NULL) ? &can_track[bus] : NULL, false);
 
@@ -532,36 +518,23 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 		return SQ_ENETUNREACH;
 	}
 	primask = cm_irq_save();
-	if (st->tx_count >= TX_QUEUE_LEN) {
-		cm_irq_restore(primask);
-		return SQ_ENOBUFS;
+	queued = can_queue_tx_push(&st->q, frame);
+	if (queued == SQ_OK) {
+		tx_pump(bus);
 	}
-	slot = (st->tx_first + st->tx_count) % TX_QUEUE_LEN;
-	st->tx_queue[slot] = *frame;
-	st->tx_count++;
-	tx_pump(bus);
 	cm_irq_restore(primask);
-	return SQ_OK;
+	return queued;
 }
 
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
 	bus_state_t *st = bxcan_bus_get(bus);
 	const int rc = hal_can_receive_admit(frame, st != NULL, (st != NULL) && st->started);
-	uint32_t tail;
 
 	if (rc != SQ_OK) {
 		return rc;
 	}
-	tail = st->rx_tail;
-	if (tail == st->rx_head) {
-		return SQ_EAGAIN;
-	}
-	cm_dmb(); /* read the slot only after seeing the head that covers it */
-	*frame = st->rx_ring[tail % RX_RING_LEN];
-	cm_dmb(); /* finish reading before handing the slot back */
-	st->rx_tail = tail + 1U;
-	return SQ_OK;
+	return can_queue_rx_pop(&st->q, frame);
 }
 
 int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
@@ -614,10 +587,9 @@ static void rx0_irq(uint8_t bus)
 	}
 	/* At most the three frames the FIFO holds. */
 	for (i = 0; i < 3U && (can_rd(base, CAN_RF0R) & CAN_RF0R_FMP0_MSK) != 0U; i++) {
-		uint32_t head = st->rx_head;
-		hal_can_frame_t *f = &st->rx_ring[head % RX_RING_LEN];
+		hal_can_frame_t *f = can_queue_rx_slot(&st->q);
 
-		if (head - st->rx_tail >= RX_RING_LEN) {
+		if (f == NULL) {
 			hal_can_frame_t lost;
 
 			st->rx_overruns++;
@@ -625,8 +597,7 @@ static void rx0_irq(uint8_t bus)
 		} else {
 			fifo0_read(base, f);
 			f->timestamp_us = now_us;
-			cm_dmb(); /* the frame is complete before the head moves */
-			st->rx_head = head + 1U;
+			can_queue_rx_commit(&st->q);
 		}
 	}
 }
@@ -664,11 +635,10 @@ static void tx_irq(uint8_t bus)
 #define LEC_ACK_ERROR 3U
 static void rx_push_error(bus_state_t *st, uint32_t esr, uint32_t lec)
 {
-	uint32_t head = st->rx_head;
-	hal_can_frame_t *f = &st->rx_ring[head % RX_RING_LEN];
+	hal_can_frame_t *f = can_queue_rx_slot(&st->q);
 	uint32_t i;
 
-	if (head - st->rx_tail >= RX_RING_LEN) {
+	if (f == NULL) {
 		st->rx_overruns++;
 		return;
 	}
@@ -685,8 +655,7 @@ static void rx_push_error(bus_state_t *st, uint32_t esr, uint32_t lec)
 	f->data[6] = (uint8_t)((esr >> CAN_ESR_TEC_SHIFT) & 0xFFU); /* as SocketCAN */
 	f->data[7] = (uint8_t)((esr >> CAN_ESR_REC_SHIFT) & 0xFFU);
 	f->timestamp_us = hal_time_us();
-	cm_dmb(); /* the frame is complete before the head moves */
-	st->rx_head = head + 1U;
+	can_queue_rx_commit(&st->q);
 }
 
 static void sce_irq(uint8_t bus)

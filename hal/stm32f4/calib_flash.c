@@ -10,6 +10,14 @@
  *
  * Slot layout: magic, seq, len, crc32(seq, len, payload), payload.
  *
+ * Every read of a slot goes through chip_flash_read(): on a chip with
+ * flash ECC (the G4: 64-bit double words) a power cut in the middle of a
+ * double word can leave an ECC double error there; its read raises the NMI,
+ * which the chip part clears and counts instead of resetting (no NMI reset
+ * loop), and the read reports SQ_EIO. That slot is corrupt, like a
+ * half-written one: ignored (stm32_calib_ecc_rejects() counts it), the
+ * other slot is used, and the next write erases it.
+ *
  * Erasing stalls the CPU (single flash bank; code runs from it) for up to
  * ~0.5 s on the F4, and the IWDG keeps counting: write calibration before
  * starting the watchdog or with a watchdog timeout above 1 s; a watchdog
@@ -19,11 +27,14 @@
 
 #include "chip.h"
 #include "hal.h"
+#include "sq_status.h"
+#include "stm32_calib.h"
 #include "stm32_iwdg.h"
 #include "stm32_platform_faults.h"
 
 #define CALIB_MAGIC 0x4C435153UL /* "SQCL" */
 #define CALIB_HDR_LEN 16U
+#define READ_CHUNK 32U /* bytes read from flash at a time */
 
 extern const uint8_t __calib_start[];
 extern const uint8_t __calib_slot_size[];
@@ -54,6 +65,24 @@ static uint32_t slot_addr(uint32_t slot)
 	return (uint32_t)(uintptr_t)__calib_start + slot * slot_size();
 }
 
+/* Slot reads that met an ECC double error (a corrupt slot), since start */
+static uint32_t ecc_rejects;
+
+uint32_t stm32_calib_ecc_rejects(void)
+{
+	return ecc_rejects;
+}
+
+/* n bytes at off in slot; false (counted) on an ECC double error */
+static bool slot_read(uint32_t slot, uint32_t off, uint8_t *dst, uint32_t n)
+{
+	if (chip_flash_read(slot_addr(slot) + off, dst, n) != SQ_OK) {
+		ecc_rejects++;
+		return false;
+	}
+	return true;
+}
+
 static uint32_t crc32_update(uint32_t crc, const uint8_t *p, uint32_t n)
 {
 	uint32_t i;
@@ -68,40 +97,59 @@ static uint32_t crc32_update(uint32_t crc, const uint8_t *p, uint32_t n)
 	return crc;
 }
 
-static uint32_t block_crc(uint32_t seq, uint32_t len, const uint8_t *payload)
+/* The CRC's running value over seq and len (little-endian), before the
+ * payload. */
+static uint32_t crc_of_meta(uint32_t seq, uint32_t len)
 {
 	uint8_t meta[8];
-	uint32_t crc = 0xFFFFFFFFUL;
 	uint32_t i;
 
 	for (i = 0; i < 4U; i++) {
 		meta[i] = (uint8_t)((seq >> (8U * i)) & 0xFFU);
 		meta[4U + i] = (uint8_t)((len >> (8U * i)) & 0xFFU);
 	}
-	crc = crc32_update(crc, meta, sizeof(meta));
-	crc = crc32_update(crc, payload, len);
-	return ~crc;
+	return crc32_update(0xFFFFFFFFUL, meta, sizeof(meta));
 }
 
-static void read_hdr(uint32_t slot, calib_hdr_t *h)
+static uint32_t le32(const uint8_t *b)
 {
-	const volatile uint32_t *w = (const volatile uint32_t *)(uintptr_t)slot_addr(slot);
+	return (uint32_t)b[0] | ((uint32_t)b[1] << 8) | ((uint32_t)b[2] << 16) | ((uint32_t)b[3] << 24);
+}
 
-	h->magic = w[0];
-	h->seq = w[1];
-	h->len = w[2];
-	h->crc = w[3];
+static bool read_hdr(uint32_t slot, calib_hdr_t *h)
+{
+	uint8_t b[CALIB_HDR_LEN];
+
+	if (!slot_read(slot, 0U, b, CALIB_HDR_LEN)) {
+		return false;
+	}
+	h->magic = le32(&b[0]);
+	h->seq = le32(&b[4]);
+	h->len = le32(&b[8]);
+	h->crc = le32(&b[12]);
+	return true;
 }
 
 static bool slot_valid(uint32_t slot, calib_hdr_t *h)
 {
-	read_hdr(slot, h);
-	if (h->magic != CALIB_MAGIC || h->len > HAL_CALIB_MAX_LEN ||
+	uint8_t chunk[READ_CHUNK];
+	uint32_t crc;
+	uint32_t off;
+
+	if (!read_hdr(slot, h) || h->magic != CALIB_MAGIC || h->len > HAL_CALIB_MAX_LEN ||
 	    h->len > slot_size() - CALIB_HDR_LEN) {
 		return false;
 	}
-	return block_crc(h->seq, h->len,
-			 (const uint8_t *)(uintptr_t)(slot_addr(slot) + CALIB_HDR_LEN)) == h->crc;
+	crc = crc_of_meta(h->seq, h->len);
+	for (off = 0U; off < h->len; off += READ_CHUNK) {
+		const uint32_t n = (h->len - off < READ_CHUNK) ? h->len - off : READ_CHUNK;
+
+		if (!slot_read(slot, CALIB_HDR_LEN + off, chunk, n)) {
+			return false;
+		}
+		crc = crc32_update(crc, chunk, n);
+	}
+	return ~crc == h->crc;
 }
 
 /* The newest valid slot, or -1. Sequence numbers compare modulo 2^32. */
@@ -129,7 +177,7 @@ int hal_calib_read(uint8_t *buf, uint32_t len)
 {
 	calib_hdr_t h;
 	int slot;
-	const uint8_t *src;
+	uint32_t stored;
 	uint32_t i;
 
 	if (buf == NULL || len > HAL_CALIB_MAX_LEN) {
@@ -139,11 +187,14 @@ int hal_calib_read(uint8_t *buf, uint32_t len)
 	if (slot < 0) {
 		return SQ_ENOENT;
 	}
-	src = (const uint8_t *)(uintptr_t)(slot_addr((uint32_t)slot) + CALIB_HDR_LEN);
+	stored = (h.len < len) ? h.len : len;
+	if (!slot_read((uint32_t)slot, CALIB_HDR_LEN, buf, stored)) {
+		return SQ_EIO; /* it read whole a moment ago */
+	}
 	/* Shorter stored block: the rest reads as erased flash (0xFF); the
 	 * block's own CRC (firmware/monitor) decides whether it is usable. */
-	for (i = 0; i < len; i++) {
-		buf[i] = i < h.len ? src[i] : 0xFFU;
+	for (i = stored; i < len; i++) {
+		buf[i] = 0xFFU;
 	}
 	return SQ_OK;
 }
@@ -156,7 +207,8 @@ int hal_calib_write(const uint8_t *buf, uint32_t len)
 	int newest;
 	uint32_t target;
 	uint32_t addr;
-	const volatile uint8_t *p;
+	uint8_t chunk[READ_CHUNK];
+	uint32_t off;
 	uint32_t i;
 
 	if (buf == NULL || len > HAL_CALIB_MAX_LEN || (uint32_t)(uintptr_t)__calib_slot_count != 2U ||
@@ -176,7 +228,7 @@ int hal_calib_write(const uint8_t *buf, uint32_t len)
 	hdr.magic = CALIB_MAGIC;
 	hdr.seq = newest < 0 ? 1U : cur.seq + 1U;
 	hdr.len = len;
-	hdr.crc = block_crc(hdr.seq, len, buf);
+	hdr.crc = ~crc32_update(crc_of_meta(hdr.seq, len), buf, len);
 	addr = slot_addr(target);
 
 	hal_watchdog_kick();
@@ -186,9 +238,15 @@ int hal_calib_write(const uint8_t *buf, uint32_t len)
 	}
 	hal_watchdog_kick();
 	/* Blank check of what we are about to program. */
-	p = (const volatile uint8_t *)(uintptr_t)addr;
-	for (i = 0; i < CALIB_HDR_LEN + len; i++) {
-		if (p[i] != 0xFFU) {
+	for (off = 0U; off < CALIB_HDR_LEN + len; off += READ_CHUNK) {
+		const uint32_t n = (CALIB_HDR_LEN + len - off < READ_CHUNK) ? CALIB_HDR_LEN + len - off :
+										READ_CHUNK;
+		bool blank = slot_read(target, off, chunk, n);
+
+		for (i = 0U; blank && (i < n); i++) {
+			blank = chunk[i] == 0xFFU;
+		}
+		if (!blank) {
 			stm32_fault_raise(HAL_FAULT_CALIB_STORAGE);
 			return SQ_EIO;
 		}

@@ -36,5 +36,15 @@ int chip_flash_unlock(void);
  * SQ_OK, else SQ_EIO (chip_common.c). */
 int chip_flash_wait_done(uint32_t timeout_us);
 int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len);
+/* n bytes of calibration flash from addr into dst: SQ_OK, or SQ_EIO when a
+ * read hit an ECC double error (the G4: a double word a power cut left
+ * half-programmed; the NMI counted it, chip_nmi_flash_ecc); chips without
+ * flash ECC always SQ_OK (chip_common.c). */
+int chip_flash_read(uint32_t addr, uint8_t *dst, uint32_t n);
+/* Chips with flash ECC (chip.h: CHIP_FLASH_HAS_ECC, the G4), from the NMI: an ECC double error in the calibration pages is cleared
+ * and counted and the NMI returns (true): the read finishes and
+ * chip_flash_read() says SQ_EIO. Anything else (the clock security
+ * system, an ECC error in the code): false, the fault path. */
+bool chip_nmi_flash_ecc(void);
 
 #endif /* CHIP_API_H */

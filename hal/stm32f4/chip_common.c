@@ -45,6 +45,20 @@ int chip_flash_unlock(void)
 	return SQ_OK;
 }
 
+#if !defined(CHIP_FLASH_HAS_ECC)
+/* No flash ECC (F4, F103): a read is a read. */
+int chip_flash_read(uint32_t addr, uint8_t *dst, uint32_t n)
+{
+	const volatile uint8_t *src = (const volatile uint8_t *)(uintptr_t)addr;
+	uint32_t i;
+
+	for (i = 0U; i < n; i++) {
+		dst[i] = src[i];
+	}
+	return SQ_OK;
+}
+#endif
+
 int chip_flash_wait_done(uint32_t timeout_us)
 {
 	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, timeout_us) != SQ_OK) {

@@ -16,6 +16,7 @@
 #include <stddef.h>
 
 #include "chip.h"
+#include "stm32_hse_meter.h"
 #include "stm32_time.h"
 #include "sq_status.h"
 
@@ -24,75 +25,26 @@
 #define HSE_TIMEOUT_US    100000U
 #define PLL_TIMEOUT_US      5000U
 #define SWITCH_TIMEOUT_US   5000U
-/* HSE measurement: HSE/31 into TIM11 CH1, every 8th edge captured, 16
- * captures of 8 * 31 HSE periods each (496 HSI ticks at 8 MHz: 7936 in
+/* HSE measurement: HSE_RTC = HSE/31 into TIM11 CH1 (stm32_hse_meter.h);
+ * 16 captures of 8 * 31 HSE periods each (496 HSI ticks at 8 MHz: 7936 in
  * all, resolution 0.013 %). */
 #define MEAS_RTCPRE 31U
-#define MEAS_EDGES_PER_CAPTURE 8U
-#define MEAS_CAPTURES 16U
-#define MEAS_TIMEOUT_US 2000U /* per capture; 8 MHz needs 31 us */
-#define HSE_TOLERANCE_PERMILLE 100U
 
 static uint32_t hse_measured_hz;
-
-static int capture_wait(uint32_t *ccr)
-{
-	if (stm32_wait_reg(&TIM11_SR, TIM_SR_CC1IF, TIM_SR_CC1IF, MEAS_TIMEOUT_US) != SQ_OK) {
-		return SQ_EAGAIN;
-	}
-	*ccr = TIM11_CCR1 & 0xFFFFU; /* reading CCR1 clears CC1IF */
-	return SQ_OK;
-}
 
 /* The HSE in Hz, timed by TIM11 on the HSI (APB2 = 16 MHz now); 0 if no
  * edge comes. The HSE is running (HSERDY), the PLL is not in use yet. */
 static uint32_t hse_measure(void)
 {
-	uint32_t prev;
-	uint32_t now;
-	uint32_t ticks = 0U;
-	uint64_t hz;
+	uint32_t hz;
 
 	RCC_APB2ENR |= RCC_APB2ENR_TIM11EN;
 	(void)RCC_APB2ENR;
 	RCC_CFGR = (RCC_CFGR & ~RCC_CFGR_RTCPRE_MSK) | (MEAS_RTCPRE << RCC_CFGR_RTCPRE_SHIFT);
-	TIM11_CR1 = 0U;
 	TIM11_OR = TIM11_OR_TI1_HSE_RTC;
-	TIM11_PSC = 0U;
-	TIM11_ARR = 0xFFFFU;
-	TIM11_CCMR1 = TIM_CCMR1_CC1S_TI1 | TIM_CCMR1_IC1PSC_8;
-	TIM11_CCER = TIM_CCER_CC1E;
-	TIM11_SR = 0U;
-	TIM11_CR1 = TIM_CR1_CEN;
-	if (capture_wait(&prev) != SQ_OK) {
-		ticks = 0U;
-	} else {
-		uint32_t i;
-
-		for (i = 0; i < MEAS_CAPTURES; i++) {
-			if (capture_wait(&now) != SQ_OK) {
-				ticks = 0U;
-				break;
-			}
-			ticks += (now - prev) & 0xFFFFU; /* 16-bit counter wraps */
-			prev = now;
-		}
-	}
-	TIM11_CR1 = 0U;
-	TIM11_CCER = 0U;
+	hz = stm32_hse_meter_run(TIM11_BASE, MEAS_RTCPRE, CHIP_HSI_HZ);
 	RCC_APB2ENR &= ~RCC_APB2ENR_TIM11EN;
-	if (ticks == 0U) {
-		return 0U;
-	}
-	hz = (uint64_t)CHIP_HSI_HZ * MEAS_RTCPRE * MEAS_EDGES_PER_CAPTURE * MEAS_CAPTURES;
-	return (uint32_t)((hz + ticks / 2U) / ticks);
-}
-
-static bool hse_is_calibrated(uint32_t hz)
-{
-	uint32_t tol = (uint32_t)(((uint64_t)CHIP_HSE_HZ * HSE_TOLERANCE_PERMILLE) / 1000U);
-
-	return hz >= CHIP_HSE_HZ - tol && hz <= CHIP_HSE_HZ + tol;
+	return hz;
 }
 
 uint32_t chip_hse_measured_hz(void)
@@ -129,7 +81,7 @@ int chip_clock_init(void)
 		return SQ_EAGAIN;
 	}
 	hse_measured_hz = hse_measure();
-	if (!hse_is_calibrated(hse_measured_hz)) {
+	if (!stm32_hse_in_tolerance(hse_measured_hz, CHIP_HSE_HZ)) {
 		f4_clock_back_to_hsi();
 		return SQ_EAGAIN;
 	}

@@ -32,6 +32,12 @@ void Fault_Handler(void) __attribute__((naked));
 /* An unexpected interrupt is recorded like a fault: the same handler (the
  * record's vector tells them apart). */
 void Default_Handler(void) __attribute__((alias("Fault_Handler")));
+#if defined(CHIP_FLASH_HAS_ECC)
+void NMI_Handler(void) __attribute__((naked));
+#define NMI_VECTOR NMI_Handler
+#else
+#define NMI_VECTOR Fault_Handler
+#endif
 void stm32_fault_entry(const uint32_t *frame, uint32_t exc_return, uint32_t msp) __attribute__((noreturn, used));
 
 /* The fault handlers' own stack, in .bss above the main stack: an overflow
@@ -54,7 +60,7 @@ const vector_t stm32_vectors[16U + CHIP_IRQ_COUNT] = {
 	[0] = { .stack_top = &_estack },
 	[1] = { .handler = Reset_Handler },
 	[2 ... 15U + CHIP_IRQ_COUNT] = { .handler = Default_Handler },
-	[2] = { .handler = Fault_Handler },  /* NMI                  */
+	[2] = { .handler = NMI_VECTOR },     /* NMI                  */
 	[3] = { .handler = Fault_Handler },  /* HardFault            */
 	[4] = { .handler = Fault_Handler },  /* MemManage            */
 	[5] = { .handler = Fault_Handler },  /* BusFault             */
@@ -174,6 +180,25 @@ void Fault_Handler(void)
 }
 
 _Static_assert(FAULT_STACK_WORDS * 4U == 512U, "Fault_Handler's movw/movt use 512");
+
+#if defined(CHIP_FLASH_HAS_ECC)
+/* A chip with flash ECC: a power cut in the middle of programming a
+ * calibration double word leaves it with an ECC double error, and reading
+ * it raises the NMI on every boot. Recording that as a fault would reset
+ * into the same read: an NMI reset loop. The chip part clears and counts
+ * such an error and the NMI returns (the read finishes, the slot is
+ * treated as corrupt); any other NMI takes the fault path with the stack
+ * as it was at entry (r4 only keeps the 8-byte alignment). */
+void NMI_Handler(void)
+{
+	__asm__ volatile("push {r4, lr}\n\t"
+			 "bl chip_nmi_flash_ecc\n\t"
+			 "pop {r4, lr}\n\t"
+			 "cbz r0, 1f\n\t"
+			 "bx lr\n\t"
+			 "1: b Fault_Handler\n\t");
+}
+#endif
 
 static uint32_t next_fault_count(void)
 {

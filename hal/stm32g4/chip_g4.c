@@ -16,6 +16,7 @@
 #include <stddef.h>
 
 #include "chip.h"
+#include "stm32_hse_meter.h"
 #include "stm32_time.h"
 #include "sq_status.h"
 
@@ -25,13 +26,9 @@
 #define PLL_TIMEOUT_US      5000U
 #define SWITCH_TIMEOUT_US   5000U
 #define VOS_TIMEOUT_US      5000U
-/* HSE measurement: HSE/32 into TIM17 CH1, every 8th edge captured, 16
- * captures of 8 * 32 HSE periods (170.7 HSI16 ticks at 24 MHz: 2731 in
- * all, resolution 0.04 %). */
-#define MEAS_EDGES_PER_CAPTURE 8U
-#define MEAS_CAPTURES 16U
-#define MEAS_TIMEOUT_US 2000U /* per capture; 24 MHz needs 11 us */
-#define HSE_TOLERANCE_PERMILLE 100U
+/* HSE measurement: HSE/32 into TIM17 CH1 (stm32_hse_meter.h); 16 captures
+ * of 8 * 32 HSE periods (170.7 HSI16 ticks at 24 MHz: 2731 in all,
+ * resolution 0.04 %). */
 /* RM0440 6.1.5: the AHB prescaler stays at /2 for at least 1 us after the
  * switch to the boost frequency; 1 us = 85 cycles at 85 MHz, a loop
  * iteration takes at least one. */
@@ -39,7 +36,6 @@
 /* DS12288: 2 KiB page erase max 24.5 ms, double word max 90.8 us */
 #define ERASE_TIMEOUT_US   100000U
 #define PROGRAM_TIMEOUT_US   1000U
-#define IDLE_TIMEOUT_US     10000U
 #define PAGE_BYTES_DUAL_BANK   2048U
 #define PAGE_BYTES_SINGLE_BANK 4096U
 #define SLOT_PAGES_MAX 4U /* bound of the erase loop */
@@ -47,69 +43,25 @@
 extern const uint8_t __calib_start[];
 extern const uint8_t __calib_slot_size[];
 
-static uint32_t core_hz = CHIP_HSI_HZ;
-static uint32_t apb1_hz = CHIP_HSI_HZ;
+/* the core and APB1 rates: chip_common.c (chip_clock_rates_set) */
 static uint32_t fdcan_hz = CHIP_HSI_HZ;
 static uint32_t hse_measured_hz;
-
-static int capture_wait(uint32_t *ccr)
-{
-	if (stm32_wait_reg(&TIM17_SR, TIM_SR_CC1IF, TIM_SR_CC1IF, MEAS_TIMEOUT_US) != SQ_OK) {
-		return SQ_EAGAIN;
-	}
-	*ccr = TIM17_CCR1 & 0xFFFFU; /* reading CCR1 clears CC1IF */
-	return SQ_OK;
-}
 
 /* The HSE in Hz, timed by TIM17 on the HSI16 (APB2 = 16 MHz now); 0 if no
  * edge comes. HSE/32 reaches TI1 through TISEL 0011 once TIM17_OR1 HSE32EN
  * requests it (RM0440 TIM15/TIM16/TIM17 chapter: TIMx_TISEL, TIMx_OR1). */
 static uint32_t hse_measure(void)
 {
-	uint32_t prev;
-	uint32_t now;
-	uint32_t ticks = 0U;
-	uint64_t hz;
+	uint32_t hz;
 
 	RCC_APB2ENR |= RCC_APB2ENR_TIM17EN;
 	(void)RCC_APB2ENR; /* read back: the enable needs two cycles */
-	TIM17_CR1 = 0U;
 	TIM17_OR1 = TIM17_OR1_HSE32EN;
 	TIM17_TISEL = TIM17_TISEL_TI1_HSE_32;
-	TIM17_PSC = 0U;
-	TIM17_ARR = 0xFFFFU;
-	TIM17_CCMR1 = TIM_CCMR1_CC1S_TI1 | TIM_CCMR1_IC1PSC_8;
-	TIM17_CCER = TIM_CCER_CC1E;
-	TIM17_SR = 0U;
-	TIM17_CR1 = TIM_CR1_CEN;
-	if (capture_wait(&prev) == SQ_OK) {
-		uint32_t i;
-
-		for (i = 0; i < MEAS_CAPTURES; i++) {
-			if (capture_wait(&now) != SQ_OK) {
-				ticks = 0U;
-				break;
-			}
-			ticks += (now - prev) & 0xFFFFU; /* 16-bit counter wraps */
-			prev = now;
-		}
-	}
-	TIM17_CR1 = 0U;
-	TIM17_CCER = 0U;
+	hz = stm32_hse_meter_run(TIM17_BASE, CHIP_HSE_RTC_DIV, CHIP_HSI_HZ);
 	TIM17_OR1 = 0U;
 	RCC_APB2ENR &= ~RCC_APB2ENR_TIM17EN;
-	if (ticks == 0U) {
-		return 0U;
-	}
-	hz = (uint64_t)CHIP_HSI_HZ * CHIP_HSE_RTC_DIV * MEAS_EDGES_PER_CAPTURE * MEAS_CAPTURES;
-	return (uint32_t)((hz + ticks / 2U) / ticks);
-}
-
-static bool hse_is_calibrated(uint32_t hz)
-{
-	uint32_t tol = (uint32_t)(((uint64_t)CHIP_HSE_HZ * HSE_TOLERANCE_PERMILLE) / 1000U);
-
-	return hz >= CHIP_HSE_HZ - tol && hz <= CHIP_HSE_HZ + tol;
+	return hz;
 }
 
 uint32_t chip_hse_measured_hz(void)
@@ -144,8 +96,7 @@ static void g4_clock_back_to_hsi(void)
 	FLASH_ACR = FLASH_ACR_PRFTEN | FLASH_ACR_ICEN | FLASH_ACR_DCEN; /* 0 WS at 16 MHz */
 	PWR_CR5 |= PWR_CR5_R1MODE;
 	RCC_CCIPR = (RCC_CCIPR & ~RCC_CCIPR_FDCANSEL_MSK) | RCC_CCIPR_FDCANSEL_PCLK1;
-	core_hz = CHIP_HSI_HZ;
-	apb1_hz = CHIP_HSI_HZ;
+	chip_clock_rates_set(false);
 	fdcan_hz = CHIP_HSI_HZ;
 }
 
@@ -159,8 +110,7 @@ int chip_clock_init(void)
 {
 	uint32_t i;
 
-	core_hz = CHIP_HSI_HZ;
-	apb1_hz = CHIP_HSI_HZ;
+	chip_clock_rates_set(false);
 	fdcan_hz = CHIP_HSI_HZ;
 	hse_measured_hz = 0U;
 	stm32_time_early_init(CHIP_HSI_HZ);
@@ -171,7 +121,7 @@ int chip_clock_init(void)
 		return g4_fail();
 	}
 	hse_measured_hz = hse_measure();
-	if (!hse_is_calibrated(hse_measured_hz)) {
+	if (!stm32_hse_in_tolerance(hse_measured_hz, CHIP_HSE_HZ)) {
 		return g4_fail();
 	}
 	/* Range 1 (the reset value, kept), boost mode: R1MODE 0 while the
@@ -212,20 +162,9 @@ int chip_clock_init(void)
 	RCC_CCIPR = (RCC_CCIPR & ~RCC_CCIPR_FDCANSEL_MSK) | RCC_CCIPR_FDCANSEL_HSE;
 	/* A crystal that stops from now on: NMI (startup.c records it). */
 	RCC_CR |= RCC_CR_CSSON;
-	core_hz = CHIP_SYSCLK_HZ;
-	apb1_hz = CHIP_APB1_HZ;
+	chip_clock_rates_set(true);
 	fdcan_hz = CHIP_HSE_HZ;
 	return SQ_OK;
-}
-
-uint32_t chip_core_hz(void)
-{
-	return core_hz;
-}
-
-uint32_t chip_apb1_hz(void)
-{
-	return apb1_hz;
 }
 
 uint32_t chip_fdcan_kernel_hz(void)
@@ -308,19 +247,51 @@ static int g4_flash_unlock(void)
 {
 	saved_acr = FLASH_ACR;
 	FLASH_ACR = saved_acr & ~FLASH_ACR_DCEN;
-	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, IDLE_TIMEOUT_US) != SQ_OK) {
-		return SQ_EIO;
+	/* the key sequence and the bounded wait (chip_common.c) on the G4's
+	 * FLASH_KEYR/SR/CR; it clears the error flags too: one left from
+	 * before makes PGSERR (RM0440 3.3, programming) */
+	return chip_flash_unlock();
+}
+
+/* ECC double errors in the calibration pages since start (the NMI) */
+static volatile uint32_t calib_ecc_errors;
+
+static bool in_calibration(uint32_t addr)
+{
+	const uint32_t start = (uint32_t)(uintptr_t)__calib_start;
+
+	return (addr >= start) && ((addr - start) < 2U * (uint32_t)(uintptr_t)__calib_slot_size);
+}
+
+/* RM0440 3.3 (error code correction): a double error sets ECCD and raises
+ * the NMI; ADDR_ECC is the double word's offset in its bank (BK_ECC) with
+ * DBANK 1, in the whole flash with DBANK 0. */
+bool chip_nmi_flash_ecc(void)
+{
+	const uint32_t eccr = FLASH_ECCR;
+	const bool dual_bank = (FLASH_OPTR & FLASH_OPTR_DBANK) != 0U;
+	const uint32_t base = (dual_bank && ((eccr & FLASH_ECCR_BK_ECC) != 0U)) ? CHIP_FLASH_BANK2 :
+										  CHIP_FLASH_BASE;
+	bool ours = false;
+
+	if (((eccr & FLASH_ECCR_ECCD) != 0U) && ((eccr & FLASH_ECCR_SYSF_ECC) == 0U) &&
+	    in_calibration(base + (eccr & FLASH_ECCR_ADDR_ECC_MSK))) {
+		FLASH_ECCR = (eccr & FLASH_ECCR_ECCIE) | FLASH_ECCR_ECCD; /* write 1 to clear */
+		calib_ecc_errors++;
+		ours = true;
 	}
-	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
-		FLASH_KEYR = FLASH_KEY1;
-		FLASH_KEYR = FLASH_KEY2;
+	return ours;
+}
+
+int chip_flash_read(uint32_t addr, uint8_t *dst, uint32_t n)
+{
+	const uint32_t before = calib_ecc_errors;
+	uint32_t i;
+
+	for (i = 0U; i < n; i++) {
+		dst[i] = CHIP_FLASH_LOAD8(addr + i); /* a double error: the NMI runs here */
 	}
-	if ((FLASH_CR & FLASH_CR_LOCK) != 0U) {
-		return SQ_EIO; /* a wrong sequence locks it until reset */
-	}
-	/* RM0440 3.3 (programming): an error flag left from before makes PGSERR */
-	FLASH_SR = FLASH_SR_ERRORS | FLASH_SR_EOP; /* write 1 to clear */
-	return SQ_OK;
+	return (calib_ecc_errors == before) ? SQ_OK : SQ_EIO;
 }
 
 static void g4_flash_lock_and_flush(void)
@@ -336,10 +307,7 @@ static void g4_flash_lock_and_flush(void)
 
 static int g4_flash_wait_done(uint32_t timeout_us)
 {
-	if (stm32_wait_reg(&FLASH_SR, FLASH_SR_BSY, 0U, timeout_us) != SQ_OK) {
-		return SQ_EIO;
-	}
-	if ((FLASH_SR & FLASH_SR_ERRORS) != 0U) {
+	if (chip_flash_wait_done(timeout_us) != SQ_OK) {
 		return SQ_EIO;
 	}
 	FLASH_SR = FLASH_SR_EOP;

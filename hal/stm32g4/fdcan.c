@@ -52,6 +52,7 @@
  */
 #include <stddef.h>
 
+#include "can_queue.h"
 #include "chip.h"
 #include "fdcan.h"
 #include "fdcan_regs.h"
@@ -62,14 +63,11 @@
 #include "stm32_time.h"
 
 #define FDCAN_BUSES 2U
-#define RX_RING_LEN 32U  /* power of two; 32 frames = 3 ms of a full bus */
-#define TX_QUEUE_LEN 8U  /* + 3 in the TX FIFO */
 #define INIT_TIMEOUT_US 10000U    /* INIT read back: end of the current frame */
 #define JOIN_TIMEOUT_US 20000U    /* leave INIT: 11 recessive bits */
 #define LOOPBACK_TIMEOUT_US 5000U /* one 16-byte frame at 500k/2M: 0.1 ms */
 #define STD_FILTERS HAL_CAN_MAX_FILTERS
 
-_Static_assert((RX_RING_LEN & (RX_RING_LEN - 1U)) == 0U, "ring length must be a power of two");
 _Static_assert(HAL_CAN_MAX_FILTERS <= SRAMCAN_FLS_NBR, "more filters than standard elements");
 _Static_assert(HAL_CAN_MAX_DLEN == HAL_CAN_FD_MAX_DLEN, "the FDCAN image carries FD frames");
 _Static_assert(FDCAN_BUSES == HAL_CAN_BUSES, "bus count");
@@ -77,15 +75,7 @@ _Static_assert(FDCAN_BUSES == HAL_CAN_BUSES, "bus count");
 typedef struct {
 	bool started;                 /* controller configured             */
 	uint32_t bitrate_bps;         /* nominal rate of the last start    */
-	/* RX ring: rx_head written only by the ISR, rx_tail only by
-	 * hal_can_receive(); free-running indices, count = head - tail. */
-	volatile uint32_t rx_head;
-	volatile uint32_t rx_tail;
-	hal_can_frame_t rx_ring[RX_RING_LEN];
-	/* TX queue: touched with interrupts masked only. */
-	hal_can_frame_t tx_queue[TX_QUEUE_LEN];
-	uint32_t tx_first;
-	uint32_t tx_count;
+	can_queue_t q;                /* RX ring and TX queue (can_queue.h) */
 	volatile uint32_t rx_overruns;
 	volatile uint32_t tx_dropped;
 } bus_state_t;
@@ -355,7 +345,7 @@ static int enter_init(uint8_t bus)
 	for (b = 0U; b < SRAMCAN_TXB_NBR; b++) {
 		st->tx_dropped += (pending >> b) & 1U;
 	}
-	st->tx_dropped += st->tx_count;
+	st->tx_dropped += st->q.tx_count;
 	reg_wr(bus, FDCAN_CCCR, reg_rd(bus, FDCAN_CCCR) | FDCAN_CCCR_CCE);
 	return SQ_OK;
 }
@@ -407,10 +397,7 @@ static void configure(uint8_t bus, const fdcan_timing_t *t, uint32_t cccr_mode, 
 	reg_wr(bus, FDCAN_TXBC, 0U);
 	reg_wr(bus, FDCAN_TXBTIE, (ie != 0U) ? FDCAN_TXB_ALL : 0U);
 	filters_write(bus, NULL, 1U);
-	st->rx_head = 0U;
-	st->rx_tail = 0U;
-	st->tx_first = 0U;
-	st->tx_count = 0U;
+	can_queue_reset(&st->q);
 	reg_wr(bus, FDCAN_IR, FDCAN_IR_ALL);
 	reg_wr(bus, FDCAN_ILS, 0U);
 	reg_wr(bus, FDCAN_IE, ie);
@@ -528,7 +515,7 @@ bool can_ctrl_rx_pending(void)
 	uint32_t bus;
 
 	for (bus = 0U; bus < FDCAN_BUSES; bus++) {
-		if (can_bus[bus].rx_head != can_bus[bus].rx_tail) {
+		if (can_queue_rx_pending(&can_bus[bus].q)) {
 			return true;
 		}
 	}
@@ -574,7 +561,7 @@ static void tx_pump(uint8_t bus)
 	bus_state_t *st = &can_bus[bus];
 	uint32_t i;
 
-	for (i = 0U; (i < SRAMCAN_TXB_NBR) && (st->tx_count > 0U); i++) {
+	for (i = 0U; (i < SRAMCAN_TXB_NBR) && (can_queue_tx_peek(&st->q) != NULL); i++) {
 		const uint32_t txfqs = reg_rd(bus, FDCAN_TXFQS);
 		uint32_t put;
 
@@ -582,10 +569,9 @@ static void tx_pump(uint8_t bus)
 			return; /* all three busy */
 		}
 		put = (txfqs & FDCAN_TXFQS_TFQPI_MSK) >> FDCAN_TXFQS_TFQPI_SHIFT;
-		elem_write(bus, SRAMCAN_TXB + SRAMCAN_ELEM_BYTES * put, &st->tx_queue[st->tx_first]);
+		elem_write(bus, SRAMCAN_TXB + SRAMCAN_ELEM_BYTES * put, can_queue_tx_peek(&st->q));
 		reg_wr(bus, FDCAN_TXBAR, 1U << put);
-		st->tx_first = (st->tx_first + 1U) % TX_QUEUE_LEN;
-		st->tx_count--;
+		can_queue_tx_pop(&st->q);
 	}
 }
 
@@ -593,7 +579,7 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 {
 	bus_state_t *st = fdcan_bus_get(bus);
 	uint32_t primask;
-	uint32_t slot;
+	int queued;
 	/* FDCAN carries FD frames: only malformed ones and listen-only refuse */
 	const int rc = hal_can_send_admit(frame, &can_track[bus], true);
 
@@ -611,36 +597,23 @@ int hal_can_send(uint8_t bus, const hal_can_frame_t *frame)
 		return SQ_ENETDOWN;
 	}
 	primask = cm_irq_save();
-	if (st->tx_count >= TX_QUEUE_LEN) {
-		cm_irq_restore(primask);
-		return SQ_ENOBUFS;
+	queued = can_queue_tx_push(&st->q, frame);
+	if (queued == SQ_OK) {
+		tx_pump(bus);
 	}
-	slot = (st->tx_first + st->tx_count) % TX_QUEUE_LEN;
-	st->tx_queue[slot] = *frame;
-	st->tx_count++;
-	tx_pump(bus);
 	cm_irq_restore(primask);
-	return SQ_OK;
+	return queued;
 }
 
 int hal_can_receive(uint8_t bus, hal_can_frame_t *frame)
 {
 	bus_state_t *st = fdcan_bus_get(bus);
 	const int rc = hal_can_receive_admit(frame, true, st->started);
-	uint32_t tail;
 
 	if (rc != SQ_OK) {
 		return rc;
 	}
-	tail = st->rx_tail;
-	if (tail == st->rx_head) {
-		return SQ_EAGAIN;
-	}
-	cm_dmb(); /* read the slot only after seeing the head that covers it */
-	*frame = st->rx_ring[tail % RX_RING_LEN];
-	cm_dmb(); /* finish reading before handing the slot back */
-	st->rx_tail = tail + 1U;
-	return SQ_OK;
+	return can_queue_rx_pop(&st->q, frame);
 }
 
 int hal_can_get_status(uint8_t bus, hal_can_status_t *status)
@@ -701,12 +674,11 @@ int hal_can_set_rx_filter(uint8_t bus, const hal_can_filter_t *filters, uint32_t
 static void rx_push_error(uint8_t bus, uint32_t lec)
 {
 	bus_state_t *st = &can_bus[bus];
-	const uint32_t head = st->rx_head;
 	const uint32_t ecr = reg_rd(bus, FDCAN_ECR);
-	hal_can_frame_t *f = &st->rx_ring[head % RX_RING_LEN];
+	hal_can_frame_t *f = can_queue_rx_slot(&st->q);
 	uint32_t i;
 
-	if ((head - st->rx_tail) >= RX_RING_LEN) {
+	if (f == NULL) {
 		st->rx_overruns++;
 		return;
 	}
@@ -719,8 +691,7 @@ static void rx_push_error(uint8_t bus, uint32_t lec)
 	f->data[6] = (uint8_t)(ecr & FDCAN_ECR_TEC_MSK);
 	f->data[7] = (uint8_t)((ecr & FDCAN_ECR_REC_MSK) >> FDCAN_ECR_REC_SHIFT);
 	f->timestamp_us = hal_time_us();
-	cm_dmb(); /* the frame is complete before the head moves */
-	st->rx_head = head + 1U;
+	can_queue_rx_commit(&st->q);
 }
 
 /* RX FIFO 0 into the ring: at most the three elements it holds; each
@@ -734,20 +705,18 @@ static void rx_fifo0(uint8_t bus)
 	for (i = 0U; i < SRAMCAN_RF0_NBR; i++) {
 		const uint32_t s = reg_rd(bus, FDCAN_RXF0S);
 		const uint32_t get = (s & FDCAN_RXF0S_F0GI_MSK) >> FDCAN_RXF0S_F0GI_SHIFT;
-		const uint32_t head = st->rx_head;
-		hal_can_frame_t *f = &st->rx_ring[head % RX_RING_LEN];
+		hal_can_frame_t *f = can_queue_rx_slot(&st->q);
 
 		if ((s & FDCAN_RXF0S_F0FL_MSK) == 0U) {
 			break;
 		}
-		if ((head - st->rx_tail) >= RX_RING_LEN) {
+		if (f == NULL) {
 			st->rx_overruns++;
 		} else if (!elem_read(bus, SRAMCAN_RF0 + SRAMCAN_ELEM_BYTES * get, f)) {
 			can_track[bus].error_frames++; /* malformed: dropped, counted */
 		} else {
 			f->timestamp_us = now_us;
-			cm_dmb(); /* the frame is complete before the head moves */
-			st->rx_head = head + 1U;
+			can_queue_rx_commit(&st->q);
 		}
 		reg_wr(bus, FDCAN_RXF0A, get);
 	}

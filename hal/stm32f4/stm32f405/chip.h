@@ -138,11 +138,6 @@ void CAN2_SCE_IRQHandler(void);
 #define TIM11_ARR   REG32(TIM11_BASE + 0x2CU)
 #define TIM11_CCR1  REG32(TIM11_BASE + 0x34U)
 #define TIM11_OR    REG32(TIM11_BASE + 0x50U)
-#define TIM_CR1_CEN (1U << 0)
-#define TIM_SR_CC1IF (1U << 1)
-#define TIM_CCMR1_CC1S_TI1 1U
-#define TIM_CCMR1_IC1PSC_8 (3U << 2)
-#define TIM_CCER_CC1E (1U << 0)
 #define TIM11_OR_TI1_HSE_RTC 2U
 #define FLASH_ACR_LATENCY_MSK 7U
 #define FLASH_ACR_LATENCY_5WS 5U /* 150..168 MHz at 2.7..3.6 V */

@@ -160,6 +160,7 @@ void FDCAN2_IT0_IRQHandler(void);
 #define FLASH_KEYR REG32(FLASH_R_BASE + 0x08U)
 #define FLASH_SR   REG32(FLASH_R_BASE + 0x10U)
 #define FLASH_CR   REG32(FLASH_R_BASE + 0x14U)
+#define FLASH_ECCR REG32(FLASH_R_BASE + 0x18U)
 #define FLASH_OPTR REG32(FLASH_R_BASE + 0x20U)
 /* RM0440 3.3.3, wait states per HCLK (range 1 boost): 4 wait states for 136..170 MHz */
 #define FLASH_ACR_LATENCY_MSK 0xFU
@@ -201,6 +202,20 @@ void FDCAN2_IT0_IRQHandler(void);
 #define FLASH_OPTR_BOR_LEV_SHIFT 8U
 #define FLASH_OPTR_BOR_LEV_MSK (7U << 8)
 #define FLASH_OPTR_DBANK (1U << 22)
+/* FLASH_ECCR (RM0440 3.7): the failing double word's offset in its bank
+ * (DBANK 1; in the whole flash with DBANK 0), its bank, system flash, the
+ * ECC correction interrupt enable, ECCD (double error: NMI, write 1 to
+ * clear) */
+#define FLASH_ECCR_ADDR_ECC_MSK 0x7FFFFU
+#define FLASH_ECCR_BK_ECC (1U << 21)
+#define FLASH_ECCR_SYSF_ECC (1U << 22)
+#define FLASH_ECCR_ECCIE (1U << 24)
+#define FLASH_ECCR_ECCD (1U << 31)
+/* The flash has ECC: a double error raises NMI (chip_nmi_flash_ecc) */
+#define CHIP_FLASH_HAS_ECC 1
+/* A byte of flash read by the chip part (the host test reads through its
+ * simulation, which raises the ECC NMI) */
+#define CHIP_FLASH_LOAD8(addr) (*(const volatile uint8_t *)(uintptr_t)(addr))
 #define CHIP_FLASH_BASE 0x08000000U
 #define CHIP_FLASH_BANK2 0x08040000U /* DBANK 1: bank 2 (RM0440 3.3.1, flash organisation) */
 /* 64-bit double words, each programmed once after an erase (ECC) */
@@ -216,11 +231,6 @@ void FDCAN2_IT0_IRQHandler(void);
 #define TIM17_CCR1  REG32(TIM17_BASE + 0x34U)
 #define TIM17_TISEL REG32(TIM17_BASE + 0x5CU)
 #define TIM17_OR1   REG32(TIM17_BASE + 0x68U)
-#define TIM_CR1_CEN (1U << 0)
-#define TIM_SR_CC1IF (1U << 1)
-#define TIM_CCMR1_CC1S_TI1 1U
-#define TIM_CCMR1_IC1PSC_8 (3U << 2)
-#define TIM_CCER_CC1E (1U << 0)
 #define TIM17_TISEL_TI1_HSE_32 3U /* TI1SEL 0011: HSE/32 */
 #define TIM17_OR1_HSE32EN (1U << 0) /* HSE/32 requested for TI1SEL */
 #define CHIP_HSE_RTC_DIV 32U

@@ -19,6 +19,7 @@
 #include "sq_cmocka.h"
 
 #include "chip.h"
+#include "regsim/calib_pattern.h"
 #include "stm32_board.h"
 
 #define SLOT 2048U /* the F103's two-page slot (linker/stm32f103xb.ld) */
@@ -68,6 +69,13 @@ int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 	return SQ_OK;
 }
 
+/* NOR without ECC (the F4 and F103): a read is a copy */
+int chip_flash_read(uint32_t addr, uint8_t *dst, uint32_t n)
+{
+	memcpy(dst, (const uint8_t *)(uintptr_t)addr, n);
+	return SQ_OK;
+}
+
 void hal_watchdog_kick(void)
 {
 }
@@ -82,15 +90,6 @@ bool stm32_watchdog_running(void)
 void stm32_fault_raise(uint32_t hal_fault_bits)
 {
 	faults |= hal_fault_bits;
-}
-
-static void fill(uint8_t *b, uint32_t len, uint8_t seed)
-{
-	uint32_t i;
-
-	for (i = 0; i < len; i++) {
-		b[i] = (uint8_t)(seed + 7U * i);
-	}
 }
 
 static int setup(void **state)
@@ -119,7 +118,7 @@ static void test_write_then_read_round_trip(void **state)
 	uint8_t out[HAL_CALIB_MAX_LEN];
 
 	(void)state;
-	fill(a, sizeof(a), 1U);
+	calib_pattern_fill(a, sizeof(a), 1U);
 	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
 	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
 	assert_memory_equal(a, out, sizeof(a));
@@ -131,9 +130,9 @@ static void test_writes_alternate_slots_and_keep_the_old(void **state)
 	uint8_t a[100], b[100], c[100], out[100];
 
 	(void)state;
-	fill(a, sizeof(a), 1U);
-	fill(b, sizeof(b), 2U);
-	fill(c, sizeof(c), 3U);
+	calib_pattern_fill(a, sizeof(a), 1U);
+	calib_pattern_fill(b, sizeof(b), 2U);
+	calib_pattern_fill(c, sizeof(c), 3U);
 	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
 	assert_int_equal(hal_calib_write(b, sizeof(b)), SQ_OK);
 	/* a is still in the other slot, untouched */
@@ -153,8 +152,8 @@ static void interrupted_write(size_t len)
 	long total = -1;
 	uint32_t saw_old = 0U, saw_new = 0U;
 
-	fill(a, (uint32_t)len, 10U);
-	fill(b, (uint32_t)len, 20U);
+	calib_pattern_fill(a, (uint32_t)len, 10U);
+	calib_pattern_fill(b, (uint32_t)len, 20U);
 	for (cut = 0;; cut++) {
 		int rc;
 
@@ -202,8 +201,8 @@ static void test_corrupt_newest_falls_back_to_older(void **state)
 	uint8_t a[64], b[64], out[64];
 
 	(void)state;
-	fill(a, sizeof(a), 4U);
-	fill(b, sizeof(b), 5U);
+	calib_pattern_fill(a, sizeof(a), 4U);
+	calib_pattern_fill(b, sizeof(b), 5U);
 	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
 	assert_int_equal(hal_calib_write(b, sizeof(b)), SQ_OK);
 	calib_flash_sim[SLOT + 16U + 10U] ^= 0x01U; /* one bit of b */
@@ -266,9 +265,9 @@ static void test_sequence_wraps(void **state)
 	uint8_t a[32], b[32], c[32], out[32];
 
 	(void)state;
-	fill(a, sizeof(a), 6U);
-	fill(b, sizeof(b), 7U);
-	fill(c, sizeof(c), 8U);
+	calib_pattern_fill(a, sizeof(a), 6U);
+	calib_pattern_fill(b, sizeof(b), 7U);
+	calib_pattern_fill(c, sizeof(c), 8U);
 	forge_slot(0U, 0xFFFFFFFFU, a, sizeof(a));
 	forge_slot(1U, 0U, b, sizeof(b));
 	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
@@ -314,8 +313,8 @@ static void test_write_refused_while_watchdog_runs(void **state)
 	uint8_t before[sizeof(calib_flash_sim)];
 
 	(void)state;
-	fill(a, sizeof(a), 3U);
-	fill(b, sizeof(b), 9U);
+	calib_pattern_fill(a, sizeof(a), 3U);
+	calib_pattern_fill(b, sizeof(b), 9U);
 	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
 	memcpy(before, calib_flash_sim, sizeof(before));
 	watchdog_running = true;
@@ -331,7 +330,7 @@ static void test_failed_erase_reports_storage_fault(void **state)
 	uint8_t a[16];
 
 	(void)state;
-	fill(a, sizeof(a), 8U);
+	calib_pattern_fill(a, sizeof(a), 8U);
 	budget = 5;
 	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_EIO);
 	assert_int_equal(faults & HAL_FAULT_CALIB_STORAGE, HAL_FAULT_CALIB_STORAGE);

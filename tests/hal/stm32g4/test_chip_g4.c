@@ -18,14 +18,18 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
+#include <setjmp.h>
 
 #include <cmocka.h>
 
 #include "chip.h"
+#include "regsim/calib_pattern.h"
 #include "hal.h"
 #include "sq_status.h"
+#include "stm32_calib.h"
 #include "stm32_fault.h"
 #include "stm32_iwdg.h"
+#include "stm32_platform_faults.h"
 #include "stm32_time.h"
 
 uint32_t regsim_rcc[64], regsim_pwr[40], regsim_flash[16], regsim_tim17[32], regsim_gpioa[16],
@@ -103,6 +107,68 @@ static void tim17_capture(void)
 	TIM17_SR |= 1U << 1;
 }
 
+/* The power: flash operations (a page erase, a double word) it still
+ * allows, -1 without limit. A cut lands in the middle of the operation
+ * that would exceed it: an erased page then holds garbage, a double word
+ * its new bits only partly, with an ECC double error in either case, and
+ * the test continues at the setjmp (the next boot). */
+static long power_ops = -1;
+static jmp_buf power_cut;
+static bool ecc_broken[sizeof(regsim_flash_mem) / 8U];
+static uint8_t shadow[sizeof(regsim_flash_mem)]; /* the flash after the last whole operation */
+static uint32_t nmi_count, nmi_fault_path;
+
+static void power_spend(bool erase, uint32_t page_off, uint32_t page_bytes)
+{
+	uint32_t i;
+
+	if (power_ops == 0) {
+		if (erase) {
+			for (i = 0U; i < page_bytes; i++) {
+				regsim_flash_mem[page_off + i] = (uint8_t)(0x3CU + i);
+				ecc_broken[(page_off + i) / 8U] = true;
+			}
+		} else {
+			/* the double word just written (it differs from the shadow) */
+			for (i = 0U; i < sizeof(regsim_flash_mem); i += 8U) {
+				if (memcmp(&regsim_flash_mem[i], &shadow[i], 8U) != 0) {
+					regsim_flash_mem[i] ^= 0x5AU;
+					ecc_broken[i / 8U] = true;
+				}
+			}
+		}
+		power_ops = -1;
+		longjmp(power_cut, 1);
+	}
+	if (power_ops > 0) {
+		power_ops--;
+	}
+}
+
+/* The core reading the flash: a double word with an ECC double error sets
+ * FLASH_ECCR (ECCD, the double word's offset in its bank, BK_ECC) and
+ * takes the NMI, which the chip part must claim (never the fault path, or
+ * the ECU would reset into the same read); the read returns garbage. */
+uint8_t regsim_flash_load8(uint32_t addr)
+{
+	const uint32_t off = addr - (uint32_t)(uintptr_t)regsim_flash_mem;
+
+	assert_true(off < sizeof(regsim_flash_mem));
+	if (ecc_broken[off / 8U]) {
+		const uint32_t in_flash = 0x7E000U + (off & ~7U);
+		const bool dual_bank = (FLASH_OPTR & (1U << 22)) != 0U;
+
+		FLASH_ECCR = (1U << 31) | (dual_bank ? ((1U << 21) | (in_flash - 0x40000U)) : in_flash);
+		nmi_count++;
+		if (!chip_nmi_flash_ecc()) {
+			nmi_fault_path++;
+		}
+		assert_int_equal(FLASH_ECCR, 1U << 31); /* ECCD written back: cleared */
+		return (uint8_t)(0xA5U ^ off);
+	}
+	return regsim_flash_mem[off];
+}
+
 static void flash_erase(void)
 {
 	uint32_t page_bytes = (FLASH_OPTR & (1U << 22)) != 0U ? 2048U : 4096U;
@@ -111,13 +177,23 @@ static void flash_erase(void)
 	uint32_t bank = (bker != 0U) ? 0x40000U : 0U;
 	uint32_t off = bank + pnb * page_bytes; /* from the flash's start */
 
-	assert_true(n_erased < 8U);
-	erased[n_erased][0] = bker;
-	erased[n_erased][1] = pnb;
-	n_erased++;
+	if (n_erased < 8U) { /* the first erases of a test, for its checks */
+		erased[n_erased][0] = bker;
+		erased[n_erased][1] = pnb;
+		n_erased++;
+	}
 	assert_true(off >= 0x7E000U && off + page_bytes <= 0x80000U); /* calibration only */
+	power_spend(true, off - 0x7E000U, page_bytes);
 	memset(&regsim_flash_mem[off - 0x7E000U], 0xFF, page_bytes);
+	memset(&ecc_broken[(off - 0x7E000U) / 8U], 0, page_bytes / 8U);
+	memcpy(&shadow[off - 0x7E000U], &regsim_flash_mem[off - 0x7E000U], page_bytes);
 	flash_cr &= ~(1U << 16);
+}
+
+static void flash_programmed(void)
+{
+	power_spend(false, 0U, 0U);
+	memcpy(shadow, regsim_flash_mem, sizeof(shadow));
 }
 
 int stm32_wait_reg(volatile const uint32_t *reg, uint32_t mask, uint32_t value, uint32_t timeout_us)
@@ -139,6 +215,8 @@ int stm32_wait_reg(volatile const uint32_t *reg, uint32_t mask, uint32_t value, 
 		tim17_capture();
 	} else if (reg == &flash_sr_cell && (flash_cr & ((1U << 16) | (1U << 1))) == ((1U << 16) | (1U << 1))) {
 		flash_erase();
+	} else if (reg == &flash_sr_cell && (flash_cr & FLASH_CR_PG) != 0U && (*reg & mask) == value) {
+		flash_programmed(); /* a double word written, the flash idle again */
 	}
 	return ((*reg & mask) == value) ? SQ_OK : SQ_EAGAIN;
 }
@@ -166,6 +244,11 @@ static int setup(void **state)
 	capture_num = 0U;
 	switched_to_pll = false;
 	n_erased = 0U;
+	power_ops = -1;
+	memset(ecc_broken, 0, sizeof(ecc_broken));
+	memcpy(shadow, regsim_flash_mem, sizeof(shadow));
+	nmi_count = 0U;
+	nmi_fault_path = 0U;
 	return 0;
 }
 
@@ -385,6 +468,130 @@ static void test_can_pins(void **state)
 	assert_int_equal(RCC_AHB2ENR, 0U);
 }
 
+/* RM0440 3.3 (error code correction): the NMI of an ECC double error in
+ * the calibration pages is claimed (ECCD cleared with ECCIE kept, counted),
+ * any other NMI is not: one in the code's bank, in system flash, or no
+ * ECCD at all (the clock security system). ADDR_ECC counts in its bank
+ * with DBANK 1 (bank 2 from 0x08040000), in the whole flash with DBANK 0. */
+static void test_nmi_flash_ecc_claims_calibration_only(void **state)
+{
+	static const struct {
+		bool dual_bank;
+		uint32_t eccr;
+		bool claimed;
+	} cases[] = {
+		{ true, (1U << 31) | (1U << 21) | 0x3E000U, true },  /* 0x0807E000: slot 0 */
+		{ true, (1U << 31) | (1U << 21) | 0x3FFF8U, true },  /* the last double word of slot 1 */
+		{ true, (1U << 31) | 0x3E000U, false },              /* 0x0803E000: code in bank 1 */
+		{ true, (1U << 31) | (1U << 21) | 0x3D000U, false }, /* below the slots */
+		{ false, (1U << 31) | 0x7E008U, true },              /* one bank: 0x0807E008 */
+		{ false, (1U << 31) | 0x3E000U, false },
+		{ true, (1U << 31) | (1U << 22) | (1U << 21) | 0x3E000U, false }, /* system flash */
+		{ true, (1U << 21) | 0x3E000U, false },              /* no ECCD: CSS */
+	};
+	size_t i;
+	uint8_t b[8];
+
+	(void)state;
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		FLASH_OPTR = cases[i].dual_bank ? (FLASH_OPTR | (1U << 22)) : (FLASH_OPTR & ~(1U << 22));
+		FLASH_ECCR = cases[i].eccr | (1U << 24); /* ECCIE on */
+		assert_int_equal(chip_nmi_flash_ecc(), cases[i].claimed);
+		if (cases[i].claimed) {
+			assert_int_equal(FLASH_ECCR, (1U << 31) | (1U << 24));
+		} else {
+			assert_int_equal(FLASH_ECCR, cases[i].eccr | (1U << 24)); /* left for the record */
+		}
+	}
+	/* chip_flash_read: SQ_EIO when its read took such an NMI */
+	FLASH_OPTR |= 1U << 22;
+	memset(regsim_flash_mem, 0x11, 16U);
+	assert_int_equal(chip_flash_read((uint32_t)(uintptr_t)__calib_start, b, 8U), SQ_OK);
+	assert_int_equal(b[7], 0x11U);
+	ecc_broken[1] = true;
+	assert_int_equal(chip_flash_read((uint32_t)(uintptr_t)__calib_start + 4U, b, 8U), SQ_EIO);
+	assert_int_equal(nmi_count, 4U); /* bytes 8..11 */
+	assert_int_equal(nmi_fault_path, 0U);
+	assert_int_equal(chip_flash_read((uint32_t)(uintptr_t)__calib_start, b, 8U), SQ_OK);
+}
+
+static uint32_t faults_raised;
+void stm32_fault_raise(uint32_t hal_fault_bits)
+{
+	faults_raised |= hal_fault_bits;
+}
+
+/*
+ * hal_calib_write (hal/stm32f4/calib_flash.c) on chip_g4.c's double-word
+ * programming and 2 KiB pages (DBANK 1), the power cut in every one of its
+ * flash operations in turn (both page erases, every double word of the
+ * payload, the header's second double word, the magic's): the next boot
+ * reads the old block if the cut came before the end, the new one after,
+ * never a mix, never nothing; an ECC double error met on the way is
+ * claimed by the chip's NMI (no fault reset), counted, and its slot treated
+ * as corrupt; the next write reuses that slot and succeeds.
+ */
+static void test_calib_power_cut_every_double_word(void **state)
+{
+	static uint8_t flash_a[sizeof(regsim_flash_mem)];
+	uint8_t a[200];
+	uint8_t b[200];
+	uint8_t c[200];
+	uint8_t out[200];
+	long cut;
+	bool done = false;
+	volatile uint32_t ecc_cuts = 0U;
+
+	(void)state;
+	calib_pattern_fill(a, sizeof(a), 1U);
+	calib_pattern_fill(b, sizeof(b), 101U);
+	calib_pattern_fill(c, sizeof(c), 201U);
+	assert_int_equal(hal_calib_write(a, sizeof(a)), SQ_OK);
+	assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+	assert_memory_equal(out, a, sizeof(a));
+	memcpy(flash_a, regsim_flash_mem, sizeof(flash_a));
+	for (cut = 0; !done; cut++) {
+		volatile bool finished = false;
+		const uint32_t rejects0 = stm32_calib_ecc_rejects();
+
+		assert_true(cut < 64);
+		memcpy(regsim_flash_mem, flash_a, sizeof(flash_a));
+		memcpy(shadow, flash_a, sizeof(shadow));
+		memset(ecc_broken, 0, sizeof(ecc_broken));
+		nmi_count = 0U;
+		power_ops = cut;
+		if (setjmp(power_cut) == 0) {
+			assert_int_equal(hal_calib_write(b, sizeof(b)), SQ_OK);
+			finished = true;
+		}
+		power_ops = -1;
+		/* the next boot: the flash locked again, the cache as at reset */
+		flash_cr = FLASH_CR_LOCK;
+		keys_seen = 0U;
+		flash_sr_hw = 0U;
+		flash_sr_cell = 0U;
+		assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+		assert_memory_equal(out, finished ? b : a, sizeof(a));
+		assert_int_equal(nmi_fault_path, 0U);
+		if (nmi_count > 0U) {
+			ecc_cuts++;
+			assert_true(stm32_calib_ecc_rejects() > rejects0);
+		}
+		/* the slot the cut spoilt is erased and written again */
+		assert_int_equal(hal_calib_write(c, sizeof(c)), SQ_OK);
+		assert_int_equal(hal_calib_read(out, sizeof(out)), SQ_OK);
+		assert_memory_equal(out, c, sizeof(c));
+		assert_int_equal(nmi_fault_path, 0U);
+		done = finished;
+	}
+	/* 2 erases + 25 payload double words + 2 header double words, then
+	 * the write that completes */
+	assert_int_equal(cut, 30);
+	/* the header page's erase and the magic's double word at least: their
+	 * slot is read and met the error */
+	assert_true(ecc_cuts >= 2U);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -399,6 +606,8 @@ int main(void)
 		cmocka_unit_test_setup(test_erase_single_bank, setup),
 		cmocka_unit_test_setup(test_program_double_words, setup),
 		cmocka_unit_test_setup(test_can_pins, setup),
+		cmocka_unit_test_setup(test_nmi_flash_ecc_claims_calibration_only, setup),
+		cmocka_unit_test_setup(test_calib_power_cut_every_double_word, setup),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -5,7 +5,9 @@
 #   - worst-case stack (tools/stack_usage.py),
 #   - instructions per classification (the golden vectors, tv_target.c) and
 #     per 1 ms monitor step (bench_step.c) on the Cortex-M4F (float) and the
-#     Cortex-M3 (fixed), under "qemu-system-arm -icount shift=0": virtual
+#     Cortex-M3 (fixed), and on the STM32G474 image's HAL (float; its step
+#     also with four corners on inputs in 64-byte CAN FD frames with E2E
+#     P05, bench_step.c's BENCHFD4 / BENCHFDS4), under "qemu-system-arm -icount shift=0": virtual
 #     time advances 1 ns per instruction, SysTick counts virtual time, and a
 #     loop of 200000 known instructions converts ticks to instructions. The
 #     timer reads around each measured call (a few tens of instructions) are
@@ -14,11 +16,13 @@
 set -u
 cd "$(dirname "$0")/../../.."
 echo "-- image sizes"
-for elf in build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf; do
+# the G4's RAM includes its FD frame queues (64-byte frames)
+for elf in build/stm32f4/squeal-monitor.elf build/stm32f103/squeal-monitor.elf \
+	build/stm32g474/squeal-monitor.elf; do
 	tests/system/target/size-report.sh "$elf"
 done
 echo "-- worst-case stack (main loop + every interrupt nested + exception frames)"
-for cfg in stm32f4 stm32f103; do
+for cfg in stm32f4 stm32f103 stm32g474; do
 	printf '%-10s ' "$cfg"
 	/usr/bin/python3 tools/stack_usage.py "build/$cfg/squeal-monitor.elf" "build/$cfg/fw" | tail -1
 done
@@ -29,7 +33,8 @@ qemu() { # machine elf
 kv() { echo "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
 echo "-- instructions (qemu-system-arm -icount shift=0)"
 for m in "M4F-float netduinoplus2 build/tv-m4f/model-vectors.elf build/bench-m4f/bench-step.elf" \
-	 "M3-fixed  netduino2 build/tv-m3/model-vectors.elf build/bench-m3/bench-step.elf"; do
+	 "M3-fixed  netduino2 build/tv-m3/model-vectors.elf build/bench-m3/bench-step.elf" \
+	 "G4-float  netduinoplus2 build/tv-g4/model-vectors.elf build/bench-g4/bench-step.elf"; do
 	set -- $m
 	name=$1 machine=$2 tv=$3 bs=$4
 	t=$(qemu "$machine" "$tv" | grep '^TIMING')
@@ -53,12 +58,14 @@ for m in "M4F-float netduinoplus2 build/tv-m4f/model-vectors.elf build/bench-m4f
 			name, (sft / sf - ov) * kb, sf, cls
 		printf "%s   without frames: mean %6.0f\n", name, ((stot - sft) / (steps - sf) - ov) * kb
 	}'
-	for tag in BENCH4 BENCHS BENCHS4; do
+	for tag in BENCH4 BENCHS BENCHS4 BENCHFD4 BENCHFDS4; do
 		bx=$(echo "$out" | grep "^$tag ")
 		case $tag in
 		BENCH4) what="1 ms step, 4 corners:" ;;
 		BENCHS) what="1 ms step, sigma on:" ;;
 		BENCHS4) what="1 ms step, 4 corners, sigma on:" ;;
+		BENCHFD4) what="1 ms step, 4 corners, FD 64-byte P05 inputs:" ;;
+		BENCHFDS4) what="1 ms step, 4 corners, FD 64-byte P05 inputs, sigma on:" ;;
 		esac
 		[ -n "$bx" ] && awk -v name="$name" -v what="$what" -v cali="$(kv "$bx" cal_insns)" \
 		    -v bcal="$(kv "$bx" cal_ticks)" -v steps="$(kv "$bx" steps)" \

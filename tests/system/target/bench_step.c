@@ -10,10 +10,15 @@
  * the HAL calls. Timing as tv_target.c: bench_ticks() and a calibration loop.
  * Then the same with four corners on the same frames ("BENCH4"): every
  * step feeds, ticks and drains all four, and classifies at most one.
+ * On an FD controller (no HAL_CAN_CLASSIC_ONLY: the G4) also four corners
+ * on an input map whose two signals sit deep in 64-byte CAN FD frames with
+ * E2E Profile 5 ("BENCHFD4", with deviations "BENCHFDS4"): the input stage
+ * then checks a CRC-16 over 64 bytes per frame and corner.
  */
 #include "calib.h"
 #include "calib_map.h"
 #include "e2e_p01.h"
+#include "e2e_p05.h"
 #include "hal.h"
 #include "bench_ticks.h"
 #include "stm32_board.h"
@@ -61,6 +66,30 @@ static hal_can_frame_t make_frame(uint32_t id, uint16_t data_id, e2e_p01_tx_t *t
 	return f;
 }
 
+#ifndef HAL_CAN_CLASSIC_ONLY
+/* The FD map's frame of input in: 64 bytes of filler (other signals of the
+ * message), the value at its place, P05 at in->e2e_offset_byte. */
+static hal_can_frame_t make_fd_frame(const calib_input_t *in, e2e_p01_tx_t *tx, uint16_t raw)
+{
+	hal_can_frame_t f = { 0 };
+	const e2e_p05_config_t cfg = { in->data_id, in->min_dlc, in->e2e_offset_byte,
+				       in->max_delta_counter };
+	uint32_t i;
+
+	f.id = in->id;
+	f.flags = (uint8_t)(HAL_CAN_FLAG_FDF | HAL_CAN_FLAG_BRS);
+	f.dlc = in->min_dlc;
+	for (i = 0U; i < f.dlc; i++) {
+		f.data[i] = (uint8_t)(0xA5U ^ i);
+	}
+	can_signal_put(&in->sig, f.data, raw);
+	if (e2e_p05_protect(&cfg, tx, f.data, f.dlc) != SQ_OK) {
+		f.dlc = 0U;
+	}
+	return f;
+}
+#endif
+
 static uint32_t speed_raw_at(uint32_t frame_no)
 {
 	static const uint16_t dwell[3] = { 2500U, 1250U, 900U };
@@ -86,6 +115,10 @@ typedef struct {
 static void run(monitor_t *mons, uint32_t n_corners, const calib_t *cal, uint32_t overhead,
 		bench_t *b)
 {
+#ifndef HAL_CAN_CLASSIC_ONLY
+	/* P05-protected inputs: the map's FD frames (input 0 speed, 1 force) */
+	const bool fd_map = (cal->n_corners != 0U) && (cal->inputs[0].protection == (uint8_t)CALIB_PROT_P05);
+#endif
 	e2e_p01_tx_t tx_speed = { 0U };
 	e2e_p01_tx_t tx_force = { 0U };
 	uint64_t now_us = 1000000U;
@@ -116,9 +149,18 @@ static void run(monitor_t *mons, uint32_t n_corners, const calib_t *cal, uint32_
 		if (frames) {
 			const uint32_t raw = speed_raw_at(frames_sent++);
 
-			f = make_frame(MSG_DISC_SPEED_ID, MSG_DISC_SPEED_DATA_ID, &tx_speed, (uint16_t)raw);
+#ifndef HAL_CAN_CLASSIC_ONLY
+			if (fd_map) {
+				f = make_fd_frame(&cal->inputs[0], &tx_speed, (uint16_t)raw);
+				g = make_fd_frame(&cal->inputs[1], &tx_force, FORCE_RAW);
+			} else
+#endif
+			{
+				f = make_frame(MSG_DISC_SPEED_ID, MSG_DISC_SPEED_DATA_ID, &tx_speed,
+					       (uint16_t)raw);
+				g = make_frame(MSG_PAD_FORCE_ID, MSG_PAD_FORCE_DATA_ID, &tx_force, FORCE_RAW);
+			}
 			f.timestamp_us = now_us;
-			g = make_frame(MSG_PAD_FORCE_ID, MSG_PAD_FORCE_DATA_ID, &tx_force, FORCE_RAW);
 			g.timestamp_us = now_us;
 			for (c = 0U; c < n_corners; c++) {
 				monitor_on_frame(&mons[c], &f);
@@ -179,10 +221,42 @@ static void sd_on(calib_sd_t *sd)
 	sd->slope_delta_mu_corr_q30 = 912680550;
 }
 
+#ifndef HAL_CAN_CLASSIC_ONLY
+/* cal4's inputs moved into 64-byte FD messages with E2E P05: the speed at
+ * bytes 40..41, the force at 56..57 (Intel), the P05 header at bytes 0..2;
+ * the same raw scaling, identifiers and corners. */
+static void fd_map_of(const calib_t *cal4, calib_t *fd)
+{
+	static const uint16_t start_bit[2] = { 320U, 448U };
+	static const uint16_t data_id[2] = { 0x0A10U, 0x0A11U };
+	uint32_t i;
+
+	*fd = *cal4;
+	for (i = 0U; i < 2U; i++) {
+		calib_input_t *in = &fd->inputs[i];
+
+		in->fd = 1U;
+		in->min_dlc = 64U;
+		in->sig = (can_signal_t){ start_bit[i], 16U, (uint8_t)CAN_SIGNAL_INTEL, 0U };
+		in->protection = (uint8_t)CALIB_PROT_P05;
+		in->data_id = data_id[i];
+		in->e2e_offset_byte = 0U;
+		in->max_delta_counter = 1U;
+	}
+	if (calib_validate(fd) != SQ_OK) {
+		semihost_write0("BENCHFD map refused by calib_validate\n");
+		semihost_exit(1U);
+	}
+}
+#endif
+
 int squeal_main(volatile const bool *stop)
 {
 	static calib_t cal;
 	static calib_t cal4;
+#ifndef HAL_CAN_CLASSIC_ONLY
+	static calib_t calfd;
+#endif
 	static monitor_t mons[CALIB_MAX_CORNERS];
 	calib_corner_t c0;
 	bench_t b;
@@ -220,6 +294,11 @@ int squeal_main(volatile const bool *stop)
 	report("BENCH", &b, overhead, cal_ticks);
 	run(mons, CALIB_MAX_CORNERS, &cal4, overhead, &b);
 	report("BENCH4", &b, overhead, cal_ticks);
+#ifndef HAL_CAN_CLASSIC_ONLY
+	fd_map_of(&cal4, &calfd);
+	run(mons, CALIB_MAX_CORNERS, &calfd, overhead, &b);
+	report("BENCHFD4", &b, overhead, cal_ticks);
+#endif
 	/* the same with standard deviations calibrated (issue 12): every
 	 * classification also propagates them (the corners inherit the flat
 	 * deviations: set them on each) */
@@ -232,5 +311,10 @@ int squeal_main(volatile const bool *stop)
 	report("BENCHS", &b, overhead, cal_ticks);
 	run(mons, CALIB_MAX_CORNERS, &cal4, overhead, &b);
 	report("BENCHS4", &b, overhead, cal_ticks);
+#ifndef HAL_CAN_CLASSIC_ONLY
+	fd_map_of(&cal4, &calfd);
+	run(mons, CALIB_MAX_CORNERS, &calfd, overhead, &b);
+	report("BENCHFDS4", &b, overhead, cal_ticks);
+#endif
 	semihost_exit(0U);
 }

@@ -5,7 +5,8 @@
  * regsim/f4. Two registers are the test's functions: FLASH_KEYR appends to
  * a log (the unlock sequence is checked), FLASH_CR is handed out by the
  * test, which clears LOCK once the log ends in KEY1, KEY2 (RM0440 3.3),
- * and FLASH_SR too, so that a write clears the flags it has 1s for.
+ * and FLASH_SR too, so that a write clears the flags it has 1s for; the
+ * flash's bytes are read through the test (regsim_flash_load8).
  * Built without PIE: the calibration's addresses fit in 32 bits as on the
  * chip.
  */
@@ -22,6 +23,7 @@ volatile uint32_t *regsim_flash_cr(void);
 volatile uint32_t *regsim_flash_sr(void);
 extern uint8_t regsim_flash_mem[];
 #undef RCC_BASE
+#undef IWDG_BASE
 #undef PWR_BASE
 #undef FLASH_R_BASE
 #undef TIM17_BASE
@@ -32,7 +34,10 @@ extern uint8_t regsim_flash_mem[];
 #undef FLASH_SR
 #undef CHIP_FLASH_BASE
 #undef CHIP_FLASH_BANK2
+#undef CHIP_FLASH_LOAD8
 #define RCC_BASE ((uintptr_t)regsim_rcc)
+extern uint32_t regsim_iwdg[4];
+#define IWDG_BASE ((uintptr_t)regsim_iwdg) /* kicked by calib_flash.c */
 #define PWR_BASE ((uintptr_t)regsim_pwr)
 #define FLASH_R_BASE ((uintptr_t)regsim_flash)
 #define TIM17_BASE ((uintptr_t)regsim_tim17)
@@ -45,5 +50,10 @@ extern uint8_t regsim_flash_mem[];
  * below its last 8 KiB (the calibration), which are all it holds. */
 #define CHIP_FLASH_BASE ((uint32_t)(uintptr_t)regsim_flash_mem - 0x7E000U)
 #define CHIP_FLASH_BANK2 (CHIP_FLASH_BASE + 0x40000U)
+/* chip_flash_read's loads: the test's flash, where a double word a power
+ * cut interrupted has an ECC double error and its read raises the "NMI"
+ * (FLASH_ECCR set, chip_nmi_flash_ecc() called, as the core would) */
+uint8_t regsim_flash_load8(uint32_t addr);
+#define CHIP_FLASH_LOAD8(addr) regsim_flash_load8(addr)
 
 #endif /* REGSIM_G4_CHIP_H */
