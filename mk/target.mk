@@ -218,3 +218,7 @@ TEST_PROGS += tests/system/target/run-ecu-contract.sh
 # netduinoplus2 (flash at 0x08000000, SRAM at 0x20000000; no G4 RCC, no
 # FDCAN there: clock fallback and CAN init faults, bounded waits)
 $(eval $(call arm_config,stm32g474-ecutest,stm32g474,float,-DSQ_TARGET_TEST,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32g474) $(HAL_TEST_SRCS),$(LDS_stm32g474)))
+# ... and its NMI handler (flash ECC check first) on a non-ECC NMI
+$(eval $(call arm_config,stm32g474-nmitest,stm32g474,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_NMI,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32g474) $(HAL_TEST_SRCS),$(LDS_stm32g474)))
+tests/system/target/run-ecu-nmi-g4.sh: build/stm32g474-nmitest/squeal-monitor.elf
+TEST_PROGS += tests/system/target/run-ecu-nmi-g4.sh
