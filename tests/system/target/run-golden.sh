@@ -87,11 +87,13 @@ for v in g4-float g4-fixed; do
 		ko "$v: no unavailable-peripheral events in $out/$v-target.txt"
 	fi
 done
-if tests/system/target/check-no-float.sh build/tv-m3/model-vectors.elf; then
-	ok "fixed M3 test image has no floating point"
-else
-	ko "fixed M3 test image contains floating point"
-fi
+for elf in build/tv-m3/model-vectors.elf build/tv-g4-fixed/model-vectors.elf; do
+	if tests/system/target/check-no-float.sh "$elf"; then
+		ok "fixed test image $elf has no floating point"
+	else
+		ko "fixed test image $elf contains floating point"
+	fi
+done
 
 echo "RESULT: $pass passed, $fail failed"
 [ "$fail" = 0 ]
