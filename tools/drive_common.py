@@ -11,7 +11,7 @@ its own status_id/detail_id/detail2_id, by default the flat ones + 0x10 x
 its position (FL 0, FR 1, RL 2, RR 3), as host-sim/calib_sections.c does.
 
 The map's regions and borders come from tools/plots/plotlib.py: the closed
-forms of shared/model.md (Hopf border Q = 1/2; the exact criterion's limit
+forms of docs/model.md (Hopf border Q = 1/2; the exact criterion's limit
 ln 2Q = ln(2 I1(s)/s), or the paper's cubic one), in double precision with
 scipy, independent of the firmware.
 """
