@@ -31,10 +31,13 @@ def main():
     ap.add_argument("--drive-csv", required=True, metavar="DRIVE.csv",
                     help="where to write the drive CSV for tools/plots/plot_drive.py")
     args = ap.parse_args()
-    with open(args.frames_csv, newline="") as f:
-        rows = list(csv.DictReader(f))
+    try:
+        with open(args.frames_csv, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        sys.exit("demo_timeline: %s: %s" % (args.frames_csv, e.strerror))
     if not rows:
-        sys.exit("demo_timeline: no frames")
+        sys.exit("demo_timeline: %s: no frames" % args.frames_csv)
     t_end = float(rows[-1]["time_s"]) or 1.0
     tty = sys.stdout.isatty()
     v0 = force = None

@@ -95,7 +95,10 @@ def main(argv):
     ap.add_argument("--out", default="docs/examples", metavar="DIR",
                     help="folder the three files are written to (default docs/examples)")
     args = ap.parse_args(argv)
-    os.makedirs(args.out, exist_ok=True)
+    try:
+        os.makedirs(args.out, exist_ok=True)
+    except OSError as e:
+        sys.exit("gen_calib_examples.py: --out %s: %s" % (args.out, e.strerror))
     rng = np.random.default_rng(SEED)
     with open(os.path.join(args.out, "dyno.csv"), "w", encoding="ascii") as f:
         f.write("# brake dynamometer run (synthetic, tools/gen_calib_examples.py): "

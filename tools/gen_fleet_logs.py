@@ -80,7 +80,12 @@ def main():
     if args.count < 1 or not 0 <= args.broken < args.count:
         ap.error("need --count >= 1 and 0 <= --broken < --count (broken logs are made from good ones)")
     rnd = random.Random(args.seed)
-    os.makedirs(args.out, exist_ok=True)
+    if not os.access(args.sim, os.X_OK):
+        sys.exit("gen_fleet_logs.py: --sim %s: no such program (make build/host/squeal-sim)" % args.sim)
+    try:
+        os.makedirs(args.out, exist_ok=True)
+    except OSError as e:
+        sys.exit("gen_fleet_logs.py: --out %s: %s" % (args.out, e.strerror))
     files = sorted(os.path.join(ROOT, "scenarios", f) for f in os.listdir(os.path.join(ROOT, "scenarios")))
     kinds = {}
     good = []

@@ -151,7 +151,18 @@ def main():
     ap.add_argument("--prefix", default="arm-none-eabi-", metavar="PREFIX",
                     help="binutils prefix of objdump/nm (default arm-none-eabi-)")
     a = ap.parse_args()
+    for path, kind in ((a.elf, os.path.isfile), (a.build_dir, os.path.isdir)):
+        if not kind(path):
+            sys.exit("stack_usage.py: %s: no such %s" % (path, "file" if kind is os.path.isfile else "folder"))
+    try:
+        return report(a)
+    except FileNotFoundError as e:
+        sys.exit("stack_usage.py: %s not found (Debian's binutils-arm-none-eabi)" % e.filename)
+    except subprocess.CalledProcessError as e:
+        sys.exit("stack_usage.py: %s failed: %s" % (" ".join(e.cmd), "; ".join((e.stderr or "").strip().splitlines()[-1:])))
 
+
+def report(a):
     su = load_su(a.build_dir)
     ci_indirect = load_ci_indirect(a.build_dir)
     syms, calls, indirect, prologue = parse_elf(a.prefix, a.elf)
