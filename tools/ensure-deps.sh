@@ -4,7 +4,7 @@
 # purpose needs are installed and installs the missing ones (apt-get, as
 # root), else prints the one apt-get line that does. Cheap when everything is
 # there (one dpkg-query per package).
-#   tools/ensure-deps.sh demo|plots|fleet|vehicle|live|flash|test
+#   usage: tools/ensure-deps.sh demo|plots|fleet|vehicle|live|flash|test
 # Each list is what that purpose's programs really import or run:
 #   demo     squeal-sim, tools/demo_timeline.py, tools/plots/ (matplotlib,
 #            numpy, and scipy for the closed-form borders in plotlib.py)

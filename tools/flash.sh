@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Flash an ECU image through an ST-LINK with OpenOCD: program, verify, reset.
-#   tools/flash.sh [--dry-run] [--target stm32f4|stm32f103|stm32g474] IMAGE.elf
+#   usage: tools/flash.sh [--dry-run] [--target stm32f4|stm32f103|stm32g474] IMAGE.elf
 # --dry-run prints the exact command line instead of running it.
 # The ELF (or HEX) is flashed, never the .bin: only the sectors the image
 # covers are erased, so the calibration sectors keep their contents.

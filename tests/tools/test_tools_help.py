@@ -48,7 +48,8 @@ def main():
             missing = H.undocumented_options(out)
             check(not missing, "%s --help: every option has a help line" % rel, ", ".join(missing))
         else:
-            check(len(out.strip().splitlines()) >= 2, "%s --help describes the script" % rel, out.strip())
+            check(len(out.strip().splitlines()) >= 2 and "usage" in out.lower(),
+                  "%s --help describes the script and its usage (and runs nothing)" % rel, out.strip()[:200])
     print("RESULT: %d passed, %d failed, %d skipped" % (passed, failed, skipped))
     return 1 if failed else 0
 
