@@ -12,18 +12,16 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
 import help_checks as H  # noqa: E402
+from checks import Checks  # noqa: E402
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 BUILDS = (("float", "build/host/squeal-sim"), ("fixed", "build/host-fixed/squeal-sim"))
 
-passed = failed = 0
+_C = Checks()
 
 
 def check(ok, what, detail=""):
-    global passed, failed
-    print(("PASS  " if ok else "FAIL  ") + what + ("" if ok or not detail else ": " + detail))
-    passed += ok
-    failed += not ok
+    _C.check(ok, what + ("" if ok or not detail else ": " + detail))
 
 
 def main():
@@ -52,8 +50,7 @@ def main():
             check("--help" in described, where + ": --help has its line")
             if cmd == "replay":
                 check("--quiet" in described, where + ": --quiet is described")
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 1 if failed else 0
+    return _C.finish()
 
 
 if __name__ == "__main__":

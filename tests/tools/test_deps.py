@@ -15,6 +15,8 @@ import sys
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import deps  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks  # noqa: E402
 
 # tool -> the Debian packages it must name when none of them is importable
 TOOLS = {
@@ -26,14 +28,11 @@ TOOLS = {
     "tools/fleet.py": ["python3-numpy", "python3-scipy", "python3-matplotlib"],
 }
 
-passed = failed = 0
+_C = Checks()
 
 
 def check(ok, what, detail=""):
-    global passed, failed
-    print(("PASS  " if ok else "FAIL  ") + what + ("" if ok or not detail else ": " + detail))
-    passed += ok
-    failed += not ok
+    _C.check(ok, what + ("" if ok or not detail else ": " + detail))
 
 
 def main():
@@ -65,8 +64,7 @@ def main():
               "message under Debian's interpreter: packages and the apt-get line only", msg)
     finally:
         sys.executable = real
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 1 if failed else 0
+    return _C.finish()
 
 
 if __name__ == "__main__":

@@ -13,17 +13,17 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks  # noqa: E402
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 FLASH = os.path.join(ROOT, "tools", "flash.sh")
 
-passed = failed = 0
+_C = Checks()
 
 
 def check(ok, what, detail=""):
-    global passed, failed
-    print(("PASS  " if ok else "FAIL  ") + what + ("" if ok or not detail else ": " + detail))
-    passed += ok
-    failed += not ok
+    _C.check(ok, what + ("" if ok or not detail else ": " + detail))
 
 
 def run(args, path, cwd):
@@ -70,8 +70,7 @@ def main():
             else:
                 check(r.returncode == 0 and "flash.sh:" not in r.stderr + r.stdout and "Verified OK" in r.stdout,
                       "a successful flash: OpenOCD's lines, exit 0", r.stdout + r.stderr)
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 1 if failed else 0
+    return _C.finish()
 
 
 if __name__ == "__main__":

@@ -11,6 +11,8 @@ import sys
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import helptext  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import Checks  # noqa: E402
 
 DOC = """Do one thing, completely.
 
@@ -20,14 +22,11 @@ Lines kept
   exactly as written.
 """
 
-passed = failed = 0
+_C = Checks()
 
 
 def check(ok, what, detail=""):
-    global passed, failed
-    print(("PASS  " if ok else "FAIL  ") + what + ("" if ok or not detail else ": " + detail))
-    passed += ok
-    failed += not ok
+    _C.check(ok, what + ("" if ok or not detail else ": " + detail))
 
 
 def main():
@@ -45,8 +44,7 @@ def main():
     r = subprocess.run(["/usr/bin/python3", mod], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     check(r.returncode == 2 and r.stderr.count("\n") == 1 and "nothing to run" in r.stderr,
           "a module run without --help: one line, exit 2", r.stderr)
-    print("RESULT: %d passed, %d failed" % (passed, failed))
-    return 1 if failed else 0
+    return _C.finish()
 
 
 if __name__ == "__main__":
