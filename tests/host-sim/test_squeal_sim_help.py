@@ -1,10 +1,12 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""squeal-sim --help, --version and every subcommand's --help (float and
-fixed builds): exit 0, nothing written to the working folder, a first
-paragraph that ends a sentence, and every --option of the usage described on
-an option line of its own. The subcommands are the ones `squeal-sim --help`
-lists; replay's --quiet is among them.
+"""The descriptions of squeal-sim's commands are whole: the first paragraph
+of `squeal-sim CMD --help` after the usage ends a sentence, for every
+command `squeal-sim --help` lists, in both numeric builds.
+
+(tests/host-sim/test_cli_help.py checks the rest of every --help: exit
+status, no side effects, each option of the tables described, --version;
+tests/host-sim/test_cmd_replay_quiet.py replay's --quiet.)
 """
 import os
 import re
@@ -31,25 +33,12 @@ def main():
             check(False, "%s exists (make %s)" % (rel, rel))
             continue
         rc, out, written = H.run_help([sim, "--help"])
-        check(rc == 0 and not written, "%s --help exits 0, writes nothing" % rel, "exit %s %s" % (rc, written))
         cmds = re.findall(r"^  ([a-z][a-z-]*) +\S", out.split("commands:", 1)[-1], re.M)
-        check(len(cmds) >= 9, "%s --help lists the commands (%s)" % (rel, " ".join(cmds)))
-        rc, out, written = H.run_help([sim, "--version"])
-        check(rc == 0 and re.fullmatch(r"squeal-sim \d+\.\d+\.\d+ \(numeric build: %s\)\n" % numeric, out) is not None,
-              "%s --version names the version and the %s build" % (rel, numeric), out.strip())
+        check(rc == 0 and len(cmds) >= 9, "%s --help lists the commands (%s)" % (rel, " ".join(cmds)))
         for cmd in cmds:
             rc, out, written = H.run_help([sim, cmd, "--help"])
-            where = "%s %s --help" % (rel, cmd)
-            check(rc == 0, where + " exits 0", "exit %s" % rc)
-            check(not written, where + " writes nothing to the working folder", " ".join(written))
-            check(H.first_sentence_complete(out), where + ": the description is a full sentence",
-                  repr(H.description(out)[-70:]))
-            described = H.option_lines(out)
-            missing = [o for o in H.usage_options(out) if o not in described]
-            check(not missing, where + ": every option of the usage has its line", " ".join(missing))
-            check("--help" in described, where + ": --help has its line")
-            if cmd == "replay":
-                check("--quiet" in described, where + ": --quiet is described")
+            check(rc == 0 and H.first_sentence_complete(out),
+                  "%s %s --help: the description is a full sentence" % (rel, cmd), repr(H.description(out)[-70:]))
     return _C.finish()
 
 

@@ -6,8 +6,7 @@ there; the other functions read the text:
   - description(): the first paragraph after the usage, which must end a
     sentence (no description cut mid-way);
   - undocumented_options(): option entries of the option lists without a
-    help text (argparse prints "  --opt X" alone then);
-  - usage_options(): every --option named in the usage lines.
+    help text (argparse prints "  --opt X" alone then).
 """
 import os
 import re
@@ -90,12 +89,3 @@ def undocumented_options(text):
             continue
         out.append(entry)
     return out
-
-
-def usage_options(text):
-    return sorted(set(re.findall(r"(?<![\w-])(--[a-z0-9][a-z0-9-]*)", "\n".join(usage_lines(text)))))
-
-
-def option_lines(text):
-    """--options that start an entry of an option list (possibly after a short form)."""
-    return set(re.findall(r"^\s+(?:-\w(?: \S+)?, )?(--[a-z0-9][a-z0-9-]*)", text, re.M))
