@@ -1,12 +1,14 @@
 # SPDX-License-Identifier: MIT
 # Brake-squeal monitor: one Makefile for host programs, tests, benchmarks and
 # the ECU images. Area-specific rules live in mk/*.mk and add themselves to
-# the lists below (TEST_PROGS, BENCH_PROGS, ALL_TARGETS).
+# the lists below (TEST_PROGS, BENCH_PROGS, BENCH_FULL_PROGS, ALL_TARGETS).
 #
 #   make            host programs: build/host/squeal-sim (float),
 #                   build/host-fixed/squeal-sim (fixed point)
 #   make test       every test; ends with "N passed, N failed, N skipped"
-#   make bench      benchmarks (figures, never pass/fail)
+#   make bench      the quick benchmarks (figures, never pass/fail; under 10 min)
+#   make bench-full those and the slow ones (mutation score, callgrind of
+#                   every poll, the long soak)
 #   make demo       the main job (see README)
 
 .DEFAULT_GOAL := all
@@ -69,6 +71,7 @@ LDLIBS_host := -lm
 
 TEST_PROGS :=
 BENCH_PROGS :=
+BENCH_FULL_PROGS :=
 ALL_TARGETS :=
 
 include $(sort $(wildcard mk/*.mk))
@@ -80,7 +83,7 @@ build/$(1)/squeal-sim: $$(patsubst %.c,build/$(1)/app/%.o,$$(sort $$(SIM_SRCS)))
 endef
 $(foreach v,$(VARIANTS),$(eval $(call sim_program,$(v))))
 
-.PHONY: all test bench demo clean
+.PHONY: all test bench bench-full demo clean
 all: $(ALL_TARGETS)
 
 # The README's commands install what they need (tools/ensure-deps.sh), then
@@ -96,8 +99,12 @@ test: deps-test
 	@$(MAKE) --no-print-directory -j$$(nproc) $(TEST_PROGS) >build/test-build.log 2>&1 || { tail -n 40 build/test-build.log; exit 1; }
 	@tests/run-tests.sh $(TEST_PROGS)
 
+# make builds what the bench programs run; tests/support/run-bench.sh runs
+# them with progress on a terminal and their times at the end.
 bench: $(BENCH_PROGS)
-	@for b in $(BENCH_PROGS); do echo "== $$b"; $$b || exit 1; done
+	@tests/support/run-bench.sh $(BENCH_PROGS)
+bench-full: $(BENCH_PROGS) $(BENCH_FULL_PROGS)
+	@tests/support/run-bench.sh $(BENCH_PROGS) $(BENCH_FULL_PROGS)
 
 clean:
 	rm -rf build

@@ -79,7 +79,7 @@ static int classify_parse(int argc, char **argv, classify_args_t *a)
 			    "         [--criterion exact|cubic] [--json]\n"
 			    "       squeal-sim classify --v0 MPS --force N --calib FILE [--corner POS] [--json]",
 		.description = "Classifies one operating point of the friction oscillator as stable,\n"
-			       "bistable, unstable or not sliding (shared/model.md), with its margins.",
+			       "bistable, unstable or not sliding (docs/model.md), with its margins.",
 		.closing = "The vehicle speed shown is v0 x wheel radius / pad radius (--calib: its\n"
 			   "corner's radii; else 0.30 m / 0.12 m).\n"
 			   "Exit status: 0 classified, 1 input outside the model's domain\n"

@@ -3,8 +3,14 @@
 #   build/host/tests/firmware/model/bench_squeal_model        float build, -O2, no sanitizers
 #   build/host-fixed/tests/firmware/model/bench_squeal_model  fixed build
 #   tests/firmware/model/bench_squeal_model.sh    both builds, callgrind counts, brute force
-# and the test of the brute-force reference against model.md section 6:
+# and the test of the brute-force reference against the model's tabulated cycles:
 #   build/test/tests/support/test_brute_force
+#
+# make bench runs BENCH_PROGS, the quick figures (under 10 minutes on two
+# cores); make bench-full adds BENCH_FULL_PROGS, the slow ones. A fragment
+# adds a slow benchmark with BENCH_FULL_PROGS += PROG. The slow ones here:
+#   tools/mutate.py                  the mutation score (make mutate; docs/mutation.md)
+#   tests/system/soak/soak-replay.sh 10^7 frames through replay (make soak-replay)
 BENCH_MODEL_VARIANTS := host host-fixed
 BENCH_MODEL_SRCS := tests/firmware/model/bench_squeal_model.c tests/support/brute_force.c host-sim/sim_num.c
 
@@ -25,3 +31,7 @@ tests/firmware/model/bench_squeal_model.sh: $(foreach v,$(BENCH_MODEL_VARIANTS),
 ALL_TARGETS += $(foreach v,$(BENCH_MODEL_VARIANTS),build/$(v)/tests/firmware/model/bench_squeal_model)
 BENCH_PROGS += tests/firmware/model/bench_squeal_model.sh
 TEST_PROGS += build/test/tests/support/test_brute_force
+
+# make builds what they run (mutate.py builds its own scratch tree)
+tests/system/soak/soak-replay.sh: build/host/squeal-sim build/host/soak_log_count
+BENCH_FULL_PROGS += tools/mutate.py tests/system/soak/soak-replay.sh

@@ -47,7 +47,8 @@ build/$(1)/tests/firmware/monitor/bench_monitor_step: build/$(1)/app/tests/firmw
 endef
 $(foreach v,$(MONITOR_COST_VARIANTS),$(eval $(call monitor_cost_rules,$(v))))
 tests/firmware/monitor/bench_monitor_cost.sh: $(foreach v,$(MONITOR_COST_VARIANTS),build/$(v)/tests/firmware/monitor/bench_monitor_step)
-BENCH_PROGS += tests/firmware/monitor/bench_monitor_cost.sh
+# callgrind of every poll of four runs: minutes, so in make bench-full
+BENCH_FULL_PROGS += tests/firmware/monitor/bench_monitor_cost.sh
 .PHONY: monitor-cost
 monitor-cost: tests/firmware/monitor/bench_monitor_cost.sh
 	tests/firmware/monitor/bench_monitor_cost.sh

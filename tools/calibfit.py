@@ -15,8 +15,12 @@ import os
 import re
 import sys
 
-import numpy as np
-from scipy import stats
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import deps  # noqa: E402  (names the Debian package of a missing module)
+
+deps.need("numpy", "scipy")
+import numpy as np  # noqa: E402
+from scipy import stats  # noqa: E402
 
 EXIT_REFUSED = 1
 EXIT_INTERNAL = 3
@@ -92,16 +96,18 @@ def read_csv(path, layouts):
 
 def add_output_args(ap, plot_help):
     """The options both fitters share: where the result goes."""
-    ap.add_argument("--base", help="calibration file whose other keys are kept")
-    ap.add_argument("-o", "--output", help="calibration file to write ('-' = stdout)")
+    ap.add_argument("--base", metavar="FILE.cal", help="calibration file whose other keys are kept")
+    ap.add_argument("-o", "--output", metavar="FILE.cal", help="calibration file to write ('-' = stdout)")
     ap.add_argument("--no-sd", action="store_true",
                     help="leave the standard deviations out of the calibration file")
-    ap.add_argument("--plot", help=plot_help)
-    ap.add_argument("--json", action="store_true")
+    ap.add_argument("--plot", metavar="FILE.png", help=plot_help)
+    ap.add_argument("--json", action="store_true", help="print the result as one JSON object (below)")
 
 
 def pyplot():
     """matplotlib's pyplot without a display (imported only to plot)."""
+    import deps
+    deps.need("matplotlib")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -190,3 +196,8 @@ def read_calib(path):
             k, v = (x.strip() for x in body.split("=", 1))
             out[k] = v
     return out
+
+
+if __name__ == "__main__":
+    import helptext
+    helptext.module_main(__doc__, "tools/calibfit.py")

@@ -377,3 +377,8 @@ def _canmatrix(tmp, path):
     if len(dbs) != 1 or not list(dbs.values())[0].frames:
         raise DbcRefusal("%s holds no CAN database with messages" % path)
     return list(dbs.values())[0], residual
+
+
+if __name__ == "__main__":
+    import helptext
+    helptext.module_main(__doc__, "tools/dbc_tolerant.py")

@@ -7,7 +7,15 @@
 #   on vcan0 when this machine has a usable one (plant, ecu and candump in
 #   real time), otherwise on an in-process virtual CAN bus in virtual time
 #   (squeal-sim replay): the same firmware, said plainly below.
+#   usage: tools/demo.sh        (make demo builds build/host/squeal-sim first)
+# Environment: DEMO_OUT (default build/demo), DEMO_SCENARIO (a plant
+# scenario, default stop), DEMO_IFACE (default vcan0).
 set -euo pipefail
+case "${1:-}" in
+-h|--help) sed -n '3,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+'') ;;
+*) echo "usage: tools/demo.sh (no arguments; see tools/demo.sh --help)" >&2; exit 2 ;;
+esac
 cd "$(dirname "$0")/.."
 SIM=build/host/squeal-sim
 OUT=${DEMO_OUT:-build/demo}

@@ -8,9 +8,12 @@ and margins at that moment, compares each border crossing with the model's
 closed-form prediction for the measured force, and writes the drive CSV
 (time_s,v0_mps,force_n,state,warning) that tools/plots/plot_drive.py draws.
 """
-import argparse
 import csv
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import helptext  # noqa: E402
 
 R_P, R_W = 0.12, 0.30            # default calibration (model.md section 8)
 STATES = {0: "stable", 1: "bistable", 2: "unstable", 3: "not sliding", 15: "FAULT"}
@@ -23,14 +26,18 @@ def bar(frac, width=30):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("frames_csv")
-    ap.add_argument("--drive-csv", required=True)
+    ap = helptext.parser(__doc__, "tools/demo_timeline.py")
+    ap.add_argument("frames_csv", metavar="FRAMES.csv", help="the bus log as `squeal-sim decode --csv` prints it")
+    ap.add_argument("--drive-csv", required=True, metavar="DRIVE.csv",
+                    help="where to write the drive CSV for tools/plots/plot_drive.py")
     args = ap.parse_args()
-    with open(args.frames_csv, newline="") as f:
-        rows = list(csv.DictReader(f))
+    try:
+        with open(args.frames_csv, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        sys.exit("demo_timeline: %s: %s" % (args.frames_csv, e.strerror))
     if not rows:
-        sys.exit("demo_timeline: no frames")
+        sys.exit("demo_timeline: %s: no frames" % args.frames_csv)
     t_end = float(rows[-1]["time_s"]) or 1.0
     tty = sys.stdout.isatty()
     v0 = force = None

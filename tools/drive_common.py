@@ -11,7 +11,7 @@ its own status_id/detail_id/detail2_id, by default the flat ones + 0x10 x
 its position (FL 0, FR 1, RL 2, RR 3), as host-sim/calib_sections.c does.
 
 The map's regions and borders come from tools/plots/plotlib.py: the closed
-forms of shared/model.md (Hopf border Q = 1/2; the exact criterion's limit
+forms of docs/model.md (Hopf border Q = 1/2; the exact criterion's limit
 ln 2Q = ln(2 I1(s)/s), or the paper's cubic one), in double precision with
 scipy, independent of the firmware.
 """
@@ -23,6 +23,10 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+import deps  # noqa: E402  (names the Debian package of a missing module)
+
+deps.need("numpy", "scipy", "matplotlib")
 sys.path.insert(0, os.path.join(HERE, "plots"))
 import plotlib as P  # noqa: E402  (selects matplotlib's Agg backend)
 
@@ -147,3 +151,8 @@ def draw_map(ax, p, v_max, n_max_n, criterion="exact", legend=True, alpha=0.55):
     ax.set_ylabel("pad force N [kN]")
     if legend:
         ax.legend(fontsize=7, loc="upper right", framealpha=0.9)
+
+
+if __name__ == "__main__":
+    import helptext
+    helptext.module_main(__doc__, "tools/drive_common.py")

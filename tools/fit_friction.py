@@ -29,17 +29,20 @@ other lines of a calibration file; --no-sd leaves the standard deviations
 out, for firmware that does not read them yet).
 """
 
-import argparse
 import math
 import os
 import sys
 import warnings
 
-import numpy as np
-from scipy.optimize import OptimizeWarning, curve_fit
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import deps  # noqa: E402  (names the Debian package of a missing module)
+
+deps.need("numpy", "scipy")
+import numpy as np  # noqa: E402
+from scipy.optimize import OptimizeWarning, curve_fit  # noqa: E402
+
 import calibfit as cf  # noqa: E402
+import helptext  # noqa: E402
 
 MIN_POINTS = 6
 MIN_SPEEDS = 3
@@ -226,11 +229,14 @@ def plot(path, v, mu, mu_sd, res, title):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("data")
-    ap.add_argument("--pad-radius-m", type=float)
-    ap.add_argument("--piston-area-mm2", type=float, help="piston area per face")
-    ap.add_argument("--faces", type=int, help="friction faces (2 for a floating caliper)")
+    ap = helptext.parser(__doc__, "tools/fit_friction.py")
+    ap.add_argument("data", metavar="DATA.csv", help="the measurements (columns below)")
+    ap.add_argument("--pad-radius-m", type=float, metavar="R",
+                    help="dynamometer data: effective pad radius r_p [m]")
+    ap.add_argument("--piston-area-mm2", type=float, metavar="A",
+                    help="dynamometer data: piston area per face A [mm^2]")
+    ap.add_argument("--faces", type=int, metavar="K",
+                    help="dynamometer data: friction faces (2 for a floating caliper)")
     cf.add_output_args(ap, "PNG of the data, the fit and its band")
     args = ap.parse_args(argv)
 

@@ -32,18 +32,21 @@ calibration file; --no-sd leaves the standard deviations out.
 Bad data get one line and exit status 1.
 """
 
-import argparse
 import math
 import os
 import sys
 import warnings
 
-import numpy as np
-from scipy.optimize import OptimizeWarning, curve_fit
-from scipy.signal import hilbert
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import deps  # noqa: E402  (names the Debian package of a missing module)
+
+deps.need("numpy", "scipy")
+import numpy as np  # noqa: E402
+from scipy.optimize import OptimizeWarning, curve_fit  # noqa: E402
+from scipy.signal import hilbert  # noqa: E402
+
 import calibfit as cf  # noqa: E402
+import helptext  # noqa: E402
 
 MIN_SAMPLES = 64
 OMEGA0_MAX = 500000.0
@@ -313,12 +316,12 @@ def analyse(path, kind):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("data")
+    ap = helptext.parser(__doc__, "tools/fit_modal.py")
+    ap.add_argument("data", metavar="DATA", help="a ring-down CSV, a WAV recording or an FRF CSV (below)")
     ap.add_argument("--frf", choices=("receptance", "mobility", "accelerance"),
                     default="receptance", help="kind of a measured frequency response")
-    ap.add_argument("--mass-kg", type=float, help="moving mass of pad and caliper (weighed)")
-    ap.add_argument("--mass-sd-kg", type=float, default=0.0,
+    ap.add_argument("--mass-kg", type=float, metavar="M", help="moving mass of pad and caliper (weighed)")
+    ap.add_argument("--mass-sd-kg", type=float, default=0.0, metavar="S",
                     help="its standard deviation (default 0)")
     cf.add_output_args(ap, "PNG of the data and the fit")
     args = ap.parse_args(argv)

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """Generate firmware/model/bessel_table.c for the fixed-point build.
 
@@ -10,8 +10,16 @@ nodes; the interpolation error is below (1/16)^4/384 * max|H''''| ~ 4e-8
 
     /usr/bin/python3 tools/gen_bessel_table.py > firmware/model/bessel_table.c
 """
-import numpy as np
-from scipy.special import ive
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import deps  # noqa: E402  (names the Debian package of a missing module)
+
+deps.need("numpy", "scipy")
+import helptext  # noqa: E402
+import numpy as np  # noqa: E402
+from scipy.special import ive  # noqa: E402
 
 STEP_LOG2 = 4           # 1/16
 S_MAX = 32
@@ -27,7 +35,8 @@ def h_and_dh(s):
     return float(h), float(dh)
 
 
-def main():
+def main(argv):
+    helptext.parser(__doc__, "tools/gen_bessel_table.py").parse_args(argv)
     n = S_MAX * (1 << STEP_LOG2) + 1
     hs, dhs = [], []
     for k in range(n):
@@ -61,4 +70,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

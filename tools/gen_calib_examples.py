@@ -18,13 +18,17 @@ every run), for a made-up brake "example" whose true parameters are TRUTH:
                 around the pad mode, 2 % complex noise
 """
 
-import argparse
 import math
 import os
 import sys
 import wave
 
-import numpy as np
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import deps  # noqa: E402  (names the Debian package of a missing module)
+
+deps.need("numpy")
+import helptext  # noqa: E402
+import numpy as np  # noqa: E402
 
 SEED = 20261129
 TRUTH = {
@@ -87,10 +91,14 @@ def write_wav(path, samples, rate_hz):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default="docs/examples")
+    ap = helptext.parser(__doc__, "tools/gen_calib_examples.py")
+    ap.add_argument("--out", default="docs/examples", metavar="DIR",
+                    help="folder the three files are written to (default docs/examples)")
     args = ap.parse_args(argv)
-    os.makedirs(args.out, exist_ok=True)
+    try:
+        os.makedirs(args.out, exist_ok=True)
+    except OSError as e:
+        sys.exit("gen_calib_examples.py: --out %s: %s" % (args.out, e.strerror))
     rng = np.random.default_rng(SEED)
     with open(os.path.join(args.out, "dyno.csv"), "w", encoding="ascii") as f:
         f.write("# brake dynamometer run (synthetic, tools/gen_calib_examples.py): "

@@ -3,9 +3,6 @@
 """Generate a test fleet: COUNT candump logs from `squeal-sim plant`
 scenarios, BROKEN of them broken in the ways real recordings break.
 
-usage: gen_fleet_logs.py --out DIR [--count N] [--broken K] [--seed S]
-                         [--duration-scale X] [--sim PATH]
-
 Good logs (car-XX/drive-NNN.log): the built-in scenarios (stop, creep,
 sweep, point at a random v0 and force), the files in scenarios/, and random
 drives (a few brakings from random speeds at random pad forces, written as
@@ -17,11 +14,13 @@ in the middle of a line with garbage lines; an empty file; a directory
 named *.log (cannot be read); a dangling symbolic link (cannot be opened).
 Prints one line per log kind and the totals.
 """
-import argparse
 import os
 import random
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import helptext  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -67,19 +66,26 @@ def broken(kind, path, good_log):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", required=True)
-    ap.add_argument("--count", type=int, default=100)
-    ap.add_argument("--broken", type=int, default=5)
-    ap.add_argument("--seed", type=int, default=13)
-    ap.add_argument("--duration-scale", type=float, default=1.0)
-    ap.add_argument("--sim", default=os.path.join(ROOT, "build", "host", "squeal-sim"))
+    ap = helptext.parser(__doc__, "tools/gen_fleet_logs.py")
+    ap.add_argument("--out", required=True, metavar="DIR", help="folder the logs are written to")
+    ap.add_argument("--count", type=int, default=100, metavar="N", help="logs in all, broken ones included (default 100)")
+    ap.add_argument("--broken", type=int, default=5, metavar="K", help="of them broken on purpose (default 5)")
+    ap.add_argument("--seed", type=int, default=13, metavar="S", help="random seed: same seed, same fleet (default 13)")
+    ap.add_argument("--duration-scale", type=float, default=1.0, metavar="X",
+                    help="stretch the random drives by X (default 1)")
+    ap.add_argument("--sim", default=os.path.join(ROOT, "build", "host", "squeal-sim"), metavar="PATH",
+                    help="the squeal-sim that writes the logs (default build/host/squeal-sim)")
     args = ap.parse_args()
     # a broken log is cut or corrupted from a good one: one good log at least
     if args.count < 1 or not 0 <= args.broken < args.count:
         ap.error("need --count >= 1 and 0 <= --broken < --count (broken logs are made from good ones)")
     rnd = random.Random(args.seed)
-    os.makedirs(args.out, exist_ok=True)
+    if not os.access(args.sim, os.X_OK):
+        sys.exit("gen_fleet_logs.py: --sim %s: no such program (make build/host/squeal-sim)" % args.sim)
+    try:
+        os.makedirs(args.out, exist_ok=True)
+    except OSError as e:
+        sys.exit("gen_fleet_logs.py: --out %s: %s" % (args.out, e.strerror))
     files = sorted(os.path.join(ROOT, "scenarios", f) for f in os.listdir(os.path.join(ROOT, "scenarios")))
     kinds = {}
     good = []

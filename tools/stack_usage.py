@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """Worst-case stack depth of an ECU image, per entry point.
 
@@ -20,18 +20,19 @@ vector table. Exception entry stacks 32 bytes (8 words), 104 with the FPU's
 lazy context (hard-float images). The nesting total assumes the HAL's
 priorities: faults over SysTick over the CAN interrupts over thread mode.
 
-usage: stack_usage.py IMAGE.elf BUILD_DIR [--prefix arm-none-eabi-]
 Prints one line per entry point, then "STACK main=N isr_max=N total=N
 reserve=N"; exits 1 if the total exceeds the linker's __stack_reserve, 2 if
 the depth cannot be bounded (indirect calls, recursion, dynamic frames).
 """
-import argparse
 import glob
 import os
 import re
 import struct
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import helptext  # noqa: E402
 
 
 def run(cmd):
@@ -144,12 +145,24 @@ def vector_handlers(prefix, elf, syms):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("elf")
-    ap.add_argument("build_dir")
-    ap.add_argument("--prefix", default="arm-none-eabi-")
+    ap = helptext.parser(__doc__, "tools/stack_usage.py")
+    ap.add_argument("elf", metavar="IMAGE.elf", help="the linked ECU image")
+    ap.add_argument("build_dir", metavar="BUILD_DIR", help="where its objects and their .su/.ci files are")
+    ap.add_argument("--prefix", default="arm-none-eabi-", metavar="PREFIX",
+                    help="binutils prefix of objdump/nm (default arm-none-eabi-)")
     a = ap.parse_args()
+    for path, kind in ((a.elf, os.path.isfile), (a.build_dir, os.path.isdir)):
+        if not kind(path):
+            sys.exit("stack_usage.py: %s: no such %s" % (path, "file" if kind is os.path.isfile else "folder"))
+    try:
+        return report(a)
+    except FileNotFoundError as e:
+        sys.exit("stack_usage.py: %s not found (Debian's binutils-arm-none-eabi)" % e.filename)
+    except subprocess.CalledProcessError as e:
+        sys.exit("stack_usage.py: %s failed: %s" % (" ".join(e.cmd), "; ".join((e.stderr or "").strip().splitlines()[-1:])))
 
+
+def report(a):
     su = load_su(a.build_dir)
     ci_indirect = load_ci_indirect(a.build_dir)
     syms, calls, indirect, prologue = parse_elf(a.prefix, a.elf)

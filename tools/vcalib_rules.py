@@ -467,3 +467,8 @@ def block_counter(frame, sig, bit_of):
         return None
     mine = [b for b in blocks if b[0] <= bit_of(sig) // 8]   # the start bit's byte lies in the block
     return mine[-1][2] if mine else None
+
+
+if __name__ == "__main__":
+    import helptext
+    helptext.module_main(__doc__, "tools/vcalib_rules.py")

@@ -94,6 +94,9 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import deps  # noqa: E402  (names the Debian package of a missing module)
+
+deps.need("canmatrix")
 import dbc_tolerant  # noqa: E402
 import vcalib_rules as rules  # noqa: E402
 

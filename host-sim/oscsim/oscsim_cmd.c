@@ -120,7 +120,7 @@ static int parse_sim_args(int argc, char **argv, sim_args_t *a)
 			    "         [--cycle | --truth | --basin F | --dimless --q Q [--s S] [--plain]]",
 		.description = "Simulates the friction oscillator with sliding and sticking (Dormand-Prince\n"
 			       "5(4), event switching at relative velocity 0). Defaults: the paper's brake\n"
-			       "(shared/model.md section 8) at a = 2 s/m, v0 = 1 m/s, N = 9000 N.\n\n"
+			       "(docs/model.md) at a = 2 s/m, v0 = 1 m/s, N = 9000 N.\n\n"
 			       "Without a mode option: the trajectory from x = x_s + dx, x' = xd0 for\n"
 			       "t-end seconds, CSV kind,t_s,x_m,v_mps,mode on stdout, kind 'sample'\n"
 			       "every dt and 'switch' at each change of mode (slip, slip_neg, stick).",

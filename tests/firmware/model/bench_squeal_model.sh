@@ -26,8 +26,8 @@ builds=(host host-fixed)
 declare -A numname=([host]=float [host-fixed]=fixed)
 
 for b in "${builds[@]}"; do
-	if [ ! -x "build/$b/bench_model" ]; then
-		echo "bench-model.sh: build/$b/bench_model missing (run: make bench)" >&2
+	if [ ! -x "build/$b/tests/firmware/model/bench_squeal_model" ]; then
+		echo "bench_squeal_model.sh: build/$b/tests/firmware/model/bench_squeal_model missing (run: make bench)" >&2
 		exit 1
 	fi
 done
@@ -38,7 +38,7 @@ trap 'rm -rf "$tmp"' EXIT
 echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 for r in $(seq 1 "$ROUNDS"); do
 	for b in "${builds[@]}"; do
-		"build/$b/bench_model" --repeats "$REPEATS" --calls "$CALLS" >"$tmp/run.$b.$r"
+		"build/$b/tests/firmware/model/bench_squeal_model" --repeats "$REPEATS" --calls "$CALLS" >"$tmp/run.$b.$r"
 		if [ "$r" = 1 ]; then
 			grep -E '^(bench_model|classes|byclass)' "$tmp/run.$b.$r"
 		fi
@@ -56,8 +56,8 @@ declare -A ipc
 for b in "${builds[@]}"; do
 	for c in exact cubic; do
 		if command -v valgrind >/dev/null; then
-			i0=$(collected "build/$b/bench_model" "$c" 0)
-			i1=$(collected "build/$b/bench_model" "$c" "$CG_CALLS")
+			i0=$(collected "build/$b/tests/firmware/model/bench_squeal_model" "$c" 0)
+			i1=$(collected "build/$b/tests/firmware/model/bench_squeal_model" "$c" "$CG_CALLS")
 			ipc[$b.$c]=$(awk -v a="$i0" -v b="$i1" -v n="$CG_CALLS" 'BEGIN { printf "%.0f", (b - a) / n }')
 		else
 			ipc[$b.$c]="n/a"
