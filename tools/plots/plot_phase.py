@@ -118,13 +118,15 @@ def main():
     ax = axes[2]
     v0 = 2.5
     xs = steady_x(v0)
+    stick_lab = "sticking (x' = v0)"
     for dx, col, lab in ((4.5e-4, "#1a9850", "push to 0.9 v0: decays"),
                          (6e-4, "#4575b4", "push to the stick line: sticks once, decays")):
         t, x, v, st = trajectory(tool, ["--v0", str(v0), "--dx", repr(dx), "--t-end", "0.015",
                                         "--dt", "1e-5"])
         draw_path(ax, x, v, xs, color=col, lw=0.6, label=lab)
         if st.any():
-            draw_path(ax, x[st], v[st], xs, color="#b2182b", lw=2.5)
+            draw_path(ax, x[st], v[st], xs, color="#b2182b", lw=2.5, label=stick_lab)
+            stick_lab = None
     ax.plot([0], [0], "o", color="k", ms=4, label="steady sliding (stable)")
     stick_line(ax, v0)
     ax.set_title("STABLE  v0 = 2.5 m/s\nno sliding cycle below the stick line", fontsize=10)
