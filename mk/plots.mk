@@ -59,3 +59,7 @@ docs-img:
 		if [ $$(stat -c %s build/plots/$$n.svg) -lt $(DOCS_SVG_MAX) ]; then cp build/plots/$$n.svg docs/img/; \
 		else rm -f docs/img/$$n.svg; fi; done
 	@ls -l docs/img
+
+# the heat map's totals, key and labels, from fixture logs without Dask
+tests/tools/test_fleet_heatmap.py: build/host/squeal-sim
+TEST_PROGS += tests/tools/test_fleet_heatmap.py

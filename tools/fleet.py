@@ -242,6 +242,8 @@ def heat_key(fig, ax, t_max):
     cb = fig.colorbar(ScalarMappable(norm, LinearSegmentedColormap.from_list("heat", ramp)),
                       ax=ax, fraction=0.045, pad=0.02)
     ticks = [t for t in (0.01, 0.1, 1.0, 10.0, 100.0, 1000.0, 10000.0) if t <= t_max]
+    if not ticks or t_max > 2.0 * ticks[-1]:
+        ticks.append(float("%.2g" % t_max))   # the longest cell
     cb.set_ticks(ticks)
     cb.set_ticklabels(["%g" % t for t in ticks])
     cb.set_label("time in the cell [s] (more opaque: longer)", fontsize=8)
