@@ -63,3 +63,8 @@ docs-img:
 # the heat map's totals, key and labels, from fixture logs without Dask
 tests/tools/test_fleet_heatmap.py: build/host/squeal-sim
 TEST_PROGS += tests/tools/test_fleet_heatmap.py
+
+# plotlib's style (150 dpi + SVG, names in words, the stretched speed axis)
+# and the committed docs/img pictures; each picture is drawn by its own
+# tests/tools/plots/test_plot_*.py (mk/named-tools.mk)
+TEST_PROGS += tests/tools/plots/test_plotlib.py

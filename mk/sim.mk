@@ -53,6 +53,3 @@ ALL_TARGETS += build/host-fixed/oscsim
 tests/host-sim/oscsim/bench_oscsim_agreement.sh: build/host/oscsim build/host-fixed/oscsim
 BENCH_PROGS += tests/host-sim/oscsim/bench_oscsim_agreement.sh
 
-# Each picture made (small grids) and opened; the committed PNGs checked.
-tests/tools/plots/test_plotlib.py: build/host/oscsim
-TEST_PROGS += tests/tools/plots/test_plotlib.py

@@ -259,7 +259,7 @@ def heat_figure(cells, grid, setups, title, totals=None):
     corners = [c for c in DC.CORNERS if c in cells] or [min(setups, key=DC.CORNERS.index)]
     ncols = min(len(corners), 2)
     nrows = (len(corners) + 1) // 2
-    fig, axes = plt.subplots(nrows, ncols, figsize=(7.4 * ncols + 2.6, 5.6 * nrows), squeeze=False)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(9.4 * ncols + 2.6, 5.8 * nrows), squeeze=False)
     for ax in axes.flat[len(corners):]:
         ax.set_visible(False)
     panels = {}
@@ -293,8 +293,8 @@ def heat_figure(cells, grid, setups, title, totals=None):
         if n == ncols - 1:  # one legend, right of the first row
             handles, _ = ax.get_legend_handles_labels()
             handles += P.region_handles(alpha=0.35, prefix="map: ")
-            handles += P.reported_handles(DC.STATES, "cell: reported ")
-            ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.2, 1.0),
+            handles += P.reported_handles(DC.STATES, "cell: reported ", short=True)
+            ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.16, 1.0),
                       framealpha=0.9)
     fig.suptitle(title, fontsize=11)
     return fig, panels
@@ -308,8 +308,10 @@ def draw_heatmap(out, cells, grid, setups, title, totals=None):
 def heat_title(results):
     """The heat map's title: the logs it draws, the failed ones apart."""
     failed = sum(r["status"] == "failed" for r in results)
-    return ("%d logs drawn%s: time per (v0, N) cell by reported state" %
-            (len(results) - failed, " (%d failed, not drawn: see the report)" % failed if failed else ""))
+    drawn = len(results) - failed
+    return ("%d log%s drawn%s: time per (v0, N) cell by reported state" %
+            (drawn, "" if drawn == 1 else "s",
+             " (%d failed, not drawn: see the report)" % failed if failed else ""))
 
 
 def corner_setups(calib_path):

@@ -269,14 +269,37 @@ def map_legend(ax, extra=(), region_alpha=1.0, **kw):
 
 # ---- files -----------------------------------------------------------------
 
+def _style_rgb():
+    """The style's own colours (fills, reported states, lines, black, white)."""
+    from matplotlib.colors import to_rgb
+    cols = list(STATE_COLORS.values()) + list(PATH_COLORS.values()) + [
+        LINE_HOPF["color"], LINE_EXACT["color"], LINE_CUBIC["color"], "#000000", "#ffffff"]
+    out = []
+    for c in cols:
+        rgb = tuple(int(round(255 * x)) for x in to_rgb(c))
+        if rgb not in out:
+            out.append(rgb)
+    return out
+
+
 def _shrink_png(path):
-    """Adaptive 256-colour palette: line art loses nothing visible and the
-    committed pictures stay small (README, docs/img)."""
+    """A 256-colour palette: adaptive, plus the style's own colours exactly
+    (a state's colour stays that colour); line art loses nothing visible and
+    the committed pictures stay small (README, docs/img)."""
     from PIL import Image
+    fixed = _style_rgb()
     with Image.open(path) as im:
-        q = im.convert("RGB").quantize(colors=256, method=Image.Quantize.MEDIANCUT
-                                       if hasattr(Image, "Quantize") else 0)
-    q.save(path, optimize=True, dpi=(DPI, DPI))
+        rgb = im.convert("RGB")
+    n = 256 - len(fixed)
+    adaptive = rgb.quantize(colors=n, method=Image.Quantize.MEDIANCUT
+                            if hasattr(Image, "Quantize") else 0)
+    pal = (adaptive.getpalette()[:3 * n] + [0] * (3 * n))[:3 * n]
+    for c in fixed:
+        pal += list(c)
+    ref = Image.new("P", (1, 1))
+    ref.putpalette(pal)
+    nodither = Image.Dither.NONE if hasattr(Image, "Dither") else 0
+    rgb.quantize(palette=ref, dither=nodither).save(path, optimize=True, dpi=(DPI, DPI))
 
 
 def save_as(fig, png_path, tight=True):
