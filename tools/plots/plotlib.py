@@ -219,7 +219,7 @@ def apply_speed_zoom(ax, zoom):
     s2 = _nice_step(zoom.v_max - zoom.v_zoom, 4)
     lo = list(np.arange(0.0, zoom.v_zoom + 1e-9, s1))
     hi = [x for x in np.arange(math.ceil(zoom.v_zoom / s2) * s2, zoom.v_max + 1e-9, s2)
-          if x > zoom.v_zoom + 0.5 * s2]
+          if x > zoom.v_zoom + 0.3 * s2]
     ax.set_xticks(lo + hi)
     ax.set_xticklabels(["%g" % x for x in lo + hi])
     ax.axvline(zoom.v_zoom, color="0.35", lw=0.9, ls=(0, (4, 3)), zorder=6)
@@ -299,7 +299,17 @@ def _shrink_png(path):
     ref = Image.new("P", (1, 1))
     ref.putpalette(pal)
     nodither = Image.Dither.NONE if hasattr(Image, "Dither") else 0
-    rgb.quantize(palette=ref, dither=nodither).save(path, optimize=True, dpi=(DPI, DPI))
+    q = rgb.quantize(palette=ref, dither=nodither)
+    # Pillow's palette look-up is approximate: entries a few steps off a
+    # style colour (the white background) become that colour
+    got = q.getpalette()
+    for i in range(len(got) // 3):
+        e = got[3 * i:3 * i + 3]
+        near = [c for c in fixed if max(abs(a - b) for a, b in zip(c, e)) <= 6]
+        if near:
+            got[3 * i:3 * i + 3] = list(near[0])
+    q.putpalette(got)
+    q.save(path, optimize=True, dpi=(DPI, DPI))
 
 
 def save_as(fig, png_path, tight=True):
