@@ -43,4 +43,4 @@ plots-calib: deps-demo
 	$(PYTHON) tools/fit_friction.py $(CALIB_EX)/dyno.csv $(CALIB_EX_DYNO) --base docs/calib-example.txt -o build/plots/example-friction.cal --plot build/plots/calib_friction.png
 	$(PYTHON) tools/fit_modal.py $(CALIB_EX)/tap_test.wav $(CALIB_EX_MASS) --base build/plots/example-friction.cal -o build/plots/example-brake.cal --plot build/plots/calib_tap_test.png
 	$(PYTHON) tools/plots/plot_calib_bands.py build/plots/example-brake.cal --out build/plots
-plots: plots-calib
+

@@ -3,7 +3,7 @@
 #   build/<v>/liboscsim.a      simulator + map/simulate commands (needs
 #                              libfirmware.a and host-sim/sim_num.o of <v>)
 #   build/<v>/oscsim           stand-alone driver: oscsim map|simulate
-#   make plots                 pictures into build/plots/, PNGs to docs/img/
+#   make plots                 pictures into build/plots/ (mk/plots.mk)
 # For squeal-sim: link $(OSCSIM_LIB_host) and call oscsim_cmd_map /
 # oscsim_cmd_simulate (host-sim/oscsim/oscsim_cmd.h).
 
@@ -53,29 +53,3 @@ ALL_TARGETS += build/host-fixed/oscsim
 tests/host-sim/oscsim/bench_oscsim_agreement.sh: build/host/oscsim build/host-fixed/oscsim
 BENCH_PROGS += tests/host-sim/oscsim/bench_oscsim_agreement.sh
 
-# Pictures for the README: `make plots` (PNG + SVG in build/plots/, the PNGs
-# copied to docs/img/): the maps, the phase portraits, and a replayed drive
-# (the plant's `sweep` scenario through the firmware in virtual time, its
-# inputs and outputs decoded) over the map. DRIVE_CSV=file.csv draws that
-# file instead (time_s,v0_mps,force_n,state,warning or decode --csv).
-PLOT_GRID ?= 100
-DRIVE_SCENARIO ?= sweep
-.PHONY: plots
-plots: deps-demo build/host/oscsim build/host/squeal-sim
-	@mkdir -p build/plots docs/img
-	build/host/oscsim map --grid $(PLOT_GRID) --brake all --no-linear --csv build/plots/map.csv >build/plots/map-summary.txt
-	$(PYTHON) tools/plots/plot_map.py build/plots/map.csv --out build/plots
-	$(PYTHON) tools/plots/plot_phase.py --sim build/host/oscsim --out build/plots
-ifeq ($(DRIVE_CSV),)
-	build/host/squeal-sim plant --log build/plots/drive-in.log --scenario $(DRIVE_SCENARIO) --quiet
-	build/host/squeal-sim replay build/plots/drive-in.log >build/plots/drive-out.log 2>build/plots/drive-replay.txt
-	sort -s -k1,1 build/plots/drive-in.log build/plots/drive-out.log | build/host/squeal-sim decode --csv >build/plots/drive.csv
-	$(PYTHON) tools/plots/plot_drive.py build/plots/drive.csv --out build/plots --name drive
-else
-	$(PYTHON) tools/plots/plot_drive.py $(DRIVE_CSV) --out build/plots --name drive
-endif
-	cp build/plots/*.png docs/img/
-
-# Each picture made (small grids) and opened; the committed PNGs checked.
-tests/tools/plots/test_plotlib.py: build/host/oscsim
-TEST_PROGS += tests/tools/plots/test_plotlib.py

@@ -104,23 +104,27 @@ def add_output_args(ap, plot_help):
     ap.add_argument("--json", action="store_true", help="print the result as one JSON object (below)")
 
 
+def _plotlib():
+    """tools/plots/plotlib.py: the pictures' one style (imported only to plot)."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "plots"))
+    import plotlib
+    return plotlib
+
+
 def pyplot():
-    """matplotlib's pyplot without a display (imported only to plot)."""
+    """matplotlib's pyplot without a display, in the pictures' style."""
     import deps
     deps.need("matplotlib")
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
+    return _plotlib().plt
 
 
 def finish_plot(fig, ax, title, path):
+    """Title, grid and legend; PATH (150 dpi PNG) and the SVG beside it."""
     ax.set_title(title)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    pyplot().close(fig)
+    _plotlib().save_as(fig, path)
 
 
 def t_quantile(dof):

@@ -16,7 +16,6 @@ ln 2Q = ln(2 I1(s)/s), or the paper's cubic one), in double precision with
 scipy, independent of the firmware.
 """
 import collections
-import math
 import os
 import re
 import sys
@@ -127,30 +126,15 @@ def corners(cal):
     return sorted(out, key=lambda c: c.pos)
 
 
-def draw_map(ax, p, v_max, n_max_n, criterion="exact", legend=True, alpha=0.55):
+def draw_map(ax, p, v_max, n_max_n, criterion="exact", legend=True, alpha=0.55, zoom=True):
     """The stability map of brake p over v0 in (0, v_max] m/s and N in
-    (0, n_max_n] N (axes in m/s and kN): regions by the closed forms and the
-    Hopf border and stability limit as lines."""
-    from matplotlib.colors import ListedColormap
-    np = P.np
-    vv = np.linspace(v_max / 400.0, v_max, 200)
-    nn = np.linspace(n_max_n / 300.0, n_max_n, 150)
-    code = np.array([[P.STATE_CODE[P.classify(p, x, y, criterion)] for x in vv] for y in nn])
-    cmap = ListedColormap([P.STATE_COLORS["stable"], P.STATE_COLORS["bistable"],
-                           P.STATE_COLORS["unstable"]])
-    ax.pcolormesh(vv, nn / 1000.0, code, cmap=cmap, vmin=-0.5, vmax=2.5, shading="auto",
-                  rasterized=True, alpha=alpha)
-    lim = "exact" if criterion != "cubic" else "cubic"
-    for kind, style, lab in (("hopf", P.LINE_HOPF, "Hopf border (unstable above)"),
-                             (lim, P.LINE_EXACT, "%s stability limit (bistable above)" % lim)):
-        ys = [P.force_border(p, x, kind) / 1000.0 for x in vv]
-        ax.plot(vv, [y if math.isfinite(y) else float("nan") for y in ys], label=lab, **style)
-    ax.set_xlim(0, v_max)
-    ax.set_ylim(0, n_max_n / 1000.0)
-    ax.set_xlabel("disc surface speed v0 [m/s]")
-    ax.set_ylabel("pad force N [kN]")
+    (0, n_max_n] N (axes in m/s and kN): plotlib.draw_map (regions by the
+    closed forms, the Hopf border and stability limit as lines, the speed
+    axis stretched where the borders are), with its legend."""
+    z = P.draw_map(ax, p, v_max, n_max_n, criterion, alpha=alpha, zoom=zoom)
     if legend:
-        ax.legend(fontsize=7, loc="upper right", framealpha=0.9)
+        P.map_legend(ax, region_alpha=alpha, fontsize=7)
+    return z
 
 
 if __name__ == "__main__":

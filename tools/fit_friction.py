@@ -221,10 +221,10 @@ def plot(path, v, mu, mu_sd, res, title):
                     label="95 % band of the fitted curve")
     s = summary(res)
     ax.plot(vv, fitc, color="tab:blue",
-            label=(f"fit: mu_inf {p[0]:.4f}, delta_mu {p[1]:.4f}, a {p[2]:.3f} s/m\n"
-                   f"corr(a, delta_mu) {s['corr_slope_delta_mu']:+.2f}, rms {res['rms']:.2g}"))
+            label=(f"fit μ(v) = μ∞ + Δμ e^(-a v): μ∞ {p[0]:.4f}, Δμ {p[1]:.4f}, a {p[2]:.3f} s/m\n"
+                   f"corr(a, Δμ) {s['corr_slope_delta_mu']:+.2f}, rms {res['rms']:.2g}"))
     ax.set_xlabel("sliding speed v [m/s]")
-    ax.set_ylabel("friction coefficient mu")
+    ax.set_ylabel("friction coefficient μ [-]")
     cf.finish_plot(fig, ax, title, path)
 
 

@@ -273,34 +273,43 @@ def plot(path, res, title):
     plt = cf.pyplot()
 
     s = summary(res)
-    label = (f"w0 = {s['omega0_radps']['value']:.1f} +- {s['omega0_radps']['stderr']:.2g} rad/s, "
-             f"D = {s['damping']['value']:.4f} +- {s['damping']['stderr']:.2g}")
+    w0, w0_sd = s["omega0_radps"]["value"], s["omega0_radps"]["stderr"]
+    # an NVH engineer reads the mode in Hz; the calibration keeps rad/s
+    label = (f"f0 = {w0 / (2 * math.pi):.1f} ± {w0_sd / (2 * math.pi):.2g} Hz "
+             f"(ω0 = {w0:.1f} ± {w0_sd:.2g} rad/s), "
+             f"D = {s['damping']['value']:.4f} ± {s['damping']['stderr']:.2g}")
     kind = res["plot"][0]
     if kind == "ringdown":
         _, t, y, t0, p = res["plot"]
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        fig, ax = plt.subplots(figsize=(7.5, 4.5))
         ax.plot(t * 1e3, y, color="0.6", lw=0.8, label="measured")
         tt = t[t >= t0] - t0
         ax.plot((tt + t0) * 1e3, damped(tt, *p), color="tab:blue", lw=0.8,
-                label="damped-sine fit: " + label)
+                label="damped-sine fit:\n" + label)
         env = math.hypot(p[0], p[1]) * np.exp(-p[3] * tt)
-        ax.plot((tt + t0) * 1e3, p[4] + env, "--", color="tab:red", lw=1, label="envelope")
+        ax.plot((tt + t0) * 1e3, p[4] + env, "--", color="tab:red", lw=1,
+                label="envelope e^(-D ω0 t)")
         ax.plot((tt + t0) * 1e3, p[4] - env, "--", color="tab:red", lw=1)
         ax.set_xlabel("time [ms]")
-        ax.set_ylabel("signal")
+        ax.set_ylabel("signal [sample value, as recorded]")
     else:
         _, w, h, p = res["plot"]
-        fig, (ax, ax2) = plt.subplots(1, 2, figsize=(10, 4.5))
+        # mobility and accelerance are converted to receptance (SI input: m/N)
+        unit = "[m/N]"
+        fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4.8))
         ax.semilogy(w / (2 * math.pi), np.abs(h), ".", color="0.4", ms=3, label="measured")
         ax.semilogy(w / (2 * math.pi), np.abs(sdof(w, *p)), color="tab:blue",
-                    label="single-mode fit: " + label)
+                    label="single-mode fit:\n" + label)
         ax.set_xlabel("frequency [Hz]")
-        ax.set_ylabel("|receptance|")
-        ax2.plot(h.real, h.imag, ".", color="0.4", ms=3)
+        ax.set_ylabel("receptance |H| %s" % unit)
+        ax2.plot(h.real, h.imag, ".", color="0.4", ms=3, label="measured")
         m = sdof(w, *p)
-        ax2.plot(m.real, m.imag, color="tab:blue")
+        ax2.plot(m.real, m.imag, color="tab:blue", label="single-mode fit (a circle)")
         ax2.set_aspect("equal", "datalim")
-        ax2.set_title("Nyquist plot (the circle)", fontsize=9)
+        ax2.set_title("Nyquist plot", fontsize=9)
+        ax2.set_xlabel("Re H %s" % unit)
+        ax2.set_ylabel("Im H %s" % unit)
+        ax2.legend(fontsize=7)
         ax2.grid(alpha=0.3)
     cf.finish_plot(fig, ax, title, path)
 

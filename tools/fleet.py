@@ -202,6 +202,14 @@ def write_cells(out, cells, grid):
                             "%g" % ((j + 1) * dn), s, "%.6f" % sec])
 
 
+HEAT_ALPHA0 = 0.35   # opacity of the shortest time in a cell (one status period: about 0.7)
+
+
+def heat_level(seconds):
+    """A cell's time on the opacity scale: log(1 + t / 10 ms)."""
+    return P.np.log1p(P.np.asarray(seconds, dtype=float) / 0.01)
+
+
 def heat_rgba(cells, grid):
     """RGBA image (force rows x v0 columns): each cell in the colour of the
     state the monitor reported longest there, opacity growing with log(time)."""
@@ -216,22 +224,42 @@ def heat_rgba(cells, grid):
     if total.max() <= 0:
         return img, total
     dom = per.argmax(axis=0)
-    lt = np.log1p(total / 0.01)  # 10 ms (one status period) -> about 0.7
+    lt = heat_level(total)
     for k, s in enumerate(DC.STATES):
         img[dom == k, :3] = to_rgb(P.PATH_COLORS[s])
-    img[..., 3] = np.where(total > 0, 0.35 + 0.65 * lt / lt.max(), 0.0)
+    img[..., 3] = np.where(total > 0, HEAT_ALPHA0 + (1 - HEAT_ALPHA0) * lt / lt.max(), 0.0)
     return img, total
 
 
-def heat_figure(cells, grid, setups, title):
+def heat_key(fig, ax, t_max):
+    """The colour key of a panel: opacity against the time in a cell (the
+    hue is the state, in the legend)."""
+    from matplotlib.cm import ScalarMappable
+    from matplotlib.colors import FuncNorm, LinearSegmentedColormap
+    grey = P.np.array([0.25, 0.25, 0.25])
+    ramp = [tuple(a * grey + (1 - a)) for a in P.np.linspace(HEAT_ALPHA0, 1.0, 64)]
+    norm = FuncNorm((heat_level, lambda y: 0.01 * P.np.expm1(y)), vmin=0.0, vmax=t_max)
+    cb = fig.colorbar(ScalarMappable(norm, LinearSegmentedColormap.from_list("heat", ramp)),
+                      ax=ax, fraction=0.045, pad=0.02)
+    ticks = [t for t in (0.01, 0.1, 1.0, 10.0, 100.0, 1000.0, 10000.0) if t <= t_max]
+    if not ticks or t_max > 2.0 * ticks[-1]:
+        ticks.append(float("%.2g" % t_max))   # the longest cell
+    cb.set_ticks(ticks)
+    cb.set_ticklabels(["%g" % t for t in ticks])
+    cb.set_label("time in the cell [s] (more opaque: longer)", fontsize=8)
+    return cb
+
+
+def heat_figure(cells, grid, setups, title, totals=None):
     """The heat map: a panel per corner over the map of its own brake
-    (setups: {corner name: DC.Corner}); returns (figure, {corner: axes})."""
-    from matplotlib.patches import Patch
+    (setups: {corner name: DC.Corner}), each with its colour key; totals
+    ({corner: seconds per state}, the report's table) name the time the
+    cells cannot hold (no v0 or N reported yet). Returns (figure, {corner: axes})."""
     plt = P.plt
     corners = [c for c in DC.CORNERS if c in cells] or [min(setups, key=DC.CORNERS.index)]
     ncols = min(len(corners), 2)
     nrows = (len(corners) + 1) // 2
-    fig, axes = plt.subplots(nrows, ncols, figsize=(6.4 * ncols + 1.8, 5.2 * nrows), squeeze=False)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(9.4 * ncols + 2.6, 5.8 * nrows), squeeze=False)
     for ax in axes.flat[len(corners):]:
         ax.set_visible(False)
     panels = {}
@@ -239,7 +267,7 @@ def heat_figure(cells, grid, setups, title):
         panels[corner] = ax
         p, criterion = setups[corner].brake, setups[corner].criterion
         if grid is None:
-            DC.draw_map(ax, p, 16.0, 32000.0, criterion)
+            DC.draw_map(ax, p, 16.0, 32000.0, criterion, legend=False)
             ax.set_title("%s: no readable logs" % corner, fontsize=10)
             continue
         dv, dn = float(grid["v0_bin_mps"]), float(grid["force_bin_n"])
@@ -252,20 +280,38 @@ def heat_figure(cells, grid, setups, title):
                   extent=(0, grid["v0_bins"] * dv, 0, grid["force_bins"] * dn / 1000.0), zorder=3)
         ax.set_xlim(0, v_max)
         ax.set_ylim(0, n_max / 1000.0)
-        ax.set_title("%s: %.1f s in %d cells of %.1f m/s x %g N" %
-                     (corner, float(total.sum()), len(used), dv, dn), fontsize=10)
+        in_cells = float(total.sum())
+        head = "%s: %.1f s in %d cells of %.1f m/s x %g N" % (corner, in_cells, len(used), dv, dn)
+        if totals is not None and corner in totals:
+            reported = float(sum(totals[corner]))
+            head = ("%s: %.1f s reported (the table's total); %.1f s of it in %d cells of "
+                    "%.1f m/s x %g N,\n%.1f s without a reported v0 or N (not drawn)" %
+                    (corner, reported, in_cells, len(used), dv, dn, max(reported - in_cells, 0.0)))
+        ax.set_title(head, fontsize=9)
+        if total.max() > 0:
+            heat_key(fig, ax, float(total.max()))
         if n == ncols - 1:  # one legend, right of the first row
             handles, _ = ax.get_legend_handles_labels()
-            handles += [Patch(color=P.PATH_COLORS[s], label="reported " + s) for s in DC.STATES]
-            ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+            handles += P.region_handles(alpha=0.35, prefix="map: ")
+            handles += P.reported_handles(DC.STATES, "cell: reported ", short=True)
+            ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.16, 1.0),
                       framealpha=0.9)
     fig.suptitle(title, fontsize=11)
     return fig, panels
 
 
-def draw_heatmap(out, cells, grid, setups, title):
-    fig, _ = heat_figure(cells, grid, setups, title)
+def draw_heatmap(out, cells, grid, setups, title, totals=None):
+    fig, _ = heat_figure(cells, grid, setups, title, totals)
     return P.save(fig, out, "heatmap")
+
+
+def heat_title(results):
+    """The heat map's title: the logs it draws, the failed ones apart."""
+    failed = sum(r["status"] == "failed" for r in results)
+    drawn = len(results) - failed
+    return ("%d log%s drawn%s: time per (v0, N) cell by reported state" %
+            (drawn, "" if drawn == 1 else "s",
+             " (%d failed, not drawn: see the report)" % failed if failed else ""))
 
 
 def corner_setups(calib_path):
@@ -381,8 +427,7 @@ def main():
     write_cells(args.out, cells, grid)
     shown = [c for c in DC.CORNERS if c in cells] or [min(setups, key=DC.CORNERS.index)]
     note = border_note(setups, args.calib, shown)
-    draw_heatmap(args.out, cells, grid, setups,
-                 "%d logs: time per (v0, N) cell by reported state" % len(results))
+    draw_heatmap(args.out, cells, grid, setups, heat_title(results), totals)
     write_html(args.out, results, totals, n_ep, timing, note)
     counts = {s: sum(r["status"] == s for r in results) for s in ("ok", "partial", "failed")}
     rate = len(results) / max(timing["job_s"], 1e-9)

@@ -13,18 +13,15 @@ SquealDetail (v0) and SquealDetail2 (pad force) of the calibration's corners
 (without [corner] sections FL, FR, RL, RR on its identifiers + 0x10 k; with
 them each corner on its own status_id/detail_id/detail2_id, over the map of
 its own brake), decoded with canmatrix from firmware/protocol/squeal.dbc;
-other frames are ignored.
-  --iface IF     a CAN interface (python-can, --interface socketcan by default)
-  --log FILE     a candump -L log (e.g. the output of squeal-sim replay), played
-                 at --rate X times its own speed (default 1; 0: as fast as it
-                 reads; with --snapshot the default is 0)
-  --calib FILE   calibration text file: the corners, their brakes (maps) and
-                 their identifiers
-  --snapshot FILE.png --after S
-                 headless: draw one picture S seconds into the drive (log time,
-                 or wall time on an interface; the end of a shorter log) and exit
-The map is the closed-form one of shared/model.md (scipy, tools/plots/plotlib.py).
-Exit status: 0 done, 1 input error (unreadable log, interface), 2 bad usage.
+other frames are ignored. A log without a single monitor frame (e.g. the
+plant's input log, before `squeal-sim replay`) is refused: nothing is drawn.
+The map's speed axis is stretched where the borders are (0 to a little past
+the speed at which the stability limit reaches --force-max), compressed
+beyond; the regions and lines are in the legend.
+With --snapshot FILE.png the picture is written at 150 dpi with FILE.svg
+beside it. The map is the closed-form one of the physics model (scipy,
+tools/plots/plotlib.py).
+Exit status: 0 done, 1 input error (unreadable log, no monitor frames, interface), 2 bad usage.
 """
 import argparse
 import collections
@@ -42,6 +39,7 @@ import drive_common as DC  # noqa: E402  (plotlib selects Agg)
 
 P = DC.P
 KINDS = ("SquealStatus", "SquealDetail", "SquealDetail2")
+MAP_ALPHA = 0.55   # the regions behind the trail
 
 
 def load_dbc(path=DC.DBC):
@@ -131,26 +129,36 @@ class LiveView:
         names = [n for n in DC.CORNERS if n in self.corners] or [min(self.setup, key=DC.CORNERS.index)]
         if self.fig is not None:
             plt.close(self.fig)
-        self.fig = plt.figure(figsize=(11.0, 5.0 * len(names)), dpi=80)
-        gs = self.fig.add_gridspec(2 * len(names), 2, width_ratios=(1.25, 1.0), hspace=0.45,
-                                   wspace=0.25)
+        height = 5.0 * len(names) + 1.0   # + the legend's inch
+        self.fig = plt.figure(figsize=(11.0, height), dpi=80)
+        gs = self.fig.add_gridspec(2 * len(names), 2, width_ratios=(1.25, 1.0), hspace=0.55,
+                                   wspace=0.25, bottom=1.35 / height, top=1.0 - 0.55 / height)
         self.axes = {}
         for i, name in enumerate(names):
             ax = self.fig.add_subplot(gs[2 * i:2 * i + 2, 0])
             brake = self.setup[name]
-            DC.draw_map(ax, brake.brake, self.v_max, self.n_max, brake.criterion, legend=(i == 0))
+            P.draw_map(ax, brake.brake, self.v_max, self.n_max, brake.criterion, alpha=MAP_ALPHA)
+            if i == 0:  # one legend under all corners: it hides no point
+                handles, _ = ax.get_legend_handles_labels()
+                self.fig.legend(handles=handles + P.region_handles(alpha=MAP_ALPHA) +
+                                P.reported_handles(("stable", "bistable", "unstable"),
+                                                   "point, trail: reported ", short=True),
+                                loc="lower left", bbox_to_anchor=(0.04, 0.0), ncol=3,
+                                fontsize=7.5, frameon=False)
             trail = ax.scatter([], [], s=9, zorder=4)
             point = ax.scatter([], [], s=190, edgecolors="k", linewidths=1.6, zorder=5)
             title = ax.set_title(name, fontsize=10, loc="left")
             am = self.fig.add_subplot(gs[2 * i, 1])
             aw = self.fig.add_subplot(gs[2 * i + 1, 1], sharex=am)
-            (mline,) = am.plot([], [], color="#2166ac")
-            am.axhline(0.0, color=P.LINE_HOPF["color"], lw=1.0)
+            (mline,) = am.plot([], [], color="#2166ac", label="Hopf margin (reported)")
+            am.axhline(0.0, color=P.LINE_HOPF["color"], lw=1.0, label="0: on the Hopf border")
+            am.legend(fontsize=7, loc="upper left")
             am.set_ylabel("Hopf margin [m/s]", fontsize=8)
-            (wline,) = aw.step([], [], where="post", color="#b2182b")
+            (wline,) = aw.step([], [], where="post", color="#b2182b", label="warning level (reported)")
             aw.set_ylim(-0.3, 3.3)
             aw.set_yticks([0, 1, 2, 3])
-            aw.set_yticklabels(["none", "advisory", "warning", "critical"], fontsize=7)
+            aw.set_yticklabels(P.WARNING_TICKS, fontsize=7)
+            aw.set_ylabel("warning level", fontsize=8)
             aw.set_xlabel("time [s] (0 = now)", fontsize=8)
             for a in (am, aw):
                 a.set_xlim(-self.window_s, 0.0)
@@ -183,8 +191,11 @@ class LiveView:
             if ms:
                 lo, hi = min(ms + [0.0]), max(ms + [0.0])
                 a["margin"].set_ylim(lo - 0.1 * (hi - lo) - 0.05, hi + 0.1 * (hi - lo) + 0.05)
-            a["title"].set_text("%s  t = %.2f s: %s, warning %d, v0 %s m/s, N %s N, margin %s m/s" % (
-                name, now, c.state, c.warning, _fmt(c.v0), _fmt(c.force, 0), _fmt(c.margin)))
+            a["title"].set_text("%s  t = %.2f s: %s, warning %d %s\nv0 %s m/s, N %s N, "
+                                "Hopf margin %s m/s" % (
+                                    name, now, P.state_label(c.state), c.warning,
+                                    P.WARNING_NAMES[min(max(c.warning, 0), 3)], _fmt(c.v0),
+                                    _fmt(c.force, 0), _fmt(c.margin)))
         return self.fig
 
 
@@ -236,18 +247,30 @@ def run_bus(view, bus, after_s=None, on_tick=None, stop=lambda: False):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(
+        prog="live_view.py",
+        description=__doc__.split("\nusage:")[0] + "\n\n" + __doc__[__doc__.index("Input:"):__doc__.index("Exit status:")],
+        epilog=__doc__.split("Exit status:")[1].join(("Exit status:", "")).strip(),
+        formatter_class=argparse.RawDescriptionHelpFormatter)
     src = ap.add_mutually_exclusive_group(required=True)
-    src.add_argument("--iface", help="CAN interface (e.g. vcan0, can0)")
-    src.add_argument("--log", help="candump -L log")
-    ap.add_argument("--rate", type=float, help="playback speed of --log (default 1; 0 = no waiting)")
-    ap.add_argument("--calib", help="calibration text file")
-    ap.add_argument("--snapshot", help="write one PNG after --after seconds and exit")
-    ap.add_argument("--after", type=float, help="seconds into the drive for --snapshot")
-    ap.add_argument("--window", type=float, default=10.0, help="seconds of history (default 10)")
-    ap.add_argument("--v-max", type=float, default=14.0, help="map's v0 range [m/s] (default 14)")
-    ap.add_argument("--force-max", type=float, default=20000.0, help="map's force range [N] (default 20000)")
-    ap.add_argument("--interface", default="socketcan", help="python-can interface of --iface")
+    src.add_argument("--iface", metavar="IF", help="read a CAN interface live (e.g. vcan0, can0)")
+    src.add_argument("--log", metavar="FILE", help="play a candump -L log (e.g. squeal-sim replay's output)")
+    ap.add_argument("--rate", type=float, metavar="X",
+                    help="playback speed of --log, x its own (default 1, with --snapshot 0; 0 = no waiting)")
+    ap.add_argument("--calib", metavar="FILE",
+                    help="calibration text file: corners, their brakes and identifiers (default: paper's brake, FL..RR)")
+    ap.add_argument("--snapshot", metavar="FILE.png",
+                    help="headless: write FILE.png (150 dpi) and FILE.svg after --after seconds and exit")
+    ap.add_argument("--after", type=float, metavar="S",
+                    help="seconds into the drive for --snapshot (log time; wall time on --iface)")
+    ap.add_argument("--window", type=float, default=10.0, metavar="S",
+                    help="seconds of history in the trail and time plots (default 10)")
+    ap.add_argument("--v-max", type=float, default=14.0, metavar="MPS",
+                    help="map's disc surface speed range [m/s] (default 14)")
+    ap.add_argument("--force-max", type=float, default=20000.0, metavar="N",
+                    help="map's pad force range [N] (default 20000)")
+    ap.add_argument("--interface", default="socketcan", metavar="NAME",
+                    help="python-can interface type of --iface (default socketcan)")
     args = ap.parse_args(argv)
     if (args.snapshot is None) != (args.after is None):
         ap.error("--snapshot FILE.png and --after S go together")
@@ -279,6 +302,7 @@ def main(argv=None):
                 return 1
             if not run_log(view, args.log, rate, args.after, tick):
                 print("live_view: %s: no CAN frames" % args.log, file=sys.stderr)
+                return 1
         else:
             import can
             with can.Bus(interface=args.interface, channel=args.iface) as bus:
@@ -288,9 +312,14 @@ def main(argv=None):
         return 1
     except KeyboardInterrupt:
         return 0
+    if view.frames == 0 and (headless or args.log):
+        print("live_view: %s: no monitor frames (SquealStatus, SquealDetail, SquealDetail2 on "
+              "%s): nothing to draw" % (args.log or args.iface, ", ".join(
+                  "0x%X" % i for i in sorted(view.ids))), file=sys.stderr)
+        return 1
     fig = view.draw()
     if headless:
-        fig.savefig(args.snapshot, dpi=fig.dpi)
+        P.save_as(fig, args.snapshot, tight=False)
         print("live_view: %d frames, %s at t = %.2f s -> %s" % (
             view.frames, ", ".join("%s %s" % (c.name, c.state) for c in view.corners.values()) or "no corner",
             view.now or 0.0, args.snapshot))

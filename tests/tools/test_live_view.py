@@ -68,11 +68,16 @@ def expected(decoded, t):
     return out
 
 
+PNG_DPI = 150  # the snapshot's resolution (tools/plots/plotlib.py)
+
+
 def pixel_of(fig, ax, x, y):
-    """(row, column) of data point (x, y) in a PNG saved at the figure's dpi."""
+    """(row, column) of data point (x, y) in the snapshot PNG (the figure's
+    own size, drawn at PNG_DPI)."""
+    k = PNG_DPI / fig.dpi
     dx, dy = ax.transData.transform((x, y))
-    h = fig.get_size_inches()[1] * fig.dpi
-    return int(round(h - dy)), int(round(dx))
+    h = fig.get_size_inches()[1] * PNG_DPI
+    return int(round(h - k * dy)), int(round(k * dx))
 
 
 def check_logs(tmp):
@@ -105,8 +110,15 @@ def check_logs(tmp):
         png = os.path.join(tmp, "snap-%.2f.png" % t)
         p = subprocess.run([PY, TOOL, "--log", out, "--snapshot", png, "--after", str(t)],
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=120)
-        R.check(p.returncode == 0 and os.path.getsize(png) > 10000 and p.stderr == b"",
-                "t=%.2f: live_view --snapshot: exit 0, a PNG, nothing on stderr" % t)
+        R.check(p.returncode == 0 and os.path.getsize(png) > 10000 and p.stderr == b""
+                and os.path.getsize(png[:-4] + ".svg") > 10000,
+                "t=%.2f: live_view --snapshot: exit 0, a PNG and the SVG beside it, nothing on stderr" % t)
+        from PIL import Image
+        with Image.open(png) as im:
+            R.check(tuple(round(x) for x in im.info.get("dpi", (0, 0))) == (PNG_DPI, PNG_DPI)
+                    and im.size == (int(round(fig.get_size_inches()[0] * PNG_DPI)),
+                                    int(round(fig.get_size_inches()[1] * PNG_DPI))),
+                    "t=%.2f: the PNG at 150 dpi, %s px" % (t, im.size))
         img = mpimg.imread(png)
         r, c = pixel_of(fig, a["map"], v, n)
         R.check(near(img[r, c], rgb(PATH[exp["state"]])),
@@ -117,7 +129,60 @@ def check_logs(tmp):
         r, c = pixel_of(fig, a["map"], 0.3, 18.0)   # slow, hard: unstable region
         R.check(near(img[r, c], rgb(REGION["unstable"], 0.55)), "t=%.2f: map, unstable region" % t)
         live_view.P.plt.close(fig)
+    check_labels(fig, view)
+    check_no_monitor(tmp, inp)
     return out, decoded
+
+
+def check_labels(fig, view):
+    """What the reader sees, from the Figure: every fill and line in the
+    legend in words, axes with units, warning levels named."""
+    a = view.axes["FL"]
+    texts = [t.get_text() for leg in fig.legends for t in leg.get_texts()]
+    want = ["Hopf border (unstable above)", "exact stability limit (bistable above)",
+            "region: unstable (squeal)", "region: bistable (squeal possible after a kick)",
+            "region: stable", "point, trail: reported stable", "point, trail: reported bistable",
+            "point, trail: reported unstable"]
+    R.check(texts == want, "legend: borders, regions, reported states in words (%s)" % texts)
+    R.check([t.get_text() for t in a["margin"].get_legend().get_texts()] ==
+            ["Hopf margin (reported)", "0: on the Hopf border"], "margin panel: both lines in its legend")
+    R.check(a["map"].get_xlabel().startswith("disc surface speed v0 [m/s]")
+            and a["map"].get_ylabel() == "pad force N [kN]"
+            and a["margin"].get_ylabel() == "Hopf margin [m/s]"
+            and a["warn"].get_xlabel() == "time [s] (0 = now)"
+            and a["warn"].get_ylabel() == "warning level", "axes: labels with units")
+    R.check([t.get_text() for t in a["warn"].get_yticklabels()] ==
+            ["0 none", "1 advisory", "2 warning", "3 critical"], "warning levels named")
+    # the map stretched where the borders are: 0..4.5 m/s (the limit reaches 20 kN at 3.65 m/s)
+    x0, x1 = (a["map"].transData.transform((v, 0.0))[0] for v in (0.0, 4.5))
+    xe = a["map"].transData.transform((14.0, 0.0))[0]
+    R.check(abs((x1 - x0) / (xe - x0) - 0.6) < 1e-6,
+            "map: 0..4.5 m/s take 60 %% of the 0..14 m/s axis (%.3f)" % ((x1 - x0) / (xe - x0)))
+    title = a["title"].get_text()
+    R.check("_" not in title and any(s in title for s in ("stable", "unstable (squeal)",
+                                                          "bistable (squeal possible after a kick)")),
+            "title: the state in words (%r)" % title)
+
+
+def check_no_monitor(tmp, inp):
+    """The plant's input log has CAN frames but not one monitor frame:
+    refused in one line, exit 1, nothing written."""
+    png = os.path.join(tmp, "nomon.png")
+    p = subprocess.run([PY, TOOL, "--log", inp, "--snapshot", png, "--after", "3"],
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=120)
+    err = p.stderr.decode().strip().splitlines()
+    R.check(p.returncode == 1 and len(err) == 1 and "no monitor frames" in err[0]
+            and not os.path.exists(png) and not os.path.exists(png[:-4] + ".svg"),
+            "a log without monitor frames: exit %d, one line %s, no picture" % (p.returncode, err))
+    before = sorted(os.listdir(tmp))
+    p = subprocess.run([PY, TOOL, "--help"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       timeout=60, cwd=tmp)
+    helptext = p.stdout.decode()
+    opts = ("--iface", "--log", "--rate", "--calib", "--snapshot", "--after", "--window",
+            "--v-max", "--force-max", "--interface")
+    R.check(p.returncode == 0 and all(("  %s " % o) in helptext for o in opts)
+            and sorted(os.listdir(tmp)) == before and "Exit status" in helptext,
+            "--help: exit 0, a line per option and the exit status, no file written")
 
 
 def check_corners(tmp, out, decoded):

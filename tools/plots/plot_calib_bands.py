@@ -117,9 +117,11 @@ def main(argv):
                f"first order and Monte Carlo differ by up to {100 * worst:.1f} % in N "
                f"(more than the {100 * TOLERANCE:.0f} % tolerance)")
 
-    fig, axes = plt.subplots(1, 2, figsize=(12, 5), sharey=True)
+    fig, grid = plt.subplots(2, 2, figsize=(12, 7.6), sharex=True,
+                             gridspec_kw=dict(height_ratios=(3.0, 1.35), hspace=0.12))
+    axes, widths = grid[0], grid[1]
     kn = 1e-3
-    for ax, (title, bh, bs) in zip(axes, (
+    for ax, aw, (title, bh, bs) in zip(axes, widths, (
             (f"Monte Carlo, {args.samples} parameter sets", mc_h, mc_s),
             ("first order (firmware, squeal_sigma.h)", fo_h, fo_s))):
         top = args.force_max * kn
@@ -131,20 +133,28 @@ def main(argv):
         for b, line, name in ((bh, P.LINE_HOPF, "Hopf border"),
                               (bs, P.LINE_EXACT, "stable border")):
             ax.fill_between(v, np.exp(b[0]) * kn, np.exp(b[2]) * kn, color=line["color"],
-                            alpha=0.25, lw=0, label=f"{name}: 5-95 %")
+                            alpha=0.45, lw=0, label=f"{name}: 5-95 % band")
             ax.plot(v, np.exp(b[1]) * kn, color=line["color"], lw=1.8, label=f"{name}: 50 %")
             for k in (0, 2):
-                ax.plot(v, np.exp(b[k]) * kn, color=line["color"], lw=0.8, ls="--")
+                ax.plot(v, np.exp(b[k]) * kn, color=line["color"], lw=0.8, ls="--",
+                        label=f"{name}: 5 % and 95 %" if k == 0 else None)
+            # the band's width, readable where it is thin on the map
+            aw.fill_between(v, 100.0 * np.expm1(b[0] - b[1]), 100.0 * np.expm1(b[2] - b[1]),
+                            color=line["color"], alpha=0.45, lw=0,
+                            label=f"{name}: 5-95 % band")
+        aw.axhline(0.0, color="0.3", lw=0.8, label="50 % border")
         ax.set_xlim(0, args.v_max)
         ax.set_ylim(0, top)
         ax.set_title(title, fontsize=10)
-        ax.set_xlabel("disc surface speed v0 [m/s]")
-        ax.grid(alpha=0.3)
+        aw.set_xlabel("disc surface speed v0 [m/s]")
+        for a in (ax, aw):
+            a.grid(alpha=0.3)
     axes[0].set_ylabel("pad force N [kN]")
-    axes[0].legend(fontsize=8, loc="upper right")
-    axes[1].text(0.02 * args.v_max, 0.04 * args.force_max * kn,
-                 "unstable above the Hopf border, bistable between, stable below",
-                 fontsize=8)
+    widths[0].set_ylabel("band: N / N(50 %) - 1 [%]")
+    handles, _ = axes[0].get_legend_handles_labels()
+    axes[0].legend(handles=handles + P.region_handles(), fontsize=7, loc="lower right",
+                   framealpha=0.92)
+    widths[0].legend(fontsize=7, loc="upper right", framealpha=0.92)
     fig.suptitle(f"{os.path.basename(args.calib)}: borders with the calibration's uncertainty"
                  f"\n{verdict}", fontsize=11)
     for path in P.save(fig, args.out, args.name):

@@ -33,7 +33,6 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plotlib as P  # noqa: E402
 from plotlib import plt, np  # noqa: E402
-from matplotlib.colors import ListedColormap  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
 NAMES = {0: "stable", 1: "bistable", 2: "unstable", 3: "not_sliding", 15: "fault"}
@@ -121,22 +120,12 @@ def main():
         p[key] = getattr(args, key)
     t, v, n, st, w = read_drive(args.csv, args.pad_radius)
 
-    fig = plt.figure(figsize=(14.0, 6.6))
+    fig = plt.figure(figsize=(14.0, 7.0))
     gs = fig.add_gridspec(4, 2, width_ratios=(1.15, 1.0), hspace=0.15, wspace=0.22)
     ax = fig.add_subplot(gs[:, 0])
     v_max = max(1.1 * float(v.max()), 0.5)
     n_max = max(1.15 * float(n.max()), 1000.0)
-    vv = np.linspace(v_max / 400, v_max, 300)
-    nn = np.linspace(n_max / 300, n_max, 240)
-    code = np.array([[P.STATE_CODE[P.classify(p, x, y)] for x in vv] for y in nn])
-    cmap = ListedColormap([P.STATE_COLORS["stable"], P.STATE_COLORS["bistable"],
-                           P.STATE_COLORS["unstable"]])
-    ax.pcolormesh(vv, nn / 1000.0, code, cmap=cmap, vmin=-0.5, vmax=2.5, shading="auto",
-                  rasterized=True)
-    for kind, style, lab in (("hopf", P.LINE_HOPF, "Hopf border N_H"),
-                             ("exact", P.LINE_EXACT, "exact limit"),
-                             ("cubic", P.LINE_CUBIC, "cubic limit (paper)")):
-        ax.plot(vv, [P.force_border(p, x, kind) / 1000.0 for x in vv], label=lab, **style)
+    P.draw_map(ax, p, v_max, n_max, cubic=True)
     # the path, segment by segment in the reported state's colour
     for i in range(len(t) - 1):
         ax.plot(v[i:i + 2], n[i:i + 2] / 1000.0, color=PATH_COLORS[st[i]], lw=2.4,
@@ -147,36 +136,33 @@ def main():
     ax.plot(v[-1], n[-1] / 1000.0, "s", color="k", ms=6)
     ax.annotate("end", (v[-1], n[-1] / 1000.0), textcoords="offset points", xytext=(6, -12),
                 fontsize=8)
-    ax.set_xlim(0, v_max)
-    ax.set_ylim(0, n_max / 1000.0)
-    ax.set_xlabel("disc surface speed v0 [m/s]")
-    ax.set_ylabel("pad force N [kN]")
     ax.set_title(f"Operating point over the map (a = {p['slope']:g} s/m, D = {p['damping']:g})",
                  fontsize=10)
-    handles, labels = ax.get_legend_handles_labels()
-    for name in ("stable", "bistable", "unstable", "not_sliding", "fault"):
-        if name in st:
-            handles.append(Line2D([], [], color=PATH_COLORS[name], lw=2.4))
-            labels.append(f"path: {name}")
-    ax.legend(handles, labels, fontsize=8, loc="upper right", framealpha=0.92)
+    seen = [s for s in P.PATH_COLORS if s in st]
+    paths = [Line2D([], [], color=PATH_COLORS[s], lw=2.4, label="path: " + P.state_label(s))
+             for s in seen]
+    # below the map: the legend must not hide the path
+    P.map_legend(ax, paths, loc="upper center", bbox_to_anchor=(0.5, -0.09), ncol=2,
+                 fontsize=7.5, frameon=False)
 
     axs = [fig.add_subplot(gs[i, 1]) for i in range(4)]
     axs[0].plot(t, v, color="#2166ac")
     axs[0].set_ylabel("v0 [m/s]")
     axs[1].plot(t, n / 1000.0, color="#4d4d4d")
     axs[1].set_ylabel("N [kN]")
-    codes = [{"stable": 0, "bistable": 1, "unstable": 2, "not_sliding": 3, "fault": 4}[s]
-             for s in st]
+    order = ("stable", "bistable", "unstable", "not_sliding", "fault")
+    codes = [order.index(s) for s in st]
     axs[2].step(t, codes, where="post", color="k", lw=1.0)
     for i in range(len(t) - 1):
         axs[2].axvspan(t[i], t[i + 1], color=PATH_COLORS[st[i]], alpha=0.35, lw=0)
     axs[2].set_yticks([0, 1, 2, 3, 4])
-    axs[2].set_yticklabels(["stable", "bistable", "unstable", "not sl.", "fault"], fontsize=7)
-    axs[2].set_ylabel("state")
+    axs[2].set_yticklabels([P.STATE_SHORT[s] for s in order], fontsize=7)
+    axs[2].set_ylabel("reported state")
     axs[3].step(t, w, where="post", color="#b2182b")
     axs[3].set_yticks([0, 1, 2, 3])
+    axs[3].set_yticklabels(P.WARNING_TICKS, fontsize=7)
     axs[3].set_ylim(-0.3, 3.3)
-    axs[3].set_ylabel("warning")
+    axs[3].set_ylabel("warning level")
     axs[3].set_xlabel("time [s]")
     for a in axs:
         a.grid(alpha=0.3)

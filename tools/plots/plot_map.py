@@ -94,13 +94,12 @@ LINE_SIM = P.LINE_SIM
 
 
 def legend_handles(with_bad):
-    h = [Patch(color=P.STATE_COLORS["unstable"], label="unstable (simulated): stick-slip grows"),
-         Patch(color=P.STATE_COLORS["bistable"], label="bistable (simulated): a push tips it"),
-         Patch(color=P.STATE_COLORS["stable"], label="stable (simulated)"),
-         Line2D([], [], label="Hopf border  Q = 1/2", **P.LINE_HOPF),
-         Line2D([], [], label="exact limit  Q = I1(s)/s  (firmware default)", **P.LINE_EXACT),
-         Line2D([], [], label="cubic limit  Q = 1/2 + s²/16  (paper)", **P.LINE_CUBIC),
-         Line2D([], [], color="k", lw=2.2, ls=":", label="simulated bistable/stable border")]
+    h = [Patch(color=P.STATE_COLORS[s], label="simulated: " + P.state_label(s))
+         for s in ("unstable", "bistable", "stable")]
+    h += [Line2D([], [], label="Hopf border  Q = 1/2", **P.LINE_HOPF),
+          Line2D([], [], label="exact limit  Q = I1(s)/s  (firmware default)", **P.LINE_EXACT),
+          Line2D([], [], label="cubic limit  Q = 1/2 + s²/16  (paper)", **P.LINE_CUBIC),
+          Line2D([], [], color="k", lw=2.2, ls=":", label="simulated bistable/stable border")]
     if with_bad:
         h.append(Line2D([], [], color=P.LINE_EXACT["color"], marker="x", ls="",
                         label="exact criterion disagrees with simulation"))
@@ -144,15 +143,17 @@ def main():
     others = [b for b in ("d0.05", "d0.1", "k2", "k0.5", "n5000", "n20000") if b in maps]
     if others:
         fig, axes = plt.subplots(2, 3, figsize=(12.0, 7.4), sharex=True, sharey=True)
+        any_bad = False
         for ax, b in zip(axes.flat, others):
             ne, nc, n = draw(ax, P.BRAKES[b], maps[b], False)
+            any_bad = any_bad or ne > 0
             ax.set_title(f"{P.BRAKE_TITLES[b]}\nexact {100.0 * (n - ne) / n:.2f} %, "
                          f"cubic {100.0 * (n - nc) / n:.2f} % agree", fontsize=9)
         for ax in axes[1, :]:
             ax.set_xlabel("a [s/m]")
         for ax in axes[:, 0]:
             ax.set_ylabel("v0 [m/s]")
-        fig.legend(handles=legend_handles(False), loc="lower center", ncol=4, fontsize=8)
+        fig.legend(handles=legend_handles(any_bad), loc="lower center", ncol=4, fontsize=8)
         fig.suptitle("The paper's variations: simulated classes and the three borders", fontsize=11)
         fig.tight_layout(rect=(0, 0.08, 1, 0.96))
         out += P.save(fig, args.out, "stability_map_variations")

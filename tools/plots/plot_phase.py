@@ -72,7 +72,7 @@ def main():
     tool = args.sim
     fig, axes = plt.subplots(1, 3, figsize=(15.0, 5.4))
 
-    # unstable: growth from 1 um into the stick-slip cycle
+    # unstable: growth from 1 µm into the stick-slip cycle
     ax = axes[0]
     v0 = 1.0
     xs = steady_x(v0)
@@ -80,7 +80,7 @@ def main():
                                     "--dt", "1e-5"])
     late = t > 0.08
     draw_path(ax, x[~late], v[~late], xs, color="#6baed6", lw=0.6,
-              label="from 1 um off steady sliding")
+              label="from 1 µm off steady sliding")
     draw_path(ax, x[late], v[late], xs, color="#b2182b", lw=1.8,
               label="stick-slip cycle (t > 80 ms)")
     ax.plot([0], [0], "o", color="k", ms=4, label="steady sliding (unstable)")
@@ -118,19 +118,21 @@ def main():
     ax = axes[2]
     v0 = 2.5
     xs = steady_x(v0)
+    stick_lab = "sticking (x' = v0)"
     for dx, col, lab in ((4.5e-4, "#1a9850", "push to 0.9 v0: decays"),
                          (6e-4, "#4575b4", "push to the stick line: sticks once, decays")):
         t, x, v, st = trajectory(tool, ["--v0", str(v0), "--dx", repr(dx), "--t-end", "0.015",
                                         "--dt", "1e-5"])
         draw_path(ax, x, v, xs, color=col, lw=0.6, label=lab)
         if st.any():
-            draw_path(ax, x[st], v[st], xs, color="#b2182b", lw=2.5)
+            draw_path(ax, x[st], v[st], xs, color="#b2182b", lw=2.5, label=stick_lab)
+            stick_lab = None
     ax.plot([0], [0], "o", color="k", ms=4, label="steady sliding (stable)")
     stick_line(ax, v0)
     ax.set_title("STABLE  v0 = 2.5 m/s\nno sliding cycle below the stick line", fontsize=10)
 
     for ax in axes:
-        ax.set_xlabel("x - x_s [um]")
+        ax.set_xlabel("x - x_s [µm]")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7.5, loc="lower left", framealpha=0.9)
     axes[0].set_ylabel("pad velocity x' [m/s]")

@@ -50,9 +50,21 @@ def draw(script, argv):
     return rc, out.getvalue(), saved
 
 
+DPI = 150
+
+
+def png_dpi(path):
+    """The resolution a PNG declares (its pHYs chunk), or None."""
+    from PIL import Image
+    with Image.open(path) as im:
+        dpi = im.info.get("dpi")
+    return None if dpi is None else tuple(int(round(x)) for x in dpi)
+
+
 def files_ok(paths):
-    """Both files of a picture written, not empty, of their format."""
-    ok = len(paths) == 2
+    """Both files of a picture written, not empty, of their format: the PNG
+    at 150 dpi, the SVG beside it (same name)."""
+    ok = len(paths) == 2 and paths[0].endswith(".png") and paths[1] == paths[0][:-4] + ".svg"
     for path in paths:
         if not os.path.isfile(path) or os.path.getsize(path) == 0:
             return False
@@ -60,7 +72,7 @@ def files_ok(paths):
             with open(path, "rb") as f:
                 head = f.read(24)
             ok = ok and head[:8] == b"\x89PNG\r\n\x1a\n" and head[12:16] == b"IHDR"
-            ok = ok and min(struct.unpack(">II", head[16:24])) > 100
+            ok = ok and min(struct.unpack(">II", head[16:24])) > 100 and png_dpi(path) == (DPI, DPI)
         else:
             try:
                 ok = ok and ET.parse(path).getroot().tag.endswith("svg")
@@ -82,6 +94,23 @@ def line_at(line, x):
 def lines_of_colour(ax, colour, min_points=3):
     return [ln for ln in ax.get_lines()
             if matplotlib.colors.same_color(ln.get_color(), colour) and len(ln.get_xdata()) >= min_points]
+
+
+def all_legend_texts(fig):
+    """Every legend's labels of a figure (axes' and the figure's own)."""
+    out = []
+    for leg in [a.get_legend() for a in fig.axes] + list(fig.legends):
+        out += legend_texts(leg)
+    return out
+
+
+CODE_NAMES = ("not_sliding", " um", "[um]", "mu_inf", "delta_mu", "w0 =")
+
+
+def no_code_names(texts):
+    """None of the code names a reader should not see (state names,
+    'um' for micrometres, the fit's variable names)."""
+    return [t for t in texts if any(c in t for c in CODE_NAMES)]
 
 
 def suptitle(fig):

@@ -60,12 +60,21 @@ def nominal(c, tmp):
     c.check(mc.get_title() == "Monte Carlo, 4000 parameter sets"
             and fo.get_title() == "first order (firmware, squeal_sigma.h)",
             "the two panels: Monte Carlo and first order (%r, %r)" % (mc.get_title(), fo.get_title()))
-    c.check([a.get_xlabel() for a in (mc, fo)] == ["disc surface speed v0 [m/s]"] * 2
-            and mc.get_ylabel() == "pad force N [kN]", "axes: speed v0 [m/s] across, pad force N [kN] up")
+    wmc, wfo = fig.axes[2], fig.axes[3]
+    c.check([a.get_xlabel() for a in (wmc, wfo)] == ["disc surface speed v0 [m/s]"] * 2
+            and mc.get_ylabel() == "pad force N [kN]"
+            and wmc.get_ylabel() == "band: N / N(50 %) - 1 [%]"
+            and wmc.get_xlim() == mc.get_xlim(),
+            "axes: speed v0 [m/s] across (shared), pad force N [kN] up; below, the band's width in %")
     c.check(mc.get_xlim() == (0.0, 3.0) and mc.get_ylim() == (0.0, 20.0),
             "default ranges: 0..3 m/s, 0..20 kN (%s %s)" % (mc.get_xlim(), mc.get_ylim()))
-    c.check(legend_texts(mc.get_legend()) == ["Hopf border: 5-95 %", "Hopf border: 50 %",
-                                              "stable border: 5-95 %", "stable border: 50 %"],
+    c.check(legend_texts(mc.get_legend()) == [
+                "Hopf border: 5-95 % band", "Hopf border: 50 %", "Hopf border: 5 % and 95 %",
+                "stable border: 5-95 % band", "stable border: 50 %", "stable border: 5 % and 95 %",
+                "region: unstable (squeal)", "region: bistable (squeal possible after a kick)",
+                "region: stable"]
+            and legend_texts(wmc.get_legend()) == ["Hopf border: 5-95 % band",
+                                                   "stable border: 5-95 % band", "50 % border"],
             "legend: each border's 50 %% line and 5-95 %% band (%s)" % legend_texts(mc.get_legend()))
     ok = True
     for ax in (mc, fo):

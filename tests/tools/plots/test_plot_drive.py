@@ -63,9 +63,13 @@ def drive(c, tmp):
     c.check(ax.get_xlim()[0] == 0.0 and abs(ax.get_xlim()[1] - 3.3) < 1e-12,
             "speed axis to 1.1 x the fastest point: 3.3 m/s (%s)" % (ax.get_xlim(),))
     c.check(abs(ax.get_ylim()[1] - 13.8) < 1e-12, "force axis to 1.15 x 12 kN = 13.8 kN (%s)" % (ax.get_ylim(),))
-    c.check(legend_texts(ax.get_legend()) == ["Hopf border N_H", "exact limit", "cubic limit (paper)",
-                                              "path: stable", "path: bistable", "path: unstable", "path: fault"],
-            "legend: the three borders, then one entry per state the path has (%s)" % legend_texts(ax.get_legend()))
+    want = ["Hopf border (unstable above)", "exact stability limit (bistable above)", "cubic limit (paper)",
+            "region: unstable (squeal)", "region: bistable (squeal possible after a kick)", "region: stable",
+            "path: stable", "path: bistable (squeal possible after a kick)", "path: unstable (squeal)",
+            "path: fault (inputs stale or implausible)"]
+    c.check(legend_texts(ax.get_legend()) == want,
+            "legend: the three borders, the three regions, then one entry per state the path has, "
+            "in words (%s)" % legend_texts(ax.get_legend()))
     hopf = lines_of_colour(ax, plotlib.LINE_HOPF["color"])
     exact = lines_of_colour(ax, plotlib.LINE_EXACT["color"])
     want_h, want_s = n_hopf(1.0) / 1000.0, n_hopf(1.0) / iv(1, 2.0) / 1000.0
@@ -81,8 +85,14 @@ def drive(c, tmp):
         ok = ok and [round(x, 9) for x in ln.get_ydata()] == [FORCE_N[i] / 1000.0, FORCE_N[i + 1] / 1000.0]
         ok = ok and ln.get_color() == plotlib.PATH_COLORS[names[i]]
     c.check(ok, "the path: 4 segments through the points, each in its starting point's reported state")
-    c.check([a.get_ylabel() for a in axs] == ["v0 [m/s]", "N [kN]", "state", "warning"]
-            and axs[-1].get_xlabel() == "time [s]", "time plots: v0 [m/s], N [kN], state, warning over time [s]")
+    c.check([a.get_ylabel() for a in axs] == ["v0 [m/s]", "N [kN]", "reported state", "warning level"]
+            and axs[-1].get_xlabel() == "time [s]",
+            "time plots: v0 [m/s], N [kN], reported state, warning level over time [s]")
+    c.check([t.get_text() for t in axs[2].get_yticklabels()] ==
+            ["stable", "bistable", "unstable", "not sliding", "fault"]
+            and [t.get_text() for t in axs[3].get_yticklabels()] ==
+            ["0 none", "1 advisory", "2 warning", "3 critical"],
+            "states and warning levels named on their axes (no code names)")
     series = [list(a.get_lines()[0].get_ydata()) for a in axs]
     c.check(series[0] == V0_MPS and series[1] == [n / 1000.0 for n in FORCE_N]
             and series[2] == [0, 1, 2, 2, 4] and series[3] == WARN,

@@ -80,7 +80,10 @@ def main():
         c.check("simulation of 12 points; exact criterion agrees at 91.67 %, cubic at 75.00 %" in ax.get_title(),
                 f"the title states 11/12 = 91.67 % and 9/12 = 75.00 % ({ax.get_title()!r})")
         labels = legend_texts(fig.legends[0] if fig.legends else None)
-        c.check(len(labels) == 8 and labels[3].startswith("Hopf border") and labels[4].startswith("exact limit")
+        c.check(len(labels) == 8 and labels[:3] == ["simulated: unstable (squeal)",
+                                                    "simulated: bistable (squeal possible after a kick)",
+                                                    "simulated: stable"]
+                and labels[3].startswith("Hopf border") and labels[4].startswith("exact limit")
                 and labels[5].startswith("cubic limit") and labels[7] == "exact criterion disagrees with simulation",
                 "the legend: three classes, three borders, the simulated border, the disagreement (%s)" % labels)
         marks = [ln for ln in ax.get_lines() if ln.get_marker() == "x"]

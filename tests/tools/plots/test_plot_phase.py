@@ -24,7 +24,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from figures import ROOT, Checks, draw, files_ok, legend_texts, suptitle  # noqa: E402
+from figures import ROOT, Checks, draw, files_ok, legend_texts, no_code_names, suptitle  # noqa: E402
 
 SIM = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "host", "oscsim"))
 V0_MPS = (1.0, 1.5, 2.5)
@@ -51,16 +51,19 @@ def main():
             return c.finish()
         fig = saved[0][1]
         axes = fig.axes
-        c.check(len(axes) == 3 and all(a.get_xlabel() == "x - x_s [um]" for a in axes)
+        c.check(len(axes) == 3 and all(a.get_xlabel() == "x - x_s [µm]" for a in axes)
                 and axes[0].get_ylabel() == "pad velocity x' [m/s]",
-                "three panels: x - x_s [um] across, pad velocity x' [m/s] up")
+                "three panels: x - x_s [µm] across, pad velocity x' [m/s] up")
         titles = [a.get_title().split("\n")[0] for a in axes]
         c.check(titles[0] == "UNSTABLE  v0 = 1.0 m/s (below v_H = %.2f m/s)" % v_h
                 and titles[1] == "BISTABLE  v0 = 1.5 m/s" and titles[2] == "STABLE  v0 = 2.5 m/s",
                 "titles: the class and v0 of each panel, v_H = %.4f m/s by hand (%s)" % (v_h, titles))
         c.check("a = 2 s/m" in suptitle(fig) and "N = 9 kN" in suptitle(fig), "the brake named in the title")
         counts = [len(legend_texts(a.get_legend())) for a in axes]
-        c.check(counts == [3, 5, 3], "legends: 3, 5 and 3 entries (%s)" % counts)
+        c.check(counts == [3, 5, 4], "legends: 3, 5 and 4 entries (%s)" % counts)
+        texts = [t for a in axes for t in legend_texts(a.get_legend())]
+        c.check("sticking (x' = v0)" in texts and not no_code_names(texts),
+                "the stable panel's sticking stretch in the legend; no code names (%s)" % no_code_names(texts))
         ok = True
         for ax, v0 in zip(axes, V0_MPS):
             stick = [ln for ln in ax.get_lines() if ln.get_linestyle() == "-."]

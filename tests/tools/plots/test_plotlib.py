@@ -1,15 +1,17 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""The pictures: make each one (small grids, into a temporary directory)
-and open it: PNG signature and header, size in pixels and bytes, content
-that is not blank (pixel spread, distinct colours, share of non-background
-pixels); SVG parsed as XML with a real drawing inside. The drive picture is
-drawn from a synthetic braking manoeuvre generated here. The committed
-docs/img/*.png are checked the same way (and for the 300 KB limit).
+"""tools/plots/plotlib.py, the pictures' shared style (each picture itself is
+drawn and read by its own test_plot_*.py): save() writes a 150 dpi PNG and
+the SVG beside it; state and warning names in words; the map's fills in
+the legend; the stretched speed axis (invertible, 60 % for the zoom, ending
+past the speed where the stability limit reaches the top force, found here
+by bisection on N_S with scipy's I1); the Hopf border by hand. Then the
+committed docs/img/*.png opened: PNG signature and header, 150 dpi, size in
+pixels and under 300 KB, content not blank (pixel spread, distinct colours,
+share of white); each SVG there under 300 KB and a real drawing.
 
-usage: test_plots.py [path/to/oscsim]   prints "RESULT: N passed, M failed"
+usage: test_plotlib.py   prints "RESULT: N passed, M failed"
 """
-import csv
 import glob
 import math
 import os
@@ -57,6 +59,10 @@ def check_png(path, min_w=600, min_h=400, max_bytes=None):
     w, h = struct.unpack(">II", head[16:24]) if sig_ok else (0, 0)
     check(f"{name} is a PNG of at least {min_w}x{min_h}", sig_ok and w >= min_w and h >= min_h,
           f"{w}x{h}, {size} bytes")
+    from PIL import Image
+    with Image.open(path) as im:
+        dpi = tuple(round(x) for x in im.info.get("dpi", (0, 0)))
+    check(f"{name} is at 150 dpi", dpi == (150, 150), str(dpi))
     if max_bytes is not None:
         check(f"{name} is under {max_bytes // 1000} KB", size < max_bytes, f"{size} bytes")
     img = mpimg.imread(path)
@@ -71,105 +77,92 @@ def check_png(path, min_w=600, min_h=400, max_bytes=None):
           f"pixel std {spread:.3f}, {colours} colours, {100 * background:.0f} % white")
 
 
-def check_svg(path):
+def check_svg(path, min_paths=20):
     name = os.path.basename(path)
     try:
         root = ET.parse(path).getroot()
         n = sum(1 for _ in root.iter())
         paths = sum(1 for e in root.iter() if e.tag.endswith("path"))
-        ok = root.tag.endswith("svg") and paths >= 20
+        ok = root.tag.endswith("svg") and paths >= min_paths
         detail = f"{n} elements, {paths} paths"
     except (ET.ParseError, OSError) as exc:
         ok, detail = False, repr(exc)
     check(f"{name} is an SVG drawing", ok, detail)
 
 
-def synthetic_drive(path):
-    """A braking manoeuvre: 3 m/s to standstill in 12 s, pad force up to
-    9 kN then 14 kN; state and warning from the closed forms."""
-    p = dict(plotlib.DEFAULT)
-    with open(path, "w", newline="") as f:
-        wr = csv.writer(f)
-        wr.writerow(["time_s", "v0_mps", "force_n", "state", "warning"])
-        for i in range(0, 131):
-            t = 0.1 * i
-            v0 = max(0.0, 3.0 * (1.0 - t / 12.0))
-            n = min(9000.0, 4500.0 * t) + (5000.0 * (t - 8.0) / 4.0 if t > 8.0 else 0.0)
-            st = plotlib.classify(p, v0, n)
-            code = {"stable": 0, "bistable": 1, "unstable": 2, "not_sliding": 3}[st]
-            warn = {0: 0, 1: 2, 2: 3, 3: 0}[code]
-            wr.writerow([f"{t:.2f}", f"{v0:.4f}", f"{n:.1f}", code, warn])
-    return p
+def check_save(tmp):
+    """plotlib.save: the PNG at 150 dpi (its pHYs chunk), the SVG beside."""
+    from PIL import Image
+    fig, ax = plotlib.plt.subplots(figsize=(6.0, 4.0))
+    ax.plot([0, 1, 2], [0, 1, 0], label="a line")
+    ax.legend()
+    paths = plotlib.save(fig, tmp, "probe")
+    check("save writes NAME.png and NAME.svg", paths == [os.path.join(tmp, "probe.png"),
+                                                        os.path.join(tmp, "probe.svg")])
+    with Image.open(paths[0]) as im:
+        dpi = tuple(round(x) for x in im.info.get("dpi", (0, 0)))
+    check("the PNG declares 150 dpi", dpi == (150, 150), str(dpi))
+    check_svg(paths[1], min_paths=3)
 
 
-def decode_style(drive_csv, path):
-    """The drive as decode --csv writes it: one row per frame, a signal's
-    cell empty in frames that do not carry it."""
-    cols = ["time_s", "id", "message", "counter", "e2e", "DiscSpeed_radps", "PadForce_N",
-            "SquealState", "WarningLevel", "V0_mps", "Force_N", "raw"]
-    with open(drive_csv, newline="") as f, open(path, "w", newline="") as g:
-        wr = csv.DictWriter(g, fieldnames=cols)
-        wr.writeheader()
-        for i, row in enumerate(csv.DictReader(f)):
-            t = float(row["time_s"])
-            wr.writerow({"time_s": f"{t:.6f}", "id": "110", "message": "DiscSpeed",
-                         "DiscSpeed_radps": f"{float(row['v0_mps']) / 0.12:.3f}"})
-            if i % 3 == 0:
-                wr.writerow({"time_s": f"{t + 0.001:.6f}", "id": "400", "message": "SquealDetail",
-                             "V0_mps": row["v0_mps"]})
-                wr.writerow({"time_s": f"{t + 0.002:.6f}", "id": "401",
-                             "message": "SquealDetail2", "Force_N": row["force_n"]})
-            wr.writerow({"time_s": f"{t + 0.003:.6f}", "id": "300", "message": "SquealStatus",
-                         "SquealState": row["state"], "WarningLevel": row["warning"]})
+def check_names():
+    """What a reader sees: human state names, named warning levels."""
+    labels = list(plotlib.STATE_LABELS.values()) + list(plotlib.STATE_SHORT.values())
+    check("no state label is a code name", all("_" not in t for t in labels), str(labels))
+    check("bistable and unstable say what they mean",
+          plotlib.STATE_LABELS["bistable"] == "bistable (squeal possible after a kick)"
+          and plotlib.STATE_LABELS["unstable"] == "unstable (squeal)"
+          and plotlib.STATE_LABELS["not_sliding"] == "not sliding")
+    check("warning levels as the DBC names them",
+          plotlib.WARNING_TICKS == ("0 none", "1 advisory", "2 warning", "3 critical"))
+    hs = [h.get_label() for h in plotlib.region_handles()]
+    check("the map's fills have legend entries", hs == [
+        "region: unstable (squeal)", "region: bistable (squeal possible after a kick)",
+        "region: stable"], str(hs))
+
+
+def check_zoom():
+    """The stretched speed axis: continuous, invertible, 60 % for the zoom;
+    the zoom ends past the speed where the stability limit reaches N."""
+    z = plotlib.SpeedZoom(3.0, 15.0)
+    v = np.linspace(0.0, 15.0, 301)
+    back = z.inverse(z.forward(v))
+    check("zoom: inverse(forward(v)) = v", float(np.max(np.abs(back - v))) < 1e-12)
+    frac = float(z.forward(3.0) / z.forward(15.0))
+    check("zoom: 0..3 m/s take 60 % of a 0..15 m/s axis", abs(frac - 0.6) < 1e-12, "%.6f" % frac)
+    p = plotlib.DEFAULT
+    # N_S(v) = 2 D w0 m / (a dmu) e^(a v) / (2 I1(a v) / (a v)), solved here by bisection
+    from scipy.special import iv
+    n_s = lambda x: 2 * 0.023 * 5000 / (2 * 0.15) * math.exp(2 * x) / (2 * iv(1, 2 * x) / (2 * x))
+    lo, hi = 0.1, 10.0
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if n_s(mid) < 20000.0 else (lo, mid)
+    got = plotlib.stable_speed(p, 20000.0)
+    check("stability limit reaches 20 kN at %.4f m/s (bisection %.4f)" % (got, lo), abs(got - lo) < 1e-6)
+    zz = plotlib.speed_zoom(p, 14.0, 20000.0)
+    check("map to 14 m/s, 20 kN: zoomed to 4.5 m/s", zz is not None and zz.v_zoom == 4.5,
+          str(zz and zz.v_zoom))
+    check("map to 3.3 m/s: no zoom (the borders fill it)", plotlib.speed_zoom(p, 3.3, 13800.0) is None)
 
 
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        try:
-            csv_path = os.path.join(tmp, "map.csv")
-            run([TOOL, "map", "--grid", "30", "--brake", "all", "--no-linear", "--csv", csv_path])
-            out = run([PY, os.path.join(PLOTS, "plot_map.py"), csv_path, "--out", tmp])
-            check("plot_map.py writes both maps", len(out.split()) == 4, out.replace("\n", " "))
-            check_png(os.path.join(tmp, "stability_map.png"))
-            check_png(os.path.join(tmp, "stability_map_variations.png"))
-            check_svg(os.path.join(tmp, "stability_map.svg"))
-            check_svg(os.path.join(tmp, "stability_map_variations.svg"))
-        except Exception as exc:
-            check("stability maps", False, repr(exc))
-        try:
-            run([PY, os.path.join(PLOTS, "plot_phase.py"), "--sim", TOOL, "--out", tmp])
-            check_png(os.path.join(tmp, "phase_portraits.png"), min_w=1000)
-            check_svg(os.path.join(tmp, "phase_portraits.svg"))
-        except Exception as exc:
-            check("phase portraits", False, repr(exc))
-        try:
-            drive = os.path.join(tmp, "drive.csv")
-            synthetic_drive(drive)
-            run([PY, os.path.join(PLOTS, "plot_drive.py"), drive, "--out", tmp,
-                 "--name", "drive_synthetic"])
-            check_png(os.path.join(tmp, "drive_synthetic.png"), min_w=1000)
-            check_svg(os.path.join(tmp, "drive_synthetic.svg"))
-            # the same drive as `squeal-sim decode --csv` rows (frames)
-            dec = os.path.join(tmp, "decode.csv")
-            decode_style(drive, dec)
-            run([PY, os.path.join(PLOTS, "plot_drive.py"), dec, "--out", tmp,
-                 "--name", "drive_decoded"])
-            check_png(os.path.join(tmp, "drive_decoded.png"), min_w=1000)
-            # a wrong input is refused, not drawn
-            bad = os.path.join(tmp, "bad.csv")
-            with open(bad, "w") as f:
-                f.write("time_s,speed\n0,1\n")
-            rc = subprocess.run([PY, os.path.join(PLOTS, "plot_drive.py"), bad, "--out", tmp],
-                                capture_output=True, cwd=ROOT).returncode
-            check("plot_drive.py refuses a CSV without its columns", rc != 0, f"exit {rc}")
-        except Exception as exc:
-            check("drive picture", False, repr(exc))
+        check_save(tmp)
+    check_names()
+    check_zoom()
     # the borders the maps draw: v_H of the default brake (model.md section 8)
     v_h = plotlib.border_v0(plotlib.DEFAULT, 2.0, "hopf")
     check("map's Hopf border at a = 2 s/m is 1.2315 m/s", abs(v_h - 1.2315) < 5e-5, f"{v_h:.6f}")
+    # the committed pictures (make docs-img): PNG 150 dpi under 300 KB, SVGs
+    # beside them only when small
     committed = sorted(glob.glob(os.path.join(ROOT, "docs", "img", "*.png")))
+    check("docs/img holds the pictures", len(committed) >= 9, str(len(committed)))
     for path in committed:
         check_png(path, min_w=600, min_h=400, max_bytes=300_000)
+    for path in sorted(glob.glob(os.path.join(ROOT, "docs", "img", "*.svg"))):
+        check(f"{os.path.basename(path)} is under 300 KB", os.path.getsize(path) < 300_000)
+        check_svg(path)
     return check.finish()
 
 
