@@ -21,7 +21,6 @@ The figure states how far the two pictures are apart: the largest relative
 difference in N of the 5 %, 50 % and 95 % borders over the plotted speeds,
 against the tolerance TOLERANCE.
 """
-import argparse
 import math
 import os
 import sys
@@ -29,6 +28,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import plotlib as P  # noqa: E402
+import helptext  # noqa: E402  (tools/, put on the path by plotlib)
 from plotlib import plt, np  # noqa: E402
 from scipy.special import i0e, i1e  # noqa: E402
 
@@ -92,13 +92,13 @@ def first_order(p, v):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("calib")
-    ap.add_argument("--out", default="build/plots")
-    ap.add_argument("--name", default="calib_bands")
-    ap.add_argument("--v-max", type=float, default=3.0)
-    ap.add_argument("--force-max", type=float, default=20000.0)
-    ap.add_argument("--samples", type=int, default=20000)
+    ap = helptext.parser(__doc__, "tools/plots/plot_calib_bands.py")
+    ap.add_argument("calib", metavar="FILE.cal", help="calibration file with the *_sd keys of a fit")
+    ap.add_argument("--out", default="build/plots", metavar="DIR", help="folder for NAME.png and NAME.svg (default build/plots)")
+    ap.add_argument("--name", default="calib_bands", help="file name without extension (default calib_bands)")
+    ap.add_argument("--v-max", type=float, default=3.0, metavar="MPS", help="largest disc surface speed drawn [m/s] (default 3.0)")
+    ap.add_argument("--force-max", type=float, default=20000.0, metavar="N", help="largest pad force drawn [N] (default 20000)")
+    ap.add_argument("--samples", type=int, default=20000, metavar="K", help="Monte Carlo parameter sets (default 20000, fixed seed)")
     args = ap.parse_args(argv)
     p = read(args.calib)
     v = np.linspace(args.v_max / 300.0, args.v_max, 300)

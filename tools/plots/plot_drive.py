@@ -16,7 +16,7 @@ or the output of `squeal-sim decode --csv` (one row per frame, recognised
     squeal-sim plant --log in.log --scenario sweep
     squeal-sim replay in.log > out.log
     sort -s -k1,1 in.log out.log | squeal-sim decode --csv > drive.csv
-The map background and borders come from the closed forms (model.md,
+The map background and borders come from the closed forms (docs/model.md,
 exact criterion) for the brake given by the options (default: the
 paper's brake at a = 2 s/m).
 
@@ -24,7 +24,6 @@ usage: plot_drive.py DRIVE.csv [--out DIR] [--name NAME] [--slope A]
          [--damping D] [--omega0 W] [--mass M] [--delta-mu Y]
 writes DIR/NAME.{png,svg} (NAME default: drive)
 """
-import argparse
 import csv
 import math
 import os
@@ -32,6 +31,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plotlib as P  # noqa: E402
+import helptext  # noqa: E402  (tools/, put on the path by plotlib)
 from plotlib import plt, np  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
@@ -105,15 +105,16 @@ def read_drive(path, pad_radius=0.12):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("csv")
-    ap.add_argument("--out", default="build/plots")
-    ap.add_argument("--name", default="drive")
+    ap = helptext.parser(__doc__, "tools/plots/plot_drive.py")
+    ap.add_argument("csv", metavar="DRIVE.csv", help="drive CSV (columns above) or squeal-sim decode --csv output")
+    ap.add_argument("--out", default="build/plots", metavar="DIR", help="folder for NAME.png and NAME.svg (default build/plots)")
+    ap.add_argument("--name", default="drive", help="file name without extension (default drive)")
     ap.add_argument("--pad-radius", type=float, default=0.12,
                     help="r_p [m] for v0 from DiscSpeed_radps (decode CSV only)")
     for opt, key in (("--slope", "slope"), ("--damping", "damping"), ("--omega0", "omega0"),
                      ("--mass", "mass"), ("--delta-mu", "delta_mu")):
-        ap.add_argument(opt, type=float, default=P.DEFAULT[key], dest=key)
+        ap.add_argument(opt, type=float, default=P.DEFAULT[key], dest=key,
+                        help="brake parameter %s of the map (default %g)" % (key, P.DEFAULT[key]))
     args = ap.parse_args()
     p = dict(P.DEFAULT)
     for key in ("slope", "damping", "omega0", "mass", "delta_mu"):

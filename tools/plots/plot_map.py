@@ -9,7 +9,6 @@ usage: plot_map.py MAP.csv [--out DIR] [--brake NAME]
   writes DIR/stability_map.{png,svg} (the default brake, large) and, when
   the CSV holds the variations, DIR/stability_map_variations.{png,svg}.
 """
-import argparse
 import csv
 import math
 import os
@@ -17,6 +16,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plotlib as P  # noqa: E402
+import helptext  # noqa: E402  (tools/, put on the path by plotlib)
 from plotlib import plt, np  # noqa: E402
 from matplotlib.colors import ListedColormap  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
@@ -107,10 +107,10 @@ def legend_handles(with_bad):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("csv")
-    ap.add_argument("--out", default="build/plots")
-    ap.add_argument("--brake", default="default")
+    ap = helptext.parser(__doc__, "tools/plots/plot_map.py")
+    ap.add_argument("csv", metavar="MAP.csv", help="output of squeal-sim map --csv or oscsim map --csv")
+    ap.add_argument("--out", default="build/plots", metavar="DIR", help="folder for the pictures (default build/plots)")
+    ap.add_argument("--brake", default="default", metavar="NAME", help="brake of the large map: default, d0.05, d0.1, k2, k0.5, n5000 or n20000")
     args = ap.parse_args()
     maps = read_map(args.csv)
     if args.brake not in maps:

@@ -10,13 +10,13 @@ operating points of the paper's brake (a = 2 s/m, N = 9 kN), simulated by
 
 usage: plot_phase.py [--sim PATH] [--out DIR]   writes DIR/phase_portraits.{png,svg}
 """
-import argparse
 import os
 import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plotlib as P  # noqa: E402
+import helptext  # noqa: E402  (tools/, put on the path by plotlib)
 from plotlib import plt, np  # noqa: E402
 
 BRAKE = ["--slope", "2", "--force", "9000"]
@@ -64,10 +64,10 @@ def stick_line(ax, v0):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = helptext.parser(__doc__, "tools/plots/plot_phase.py")
     ap.add_argument("--sim", default="build/host/oscsim",
                     help="program with a 'simulate' subcommand")
-    ap.add_argument("--out", default="build/plots")
+    ap.add_argument("--out", default="build/plots", metavar="DIR", help="folder for phase_portraits.png and .svg (default build/plots)")
     args = ap.parse_args()
     tool = args.sim
     fig, axes = plt.subplots(1, 3, figsize=(15.0, 5.4))

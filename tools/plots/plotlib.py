@@ -1,11 +1,22 @@
 # SPDX-License-Identifier: MIT
-"""Shared pieces of the plotting scripts: the brake's closed-form borders
-(shared/model.md sections 2-4, computed here independently of the
-firmware, in double precision with scipy), colours and file output."""
+"""Shared pieces of the plotting scripts: the brake's closed-form borders, colours and file output.
+
+The borders are those of docs/model.md (the Hopf border and the stability
+limit), computed here independently of the firmware, in double precision
+with scipy. The style (150 dpi, state and warning names in words, legend
+entries for the region fills, the stretched speed axis) is the one every
+picture of the project uses. A module the plotting scripts import.
+"""
 import math
 import os
+import sys
 
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import deps  # noqa: E402  (names the Debian package of a missing module)
+
+deps.need("numpy", "scipy", "matplotlib")
+
+import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
@@ -331,3 +342,8 @@ def save_as(fig, png_path, tight=True):
 def save(fig, out_dir, name):
     """fig as OUT_DIR/NAME.png and .svg (save_as)."""
     return save_as(fig, os.path.join(out_dir, name + ".png"))
+
+
+if __name__ == "__main__":
+    import helptext
+    helptext.module_main(__doc__, "tools/plots/plotlib.py")
