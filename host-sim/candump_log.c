@@ -771,11 +771,12 @@ void candump_pending_frame(candump_pending_t *p)
 	}
 }
 
-bool candump_pending_no_frames(candump_pending_t *p)
+bool candump_pending_no_frames(candump_pending_t *p, uint64_t lines)
 {
 	if (p->frames_seen) {
 		return false;
 	}
-	(void)fprintf(p->out, "no CAN frames in %s\n", p->log_name);
+	(void)fprintf(p->out, "%s: no CAN frame in %llu line%s\n", p->log_name,
+		      (unsigned long long)lines, (lines == 1U) ? "" : "s");
 	return true;
 }
