@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * candump_log: see candump_log.h for the grammar. The parser is a plain
- * cursor over [line, line + len): every read goes through peek(), which
- * answers 0 past the end, so no path can read out of bounds whatever the
+ * cursor over a copy of the line followed by CURSOR_PAD NUL bytes (a line
+ * with a NUL byte is refused before): every read goes through peek() or
+ * peek_at(offset < CURSOR_PAD), which answer 0 at and past the end without
+ * a test per character, so no path can read out of bounds whatever the
  * bytes are.
  */
 #include "candump_log.h"
@@ -10,20 +12,22 @@
 #include <stdarg.h>
 #include <string.h>
 
+#define CURSOR_PAD 16U /* NUL bytes after the line: the largest peek_at() is 8 */
+
 typedef struct {
-	const char *s;
+	const char *s; /* len bytes, then CURSOR_PAD NUL bytes */
 	size_t len;
-	size_t i;
+	size_t i;      /* never beyond len: every step forward follows a peek() != 0 */
 } cursor_t;
 
 static int peek(const cursor_t *c)
 {
-	return (c->i < c->len) ? (unsigned char)c->s[c->i] : 0;
+	return (unsigned char)c->s[c->i];
 }
 
 static int peek_at(const cursor_t *c, size_t off)
 {
-	return ((c->i + off) < c->len) ? (unsigned char)c->s[c->i + off] : 0;
+	return (unsigned char)c->s[c->i + off];
 }
 
 static bool at_end(const cursor_t *c)
@@ -41,19 +45,24 @@ static bool is_digit(int ch)
 	return (ch >= '0') && (ch <= '9');
 }
 
-/* 0..15 for a hex digit, -1 otherwise */
+/* 0..15 for a hex digit, -1 otherwise (a table: the hot path of every
+ * identifier and data byte) */
+#define HEX_ROW_NONE -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1
+static const signed char hex_table[256] = {
+	HEX_ROW_NONE, HEX_ROW_NONE,
+	-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+	0, 1, 2, 3, 4, 5, 6, 7, 8, 9, -1, -1, -1, -1, -1, -1, /* '0'..'9' */
+	-1, 10, 11, 12, 13, 14, 15, -1, -1, -1, -1, -1, -1, -1, -1, -1, /* '@' 'A'..'F' */
+	-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+	-1, 10, 11, 12, 13, 14, 15, -1, -1, -1, -1, -1, -1, -1, -1, -1, /* '`' 'a'..'f' */
+	HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE,
+	HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE
+};
+_Static_assert(sizeof(hex_table) == 256U, "one entry per byte");
+
 static int hex_val(int ch)
 {
-	if ((ch >= '0') && (ch <= '9')) {
-		return ch - '0';
-	}
-	if ((ch >= 'A') && (ch <= 'F')) {
-		return ch - 'A' + 10;
-	}
-	if ((ch >= 'a') && (ch <= 'f')) {
-		return ch - 'a' + 10;
-	}
-	return -1;
+	return hex_table[(unsigned char)ch];
 }
 
 static void skip_blanks(cursor_t *c)
@@ -107,10 +116,8 @@ static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 
 	c->i++; /* '(' */
 	while (is_digit(peek(c))) {
-		if (nd >= 20U) {
-			return CANDUMP_ERR_TIME_RANGE;
-		}
-		if (sec > (UINT64_MAX - 9U) / 10U) {
+		/* 19 digits cannot overflow: the test only from the 20th */
+		if ((nd >= 19U) && ((nd >= 20U) || (sec > (UINT64_MAX - 9U) / 10U))) {
 			return CANDUMP_ERR_TIME_RANGE;
 		}
 		sec = sec * 10U + (uint64_t)(peek(c) - '0');
@@ -143,6 +150,14 @@ static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 	return CANDUMP_OK;
 }
 
+/* Where the data ends: the line's end, a blank, "_X", a CR or LF. */
+static bool data_end(const cursor_t *c)
+{
+	const int ch = peek(c);
+
+	return at_end(c) || is_blank(ch) || (ch == '_') || (ch == '\r') || (ch == '\n');
+}
+
 /* Hex bytes with optional '.' before each, up to max (stored if data). */
 static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
 				size_t *n_out)
@@ -156,22 +171,18 @@ static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
 		if (peek(c) == '.') {
 			c->i++;
 		}
-		if (at_end(c) || is_blank(peek(c)) || (peek(c) == '_') ||
-		    (peek(c) == '\r') || (peek(c) == '\n')) {
-			break;
-		}
-		hi = hex_val(peek(c));
+		hi = hex_val(peek(c)); /* the common case first: a digit */
 		if (hi < 0) {
+			if (data_end(c)) {
+				break;
+			}
 			return CANDUMP_ERR_DATA_HEX;
 		}
 		c->i++;
-		if (at_end(c) || is_blank(peek(c)) || (peek(c) == '_') || (peek(c) == '.') ||
-		    (peek(c) == '\r') || (peek(c) == '\n')) {
-			return CANDUMP_ERR_DATA_ODD;
-		}
 		lo = hex_val(peek(c));
 		if (lo < 0) {
-			return CANDUMP_ERR_DATA_HEX;
+			return (data_end(c) || (peek(c) == '.')) ? CANDUMP_ERR_DATA_ODD :
+				CANDUMP_ERR_DATA_HEX;
 		}
 		if (n >= max) {
 			c->i--;
@@ -376,6 +387,7 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 				  candump_frame_t *out, candump_err_t *err,
 				  size_t *col)
 {
+	char copy[CANDUMP_LINE_MAX + CURSOR_PAD];
 	cursor_t c = { line, len, 0U };
 	candump_err_t e = CANDUMP_OK;
 	candump_line_t kind = CANDUMP_LINE_MALFORMED;
@@ -411,6 +423,11 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 		c.i = (size_t)((const char *)memchr(c.s, '\0', c.len) - c.s);
 		goto done;
 	}
+	if (c.len > 0U) {
+		memcpy(copy, c.s, c.len);
+	}
+	memset(copy + c.len, 0, CURSOR_PAD);
+	c.s = copy;
 	skip_blanks(&c);
 	if (at_end(&c)) {
 		kind = CANDUMP_LINE_BLANK;
@@ -653,16 +670,24 @@ void candump_reader_init(candump_reader_t *r, FILE *f)
 	r->line[0] = '\0';
 }
 
+/* Keep the unread bytes, read more behind them (one large read; a byte is
+ * kept free for the NUL after a last line without '\n'). false at the end
+ * of the file or on an error, with nothing read. */
 static bool reader_fill(candump_reader_t *r)
 {
+	const size_t keep = r->end - r->pos;
 	size_t got;
 
 	if (r->eof || r->error) {
 		return false;
 	}
-	got = fread(r->buf, 1U, sizeof(r->buf), r->f);
+	if ((keep > 0U) && (r->pos > 0U)) {
+		memmove(r->buf, r->buf + r->pos, keep);
+	}
 	r->pos = 0U;
-	r->end = got;
+	r->end = keep;
+	got = fread(r->buf + keep, 1U, sizeof(r->buf) - 1U - keep, r->f);
+	r->end += got;
 	if (got == 0U) {
 		if (ferror(r->f)) {
 			r->error = true;
@@ -673,59 +698,72 @@ static bool reader_fill(candump_reader_t *r)
 	return true;
 }
 
-int candump_reader_next(candump_reader_t *r, const char **line, size_t *len,
-			bool *too_long)
+/* A line longer than CANDUMP_LINE_MAX: its first CANDUMP_LINE_MAX bytes
+ * (in r->line) and the rest skipped up to its '\n'. */
+static int reader_long_line(candump_reader_t *r, const char **line, size_t *len)
 {
-	size_t n = 0U;
-	bool any = false;
-	bool longer = false;
-
+	memcpy(r->line, r->buf + r->pos, CANDUMP_LINE_MAX);
+	r->line[CANDUMP_LINE_MAX] = '\0';
+	r->pos += CANDUMP_LINE_MAX;
 	for (;;) {
-		const char *start;
-		const char *nl;
-		size_t avail;
-		size_t take;
+		const char *nl = memchr(r->buf + r->pos, '\n', r->end - r->pos);
 
-		if ((r->pos >= r->end) && !reader_fill(r)) {
+		if (nl != NULL) {
+			r->pos = (size_t)(nl - r->buf) + 1U;
 			break;
 		}
-		any = true;
-		start = r->buf + r->pos;
-		avail = r->end - r->pos;
-		nl = memchr(start, '\n', avail);
-		take = (nl != NULL) ? (size_t)(nl - start) : avail;
-		if (n < CANDUMP_LINE_MAX) {
-			const size_t room = CANDUMP_LINE_MAX - n;
-			const size_t c = (take < room) ? take : room;
-
-			memcpy(r->line + n, start, c);
-			n += c;
-			if (take > room) {
-				longer = true;
-			}
-		} else if (take > 0U) {
-			longer = true;
-		}
-		r->pos += take;
-		if (nl != NULL) {
-			r->pos++; /* the '\n' */
+		r->pos = r->end;
+		if (!reader_fill(r)) {
 			break;
 		}
 	}
 	if (r->error) {
 		return -1;
 	}
-	if (!any) {
-		return 0;
-	}
-	r->line[n] = '\0';
-	r->line_no++;
 	*line = r->line;
-	*len = n;
-	if (too_long != NULL) {
-		*too_long = longer;
-	}
+	*len = CANDUMP_LINE_MAX;
 	return 1;
+}
+
+/* Lines are handed out where they were read (no copy): the '\n' becomes
+ * the NUL; a line cut by the buffer's end is moved to its start first. */
+int candump_reader_next(candump_reader_t *r, const char **line, size_t *len,
+			bool *too_long)
+{
+	_Static_assert(sizeof(r->buf) > 2U * (CANDUMP_LINE_MAX + 1U), "a whole line fits the buffer");
+	for (;;) {
+		char *start = r->buf + r->pos;
+		const size_t avail = r->end - r->pos;
+		char *nl = (avail > 0U) ? memchr(start, '\n', avail) : NULL;
+		size_t n;
+
+		if ((nl == NULL) && (avail > CANDUMP_LINE_MAX)) {
+			nl = start + avail; /* too long in any case: no need to look further */
+		}
+		if ((nl == NULL) && !r->eof && !r->error) {
+			(void)reader_fill(r); /* the buffer moved: look again */
+			continue;
+		}
+		if (r->error) {
+			return -1;
+		}
+		if ((nl == NULL) && (avail == 0U)) {
+			return 0;
+		}
+		n = (nl != NULL) ? (size_t)(nl - start) : avail;
+		r->line_no++;
+		if (too_long != NULL) {
+			*too_long = n > CANDUMP_LINE_MAX;
+		}
+		if (n > CANDUMP_LINE_MAX) {
+			return reader_long_line(r, line, len);
+		}
+		start[n] = '\0'; /* the '\n', or the byte kept free after the last line */
+		r->pos += (nl != NULL) ? n + 1U : n;
+		*line = start;
+		*len = n;
+		return 1;
+	}
 }
 
 /* ---- messages held back until the first frame -------------------------------- */

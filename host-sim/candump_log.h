@@ -163,7 +163,7 @@ typedef struct {
 	bool eof;
 	bool error;
 	uint64_t line_no;                 /* number of the last line returned */
-	char buf[65536];
+	char buf[1U << 18];               /* large reads; lines are taken in place */
 	char line[CANDUMP_LINE_MAX + 1U];
 } candump_reader_t;
 

@@ -199,10 +199,10 @@ typedef struct {
 	uint64_t transitions[N_STATES][N_STATES];
 	/* the reorder window: frames read in time order wait in a FIFO, the
 	 * others in a binary min-heap on (t_us, seq); the two are merged */
-	held_t fifo[REORDER_FRAMES];
+	held_t *fifo;              /* REORDER_FRAMES each (window_fifo, window_heap) */
 	uint32_t fifo_head;
 	uint32_t fifo_n;
-	held_t held[REORDER_FRAMES];
+	held_t *held;
 	uint32_t n_held;
 	uint64_t seq;
 	bool have_max;
@@ -1587,9 +1587,14 @@ static void report_line(candump_pending_t *p, const replay_args_t *a, uint64_t l
 	}
 }
 
+/* The reorder window's frames (7 MB): outside replay_t, which is cleared
+ * at start, so that only the part a log fills is ever touched. */
+static held_t window_fifo[REORDER_FRAMES];
+static held_t window_heap[REORDER_FRAMES];
+
 int cmd_replay(int argc, char **argv)
 {
-	static candump_reader_t reader; /* 70 kB: not on the stack */
+	static candump_reader_t reader; /* 270 kB: not on the stack */
 	static char outbuf[1U << 16];
 	static replay_t r;
 	static replay_summary_t rs; /* 820 kB of occupancy cells: not on the stack */
@@ -1607,6 +1612,8 @@ int cmd_replay(int argc, char **argv)
 
 	memset(&a, 0, sizeof(a));
 	memset(&r, 0, sizeof(r));
+	r.fifo = window_fifo;
+	r.held = window_heap;
 	rc = replay_parse(argc, argv, &a);
 	if (rc != CLI_OK) {
 		return cli_exit_status((cli_result_t)rc);
