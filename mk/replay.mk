@@ -78,3 +78,9 @@ TEST_PROGS += tests/host-sim/test_replay_skip.py
 # the reported time changes nothing (cmocka, both numeric builds, ASan+UBSan)
 $(foreach v,$(MONITOR_TEST_VARIANTS),$(eval $(call monitor_test_rules,$(v),tests/firmware/app/test_squeal_app_next_event)))
 TEST_PROGS += $(foreach v,$(MONITOR_TEST_VARIANTS),build/$(v)/tests/firmware/app/test_squeal_app_next_event)
+
+# make bench: replay against can-utils log2asc and python-can + canmatrix on
+# the project's, a vehicle layout's, a vehicle bus's and CAN FD traffic
+# (10^6 frames each), as CPU-time ratios from one run
+tests/host-sim/bench_replay_vs.py: build/host/squeal-sim
+BENCH_PROGS += tests/host-sim/bench_replay_vs.py

@@ -4,14 +4,15 @@
 scenarios, BROKEN of them broken in the ways real recordings break.
 
 usage: gen_fleet_logs.py --out DIR [--count N] [--broken K] [--seed S]
-                         [--duration-scale X] [--sim PATH]
+                         [--duration-scale X] [--minutes M] [--sim PATH]
 
 Good logs (car-XX/drive-NNN.log): the built-in scenarios (stop, creep,
 sweep, point at a random v0 and force), the files in scenarios/, and random
 drives (a few brakings from random speeds at random pad forces, written as
 scenario files next to the logs), some with dropped, delayed or corrupted
 frames or a frozen counter. --duration-scale stretches the random drives
-(longer logs for benchmarks).
+(longer logs for benchmarks). --minutes M makes every good log a random
+drive of M minutes (brakings one after the other, as a real drive's log).
 Broken logs (broken-NNN.log), cycling through: binary garbage; a log cut
 in the middle of a line with garbage lines; an empty file; a directory
 named *.log (cannot be read); a dangling symbolic link (cannot be opened).
@@ -27,11 +28,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
-def random_drive(rnd, path, scale):
-    """A scenario file: brakings from random speeds, standing and driving off."""
+def random_drive(rnd, path, scale, min_s=0.0):
+    """A scenario file: brakings from random speeds, standing and driving off
+    (2 to 4 of them, more until the drive lasts min_s seconds)."""
     v = rnd.uniform(8.0, 30.0)
     t, rows = 0.0, [(0.0, v, 0)]
-    for _ in range(rnd.randint(2, 4)):
+    n = rnd.randint(2, 4)
+    while n > 0 or t < min_s:
+        n -= 1
         force = rnd.choice([2000, 4000, 6000, 9000, 12000, 15000, 18000])
         v_end = rnd.choice([0.0, 0.0, rnd.uniform(1.0, 6.0)])
         dur = max(1.0, (v - v_end) / rnd.uniform(2.0, 7.0)) * scale
@@ -73,6 +77,8 @@ def main():
     ap.add_argument("--broken", type=int, default=5)
     ap.add_argument("--seed", type=int, default=13)
     ap.add_argument("--duration-scale", type=float, default=1.0)
+    ap.add_argument("--minutes", type=float, default=0.0,
+                    help="every good log a random drive of this length")
     ap.add_argument("--sim", default=os.path.join(ROOT, "build", "host", "squeal-sim"))
     args = ap.parse_args()
     # a broken log is cut or corrupted from a good one: one good log at least
@@ -87,7 +93,7 @@ def main():
         car = os.path.join(args.out, "car-%02d" % (n % 8))
         os.makedirs(car, exist_ok=True)
         log = os.path.join(car, "drive-%03d.log" % n)
-        pick = rnd.random()
+        pick = 1.0 if args.minutes > 0 else rnd.random()
         if pick < 0.15:
             scen = [rnd.choice(["stop", "creep", "sweep"])]
         elif pick < 0.25:
@@ -97,8 +103,8 @@ def main():
             scen = [rnd.choice(files)]
         else:
             sf = os.path.join(car, "drive-%03d.scenario" % n)
-            random_drive(rnd, sf, args.duration_scale)
-            scen = [sf]
+            random_drive(rnd, sf, args.duration_scale, 60.0 * args.minutes)
+            scen = [sf] + (["--duration", "%g" % (60.0 * args.minutes)] if args.minutes > 0 else [])
         faults = []
         if rnd.random() < 0.3:
             faults = rnd.choice([["--drop", "0.01"], ["--corrupt-crc", "0.005"],
