@@ -234,6 +234,10 @@ typedef struct {
 	uint64_t out_frames;
 	uint64_t out_by_msg[MSG_COUNT + 1U];
 	bool out_error;
+	/* the output lines, written to stdout a block at a time (not a stdio
+	 * call per frame) */
+	char out_buf[1U << 16];
+	size_t out_len;
 	bool no_output;
 	replay_summary_t *summary; /* NULL without --summary-json */
 } replay_t;
@@ -331,10 +335,17 @@ static void note(const replay_args_t *a, const char *fmt, ...)
 
 /* ---- output ------------------------------------------------------------------ */
 
+static void out_flush(replay_t *r)
+{
+	if ((r->out_len > 0U) && (fwrite(r->out_buf, 1U, r->out_len, stdout) != r->out_len)) {
+		r->out_error = true;
+	}
+	r->out_len = 0U;
+}
+
 static void emit(replay_t *r, uint8_t bus, const hal_can_frame_t *hf)
 {
 	candump_frame_t f;
-	char line[CANDUMP_FORMAT_MAX + 2U];
 	const msg_desc_t *d;
 	int n;
 
@@ -347,15 +358,16 @@ static void emit(replay_t *r, uint8_t bus, const hal_can_frame_t *hf)
 	if (r->no_output) {
 		return;
 	}
+	if (sizeof(r->out_buf) - r->out_len < CANDUMP_FORMAT_MAX + 2U) {
+		out_flush(r);
+	}
 	candump_from_hal(hf, hf->timestamp_us * 1000U, r->iface[bus], &f);
-	n = candump_format_frame(&f, true, line, sizeof(line));
+	n = candump_format_frame(&f, true, r->out_buf + r->out_len, sizeof(r->out_buf) - r->out_len);
 	if (n < 0) {
 		r->out_error = true;
 		return;
 	}
-	if (fwrite(line, 1U, (size_t)n, stdout) != (size_t)n) {
-		r->out_error = true;
-	}
+	r->out_len += (size_t)n;
 }
 
 /* After each poll: take what the ECU sent, follow state and warning. */
@@ -1718,6 +1730,7 @@ int cmd_replay(int argc, char **argv)
 	if (json_f != NULL) {
 		json_rc = summary_json_close(&jw, json_f, &r, &a);
 	}
+	out_flush(&r);
 	if ((fflush(stdout) != 0) || r.out_error) {
 		fprintf(stderr, "squeal-sim replay: error writing the output\n");
 		summary(&r, &a);

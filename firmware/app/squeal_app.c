@@ -401,11 +401,12 @@ static uint64_t stale_at_us(const input_t *in, const input_rx_cfg_t *cfg)
 
 uint64_t squeal_app_next_event_us(void)
 {
-	bool pending = app_rx_since_tick || !can_status_taken();
+	bool pending = app_rx_since_tick; /* the commonest: nothing else to look at */
 	uint64_t next = UINT64_MAX;
 	uint32_t k;
 
-	for (k = 0U; k < app_corners; k++) {
+	pending = pending || !can_status_taken();
+	for (k = 0U; !pending && (k < app_corners); k++) {
 		const monitor_t *m = &app_mem.monitor[k];
 
 		pending = pending || m->status_now || (m->txq_count != 0U) ||

@@ -41,8 +41,8 @@ def main(argv):
     for msg in can.io.CanutilsLogReader(argv[0]):
         n += 1
         fr = by_id.get(msg.arbitration_id)
-        if fr is None or msg.is_extended_id or msg.is_remote_frame:
-            continue
+        if fr is None or msg.is_extended_id or msg.is_remote_frame or len(msg.data) != fr.size:
+            continue  # not this DBC's frame (another layout's length: not decoded)
         values = fr.decode(msg.data)
         for name, sig in values.items():
             sums[name] = sums.get(name, 0) + sig.phys_value
