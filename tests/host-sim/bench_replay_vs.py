@@ -159,10 +159,9 @@ def main():
                                                 n / med(r_a) / 1e6 if med(r_a) > 0 else 0.0))
         print("%-8s %8d frames: replay %.3f s, python-can+canmatrix %.3f s: replay %.1fx "
               "python's speed (%d pairs)" % ("", ns, med(r_s), med(r_p), med(q_p), PY_RUNS))
-        print("           $ %s" % " ".join(os.path.relpath(x, ROOT) if x.startswith(ROOT) else x
-                                          for x in rep))
-        print("           $ %s" % " ".join(os.path.relpath(x, ROOT) if x.startswith(ROOT) else x
-                                          for x in l2a))
+        for cmd in (rep, l2a, py):
+            print("           $ %s" % " ".join(os.path.relpath(x, ROOT) if x.startswith(ROOT) else x
+                                              for x in cmd))
     return 0
 
 
