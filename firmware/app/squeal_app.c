@@ -370,14 +370,15 @@ static bool can_status_taken(void)
 {
 	const monitor_t *m = &app_mem.monitor[0];
 	hal_can_status_t st;
+	bool taken = true; /* no status: a tick takes nothing either */
 
-	if (bus_status(&st) != SQ_OK) {
-		return true; /* a tick takes nothing either */
+	if (bus_status(&st) == SQ_OK) {
+		taken = (st.bus_off_count == m->count.bus_off_events) &&
+			(st.rx_overruns == m->count.rx_overruns) &&
+			(m->bus_off_seen ||
+			 ((st.state != HAL_CAN_STATE_BUS_OFF) && (st.bus_off_count == 0U)));
 	}
-	return (st.bus_off_count == m->count.bus_off_events) &&
-	       (st.rx_overruns == m->count.rx_overruns) &&
-	       (m->bus_off_seen ||
-		((st.state != HAL_CAN_STATE_BUS_OFF) && (st.bus_off_count == 0U)));
+	return taken;
 }
 
 static uint64_t earlier(uint64_t a, uint64_t b)
@@ -392,10 +393,8 @@ static uint64_t stale_at_us(const input_t *in, const input_rx_cfg_t *cfg)
 	const uint64_t timeout_us = (uint64_t)cfg->desc.period_ms * TICK_US *
 				    (uint64_t)cfg->desc.stale_cycles;
 
-	if ((in->faults & INPUT_FAULT_STALE) != 0U) {
-		return UINT64_MAX;
-	}
-	return (in->last_used_us >= UINT64_MAX - timeout_us - 1U) ? UINT64_MAX :
+	return (((in->faults & INPUT_FAULT_STALE) != 0U) ||
+		(in->last_used_us >= UINT64_MAX - timeout_us - 1U)) ? UINT64_MAX :
 		in->last_used_us + timeout_us + 1U;
 }
 
@@ -405,12 +404,14 @@ uint64_t squeal_app_next_event_us(void)
 	uint64_t next = UINT64_MAX;
 	uint32_t k;
 
-	pending = pending || !can_status_taken();
+	if (!pending) {
+		pending = !can_status_taken();
+	}
 	for (k = 0U; !pending && (k < app_corners); k++) {
 		const monitor_t *m = &app_mem.monitor[k];
+		const bool wants = monitor_wants_classify(m);
 
-		pending = pending || m->status_now || (m->txq_count != 0U) ||
-			  monitor_wants_classify(m);
+		pending = m->status_now || (m->txq_count != 0U) || wants;
 		next = earlier(next, earlier(m->next_status_us,
 					     earlier(m->next_detail_us, m->next_diag_us)));
 		next = earlier(next, earlier(stale_at_us(&m->speed, &m->speed_rx),
