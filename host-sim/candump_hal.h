@@ -37,6 +37,8 @@ int candump_to_hal(const candump_frame_t *f, hal_can_frame_t *hf);
 /*
  * The log frame of a HAL frame at t_ns on interface iface (cut to
  * CANDUMP_IFACE_MAX characters). An error frame's id keeps only the class.
+ * Only the frame's len data bytes are written (the others are left as they
+ * were: nothing reads beyond len).
  */
 void candump_from_hal(const hal_can_frame_t *hf, uint64_t t_ns, const char *iface,
 		      candump_frame_t *f);

@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * candump_log: see candump_log.h for the grammar. The parser is a plain
- * cursor over [line, line + len): every read goes through peek(), which
- * answers 0 past the end, so no path can read out of bounds whatever the
+ * cursor over a copy of the line followed by CURSOR_PAD NUL bytes (a line
+ * with a NUL byte is refused before): every read goes through peek() or
+ * peek_at(offset < CURSOR_PAD), which answer 0 at and past the end without
+ * a test per character, so no path can read out of bounds whatever the
  * bytes are.
  */
 #include "candump_log.h"
@@ -10,20 +12,22 @@
 #include <stdarg.h>
 #include <string.h>
 
+#define CURSOR_PAD 16U /* NUL bytes after the line: the largest peek_at() is 8 */
+
 typedef struct {
-	const char *s;
+	const char *s; /* len bytes, then CURSOR_PAD NUL bytes */
 	size_t len;
-	size_t i;
+	size_t i;      /* never beyond len: every step forward follows a peek() != 0 */
 } cursor_t;
 
 static int peek(const cursor_t *c)
 {
-	return (c->i < c->len) ? (unsigned char)c->s[c->i] : 0;
+	return (unsigned char)c->s[c->i];
 }
 
 static int peek_at(const cursor_t *c, size_t off)
 {
-	return ((c->i + off) < c->len) ? (unsigned char)c->s[c->i + off] : 0;
+	return (unsigned char)c->s[c->i + off];
 }
 
 static bool at_end(const cursor_t *c)
@@ -41,19 +45,24 @@ static bool is_digit(int ch)
 	return (ch >= '0') && (ch <= '9');
 }
 
-/* 0..15 for a hex digit, -1 otherwise */
+/* 0..15 for a hex digit, -1 otherwise (a table: the hot path of every
+ * identifier and data byte) */
+#define HEX_ROW_NONE -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1
+static const signed char hex_table[256] = {
+	HEX_ROW_NONE, HEX_ROW_NONE,
+	-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+	0, 1, 2, 3, 4, 5, 6, 7, 8, 9, -1, -1, -1, -1, -1, -1, /* '0'..'9' */
+	-1, 10, 11, 12, 13, 14, 15, -1, -1, -1, -1, -1, -1, -1, -1, -1, /* '@' 'A'..'F' */
+	-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+	-1, 10, 11, 12, 13, 14, 15, -1, -1, -1, -1, -1, -1, -1, -1, -1, /* '`' 'a'..'f' */
+	HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE,
+	HEX_ROW_NONE, HEX_ROW_NONE, HEX_ROW_NONE
+};
+_Static_assert(sizeof(hex_table) == 256U, "one entry per byte");
+
 static int hex_val(int ch)
 {
-	if ((ch >= '0') && (ch <= '9')) {
-		return ch - '0';
-	}
-	if ((ch >= 'A') && (ch <= 'F')) {
-		return ch - 'A' + 10;
-	}
-	if ((ch >= 'a') && (ch <= 'f')) {
-		return ch - 'a' + 10;
-	}
-	return -1;
+	return hex_table[(unsigned char)ch];
 }
 
 static void skip_blanks(cursor_t *c)
@@ -96,95 +105,108 @@ const char *candump_strerror(candump_err_t err)
 	return "unknown error";
 }
 
-/* (SECONDS.FRACTION) */
+/* (SECONDS.FRACTION). The hot loops below work on local copies of the
+ * cursor: a store through a char pointer may alias it, which would make the
+ * compiler reload it after every character. */
 static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 {
 	const uint64_t max_s = UINT64_MAX / 1000000000ULL;
+	const char *const s = c->s;
+	size_t i = c->i + 1U; /* after '(' */
 	uint64_t sec = 0U;
 	uint64_t frac = 0U;
 	unsigned nd = 0U;
 	unsigned nf = 0U;
+	candump_err_t e = CANDUMP_OK;
 
-	c->i++; /* '(' */
-	while (is_digit(peek(c))) {
-		if (nd >= 20U) {
+	while (is_digit((unsigned char)s[i])) {
+		/* 19 digits cannot overflow: the test only from the 20th */
+		if ((nd >= 19U) && ((nd >= 20U) || (sec > (UINT64_MAX - 9U) / 10U))) {
+			c->i = i;
 			return CANDUMP_ERR_TIME_RANGE;
 		}
-		if (sec > (UINT64_MAX - 9U) / 10U) {
-			return CANDUMP_ERR_TIME_RANGE;
-		}
-		sec = sec * 10U + (uint64_t)(peek(c) - '0');
+		sec = sec * 10U + (uint64_t)(s[i] - '0');
 		nd++;
-		c->i++;
+		i++;
 	}
-	if ((nd == 0U) || (peek(c) != '.')) {
+	if ((nd == 0U) || (s[i] != '.')) {
+		c->i = i;
 		return CANDUMP_ERR_TIMESTAMP;
 	}
-	c->i++;
-	while (is_digit(peek(c))) {
-		if (nf >= 9U) {
-			return CANDUMP_ERR_TIMESTAMP;
-		}
-		frac = frac * 10U + (uint64_t)(peek(c) - '0');
+	i++;
+	while (is_digit((unsigned char)s[i]) && (nf < 9U)) {
+		frac = frac * 10U + (uint64_t)(s[i] - '0');
 		nf++;
-		c->i++;
+		i++;
 	}
-	if (((nf != 6U) && (nf != 9U)) || (peek(c) != ')')) {
-		return CANDUMP_ERR_TIMESTAMP;
+	if (is_digit((unsigned char)s[i]) || ((nf != 6U) && (nf != 9U)) || (s[i] != ')')) {
+		e = CANDUMP_ERR_TIMESTAMP;
+	} else {
+		i++;
+		if (nf == 6U) {
+			frac *= 1000U;
+		}
+		if ((sec > max_s) || ((sec == max_s) && (frac > UINT64_MAX - max_s * 1000000000ULL))) {
+			e = CANDUMP_ERR_TIME_RANGE;
+		} else {
+			*t_ns = sec * 1000000000ULL + frac;
+		}
 	}
-	c->i++;
-	if (nf == 6U) {
-		frac *= 1000U;
-	}
-	if ((sec > max_s) || ((sec == max_s) && (frac > UINT64_MAX - max_s * 1000000000ULL))) {
-		return CANDUMP_ERR_TIME_RANGE;
-	}
-	*t_ns = sec * 1000000000ULL + frac;
-	return CANDUMP_OK;
+	c->i = i;
+	return e;
+}
+
+/* Where the data ends: the line's end, a blank, "_X", a CR or LF. */
+static bool data_end(const cursor_t *c)
+{
+	const int ch = peek(c);
+
+	return at_end(c) || is_blank(ch) || (ch == '_') || (ch == '\r') || (ch == '\n');
 }
 
 /* Hex bytes with optional '.' before each, up to max (stored if data). */
 static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
 				size_t *n_out)
 {
+	const char *const s = c->s;
+	size_t i = c->i;
 	size_t n = 0U;
+	candump_err_t e = CANDUMP_OK;
 
 	for (;;) {
 		int hi;
 		int lo;
 
-		if (peek(c) == '.') {
-			c->i++;
+		if (s[i] == '.') {
+			i++;
 		}
-		if (at_end(c) || is_blank(peek(c)) || (peek(c) == '_') ||
-		    (peek(c) == '\r') || (peek(c) == '\n')) {
+		hi = hex_val(s[i]); /* the common case first: a digit */
+		if (hi < 0) {
+			c->i = i;
+			e = data_end(c) ? CANDUMP_OK : CANDUMP_ERR_DATA_HEX;
 			break;
 		}
-		hi = hex_val(peek(c));
-		if (hi < 0) {
-			return CANDUMP_ERR_DATA_HEX;
-		}
-		c->i++;
-		if (at_end(c) || is_blank(peek(c)) || (peek(c) == '_') || (peek(c) == '.') ||
-		    (peek(c) == '\r') || (peek(c) == '\n')) {
-			return CANDUMP_ERR_DATA_ODD;
-		}
-		lo = hex_val(peek(c));
+		lo = hex_val(s[i + 1U]); /* s[i] is no NUL: i + 1 is in the line or its pad */
 		if (lo < 0) {
-			return CANDUMP_ERR_DATA_HEX;
+			c->i = i + 1U;
+			e = (data_end(c) || (peek(c) == '.')) ? CANDUMP_ERR_DATA_ODD : CANDUMP_ERR_DATA_HEX;
+			break;
 		}
 		if (n >= max) {
-			c->i--;
-			return CANDUMP_ERR_DATA_LEN;
+			c->i = i;
+			e = CANDUMP_ERR_DATA_LEN;
+			break;
 		}
 		if (data != NULL) {
 			data[n] = (uint8_t)((hi << 4) | lo);
 		}
 		n++;
-		c->i++;
+		i += 2U;
 	}
-	*n_out = n;
-	return CANDUMP_OK;
+	if (e == CANDUMP_OK) {
+		*n_out = n;
+	}
+	return e;
 }
 
 /* optional _X after 8 bytes (classic data or RTR of length 8) */
@@ -376,6 +398,7 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 				  candump_frame_t *out, candump_err_t *err,
 				  size_t *col)
 {
+	char copy[CANDUMP_LINE_MAX + CURSOR_PAD];
 	cursor_t c = { line, len, 0U };
 	candump_err_t e = CANDUMP_OK;
 	candump_line_t kind = CANDUMP_LINE_MALFORMED;
@@ -411,6 +434,11 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 		c.i = (size_t)((const char *)memchr(c.s, '\0', c.len) - c.s);
 		goto done;
 	}
+	if (c.len > 0U) {
+		memcpy(copy, c.s, c.len);
+	}
+	memset(copy + c.len, 0, CURSOR_PAD);
+	c.s = copy;
 	skip_blanks(&c);
 	if (at_end(&c)) {
 		kind = CANDUMP_LINE_BLANK;
@@ -438,18 +466,20 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 		goto done;
 	}
 	skip_blanks(&c);
-	for (k = 0U; !at_end(&c) && !is_blank(peek(&c)); k++) {
+	/* the name ends at a blank or the line's end (its pad's first NUL) */
+	for (k = 0U; (c.s[c.i + k] != '\0') && !is_blank((unsigned char)c.s[c.i + k]); k++) {
 		if (k >= CANDUMP_IFACE_MAX) {
+			c.i += k;
 			e = CANDUMP_ERR_IFACE;
 			goto done;
 		}
-		out->iface[k] = (char)peek(&c);
-		c.i++;
 	}
 	if (k == 0U) {
 		e = CANDUMP_ERR_IFACE;
 		goto done;
 	}
+	memcpy(out->iface, c.s + c.i, k);
+	c.i += k;
 	skip_blanks(&c);
 	if (at_end(&c)) {
 		e = CANDUMP_ERR_NO_FRAME;
@@ -491,17 +521,53 @@ done:
 
 static const char hex_upper[] = "0123456789ABCDEF";
 
+/* "00" .. "99": two digits per division */
+static const char dec_pairs[] =
+	"00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+	"40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+	"8081828384858687888990919293949596979899";
+
 /* n decimal digits of v, zero-padded (v < 10^n assumed by the caller,
  * larger values keep their low digits) */
 static char *put_dec(char *p, uint64_t v, unsigned n)
 {
-	unsigned k;
+	unsigned k = n;
 
-	for (k = n; k > 0U; k--) {
-		p[k - 1U] = (char)('0' + (v % 10U));
-		v /= 10U;
+	while (k >= 2U) {
+		const unsigned d = (unsigned)(v % 100U) * 2U;
+
+		p[k - 1U] = dec_pairs[d + 1U];
+		p[k - 2U] = dec_pairs[d];
+		v /= 100U;
+		k -= 2U;
+	}
+	if (k == 1U) {
+		p[0] = (char)('0' + (v % 10U));
 	}
 	return p + n;
+}
+
+/* "00" .. "FF": a byte's two hex digits in one copy */
+static const char hex_pairs[] =
+	"000102030405060708090A0B0C0D0E0F101112131415161718191A1B1C1D1E1F"
+	"202122232425262728292A2B2C2D2E2F303132333435363738393A3B3C3D3E3F"
+	"404142434445464748494A4B4C4D4E4F505152535455565758595A5B5C5D5E5F"
+	"606162636465666768696A6B6C6D6E6F707172737475767778797A7B7C7D7E7F"
+	"808182838485868788898A8B8C8D8E8F909192939495969798999A9B9C9D9E9F"
+	"A0A1A2A3A4A5A6A7A8A9AAABACADAEAFB0B1B2B3B4B5B6B7B8B9BABBBCBDBEBF"
+	"C0C1C2C3C4C5C6C7C8C9CACBCCCDCECFD0D1D2D3D4D5D6D7D8D9DADBDCDDDEDF"
+	"E0E1E2E3E4E5E6E7E8E9EAEBECEDEEEFF0F1F2F3F4F5F6F7F8F9FAFBFCFDFEFF";
+
+/* The bytes as uppercase hex pairs. */
+static char *put_bytes(char *p, const uint8_t *data, size_t n)
+{
+	size_t k;
+
+	for (k = 0U; k < n; k++) {
+		memcpy(p, &hex_pairs[2U * data[k]], 2U);
+		p += 2;
+	}
+	return p;
 }
 
 static char *put_hex(char *p, uint32_t v, unsigned digits)
@@ -519,13 +585,13 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 			 size_t size)
 {
 	char tmp[CANDUMP_FORMAT_MAX + 2U];
-	char *p = tmp;
+	char *p;
+	char *first;
 	uint64_t sec;
 	uint64_t usec;
 	unsigned sec_digits = 10U;
 	size_t ifl;
 	size_t n;
-	size_t i;
 	uint64_t s;
 
 	if ((buf == NULL) || (size == 0U)) {
@@ -535,9 +601,12 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 	if (f == NULL) {
 		return -1;
 	}
+	/* straight into buf when the longest line fits, else through tmp */
+	first = (size >= sizeof(tmp)) ? buf : tmp;
+	p = first;
 	ifl = strnlen(f->iface, sizeof(f->iface));
 	if ((ifl == 0U) || (ifl > CANDUMP_IFACE_MAX)) {
-		return -1;
+		goto bad;
 	}
 	sec = f->t_ns / 1000000000ULL;
 	usec = (f->t_ns % 1000000000ULL) / 1000U;
@@ -558,16 +627,16 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 	case CANDUMP_KIND_RTR:
 		if ((f->len > 8U) || ((f->len8_dlc != 0U) &&
 				      ((f->len != 8U) || (f->len8_dlc < 9U) || (f->len8_dlc > 15U)))) {
-			return -1;
+			goto bad;
 		}
 		if (f->ext) {
 			if (f->id > CANDUMP_EFF_MAX) {
-				return -1;
+				goto bad;
 			}
 			p = put_hex(p, f->id, 8U);
 		} else {
 			if (f->id > CANDUMP_SFF_MAX) {
-				return -1;
+				goto bad;
 			}
 			p = put_hex(p, f->id, 3U);
 		}
@@ -578,10 +647,7 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 				*p++ = (char)('0' + f->len);
 			}
 		} else {
-			for (i = 0U; i < f->len; i++) {
-				*p++ = hex_upper[f->data[i] >> 4];
-				*p++ = hex_upper[f->data[i] & 0xFU];
-			}
+			p = put_bytes(p, f->data, f->len);
 		}
 		if (f->len8_dlc != 0U) {
 			*p++ = '_';
@@ -591,29 +657,23 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 	case CANDUMP_KIND_FD:
 		if (!fd_len_valid(f->len) || (f->fd_flags > 0xFU) ||
 		    (f->id > (f->ext ? CANDUMP_EFF_MAX : CANDUMP_SFF_MAX))) {
-			return -1;
+			goto bad;
 		}
 		p = put_hex(p, f->id, f->ext ? 8U : 3U);
 		*p++ = '#';
 		*p++ = '#';
 		*p++ = hex_upper[f->fd_flags];
-		for (i = 0U; i < f->len; i++) {
-			*p++ = hex_upper[f->data[i] >> 4];
-			*p++ = hex_upper[f->data[i] & 0xFU];
-		}
+		p = put_bytes(p, f->data, f->len);
 		break;
 	case CANDUMP_KIND_ERROR:
 		if ((f->id > CANDUMP_ERR_MASK) || (f->len > 8U) ||
 		    ((f->len8_dlc != 0U) &&
 		     ((f->len != 8U) || (f->len8_dlc < 9U) || (f->len8_dlc > 15U)))) {
-			return -1;
+			goto bad;
 		}
 		p = put_hex(p, f->id | CANDUMP_ERR_FLAG, 8U);
 		*p++ = '#';
-		for (i = 0U; i < f->len; i++) {
-			*p++ = hex_upper[f->data[i] >> 4];
-			*p++ = hex_upper[f->data[i] & 0xFU];
-		}
+		p = put_bytes(p, f->data, f->len);
 		/* an error frame is a classic frame: its DLC code too (as the
 		 * parser accepts it, so a round trip keeps it) */
 		if (f->len8_dlc != 0U) {
@@ -622,7 +682,7 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 		}
 		break;
 	default:
-		return -1;
+		goto bad;
 	}
 	if ((f->dir == 'T') || (f->dir == 'R')) {
 		*p++ = ' ';
@@ -631,13 +691,18 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 	if (newline) {
 		*p++ = '\n';
 	}
-	n = (size_t)(p - tmp);
+	n = (size_t)(p - first);
 	if (n + 1U > size) {
-		return -1;
+		goto bad;
 	}
-	memcpy(buf, tmp, n);
+	if (first == tmp) {
+		memcpy(buf, tmp, n);
+	}
 	buf[n] = '\0';
 	return (int)n;
+bad:
+	buf[0] = '\0'; /* nothing half written */
+	return -1;
 }
 
 /* ---- reader ---------------------------------------------------------------- */
@@ -653,16 +718,24 @@ void candump_reader_init(candump_reader_t *r, FILE *f)
 	r->line[0] = '\0';
 }
 
+/* Keep the unread bytes, read more behind them (one large read; a byte is
+ * kept free for the NUL after a last line without '\n'). false at the end
+ * of the file or on an error, with nothing read. */
 static bool reader_fill(candump_reader_t *r)
 {
+	const size_t keep = r->end - r->pos;
 	size_t got;
 
 	if (r->eof || r->error) {
 		return false;
 	}
-	got = fread(r->buf, 1U, sizeof(r->buf), r->f);
+	if ((keep > 0U) && (r->pos > 0U)) {
+		memmove(r->buf, r->buf + r->pos, keep);
+	}
 	r->pos = 0U;
-	r->end = got;
+	r->end = keep;
+	got = fread(r->buf + keep, 1U, sizeof(r->buf) - 1U - keep, r->f);
+	r->end += got;
 	if (got == 0U) {
 		if (ferror(r->f)) {
 			r->error = true;
@@ -673,59 +746,72 @@ static bool reader_fill(candump_reader_t *r)
 	return true;
 }
 
-int candump_reader_next(candump_reader_t *r, const char **line, size_t *len,
-			bool *too_long)
+/* A line longer than CANDUMP_LINE_MAX: its first CANDUMP_LINE_MAX bytes
+ * (in r->line) and the rest skipped up to its '\n'. */
+static int reader_long_line(candump_reader_t *r, const char **line, size_t *len)
 {
-	size_t n = 0U;
-	bool any = false;
-	bool longer = false;
-
+	memcpy(r->line, r->buf + r->pos, CANDUMP_LINE_MAX);
+	r->line[CANDUMP_LINE_MAX] = '\0';
+	r->pos += CANDUMP_LINE_MAX;
 	for (;;) {
-		const char *start;
-		const char *nl;
-		size_t avail;
-		size_t take;
+		const char *nl = memchr(r->buf + r->pos, '\n', r->end - r->pos);
 
-		if ((r->pos >= r->end) && !reader_fill(r)) {
+		if (nl != NULL) {
+			r->pos = (size_t)(nl - r->buf) + 1U;
 			break;
 		}
-		any = true;
-		start = r->buf + r->pos;
-		avail = r->end - r->pos;
-		nl = memchr(start, '\n', avail);
-		take = (nl != NULL) ? (size_t)(nl - start) : avail;
-		if (n < CANDUMP_LINE_MAX) {
-			const size_t room = CANDUMP_LINE_MAX - n;
-			const size_t c = (take < room) ? take : room;
-
-			memcpy(r->line + n, start, c);
-			n += c;
-			if (take > room) {
-				longer = true;
-			}
-		} else if (take > 0U) {
-			longer = true;
-		}
-		r->pos += take;
-		if (nl != NULL) {
-			r->pos++; /* the '\n' */
+		r->pos = r->end;
+		if (!reader_fill(r)) {
 			break;
 		}
 	}
 	if (r->error) {
 		return -1;
 	}
-	if (!any) {
-		return 0;
-	}
-	r->line[n] = '\0';
-	r->line_no++;
 	*line = r->line;
-	*len = n;
-	if (too_long != NULL) {
-		*too_long = longer;
-	}
+	*len = CANDUMP_LINE_MAX;
 	return 1;
+}
+
+/* Lines are handed out where they were read (no copy): the '\n' becomes
+ * the NUL; a line cut by the buffer's end is moved to its start first. */
+int candump_reader_next(candump_reader_t *r, const char **line, size_t *len,
+			bool *too_long)
+{
+	_Static_assert(sizeof(r->buf) > 2U * (CANDUMP_LINE_MAX + 1U), "a whole line fits the buffer");
+	for (;;) {
+		char *start = r->buf + r->pos;
+		const size_t avail = r->end - r->pos;
+		char *nl = (avail > 0U) ? memchr(start, '\n', avail) : NULL;
+		size_t n;
+
+		if ((nl == NULL) && (avail > CANDUMP_LINE_MAX)) {
+			nl = start + avail; /* too long in any case: no need to look further */
+		}
+		if ((nl == NULL) && !r->eof && !r->error) {
+			(void)reader_fill(r); /* the buffer moved: look again */
+			continue;
+		}
+		if (r->error) {
+			return -1;
+		}
+		if ((nl == NULL) && (avail == 0U)) {
+			return 0;
+		}
+		n = (nl != NULL) ? (size_t)(nl - start) : avail;
+		r->line_no++;
+		if (too_long != NULL) {
+			*too_long = n > CANDUMP_LINE_MAX;
+		}
+		if (n > CANDUMP_LINE_MAX) {
+			return reader_long_line(r, line, len);
+		}
+		start[n] = '\0'; /* the '\n', or the byte kept free after the last line */
+		r->pos += (nl != NULL) ? n + 1U : n;
+		*line = start;
+		*len = n;
+		return 1;
+	}
 }
 
 /* ---- messages held back until the first frame -------------------------------- */
@@ -771,11 +857,12 @@ void candump_pending_frame(candump_pending_t *p)
 	}
 }
 
-bool candump_pending_no_frames(candump_pending_t *p)
+bool candump_pending_no_frames(candump_pending_t *p, uint64_t lines)
 {
 	if (p->frames_seen) {
 		return false;
 	}
-	(void)fprintf(p->out, "no CAN frames in %s\n", p->log_name);
+	(void)fprintf(p->out, "%s: no CAN frame in %llu line%s\n", p->log_name,
+		      (unsigned long long)lines, (lines == 1U) ? "" : "s");
 	return true;
 }

@@ -163,7 +163,7 @@ typedef struct {
 	bool eof;
 	bool error;
 	uint64_t line_no;                 /* number of the last line returned */
-	char buf[65536];
+	char buf[1U << 18];               /* large reads; lines are taken in place */
 	char line[CANDUMP_LINE_MAX + 1U];
 } candump_reader_t;
 
@@ -178,7 +178,8 @@ int candump_reader_next(candump_reader_t *r, const char **line, size_t *len,
 
 /*
  * Messages about malformed lines are held back until the log's first frame:
- * a file without a single CAN frame is one error ("no CAN frames in FILE"),
+ * a file without a single CAN frame is one error ("FILE: no CAN frame in N
+ * lines"),
  * not a message per line of some other text. The first
  * CANDUMP_PENDING_MAX messages are kept and written when the first frame
  * arrives (the others are counted in one line); after it, each message is
@@ -202,7 +203,8 @@ void candump_pending_report(candump_pending_t *p, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
 /* A frame was read: write what was held back (once). */
 void candump_pending_frame(candump_pending_t *p);
-/* After the log: the one line for a log without a frame; true then. */
-bool candump_pending_no_frames(candump_pending_t *p);
+/* After the log of `lines` lines: the one line for a log without a frame
+ * ("LOG: no CAN frame in N lines"); true then. */
+bool candump_pending_no_frames(candump_pending_t *p, uint64_t lines);
 
 #endif /* CANDUMP_LOG_H */

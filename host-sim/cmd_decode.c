@@ -560,7 +560,7 @@ static int decode_log(decoder_t *d, const char *path, const char *bus_name)
 	if (rc < 0) {
 		fprintf(stderr, "squeal-sim decode: %s: read error\n", name);
 		status = 1;
-	} else if (candump_pending_no_frames(&pending)) {
+	} else if (candump_pending_no_frames(&pending, reader.line_no)) {
 		status = 1;
 	}
 	if (in != stdin) {

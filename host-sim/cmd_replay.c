@@ -6,10 +6,17 @@
  *
  * Time: the earliest frame's timestamp (microseconds; a 9-digit log is
  * truncated to us, the firmware's resolution) starts the firmware. Before
- * each frame, every 1 ms tick up to the frame's time is run (set the virtual
- * clock, poll, take what the ECU sent); then the clock is set to the frame's
- * time, the frame is offered to the CAN controller and the firmware polls
- * once more. The replay ends with the first tick after the last frame (the
+ * each frame, the 1 ms ticks up to the frame's time are run (set the virtual
+ * clock, poll, take what the ECU sent); then the frame is offered to the CAN
+ * controller and, when its filters take it, the clock is set to the frame's
+ * time and the firmware polls once more. A tick that cannot change anything
+ * is skipped: the firmware says when its next work is due
+ * (squeal_app_next_event_us(): a periodic message, a staleness timeout, the
+ * next tick after a frame), and the clock goes straight to that tick. Only
+ * the last skipped tick before a frame the controller takes is run, so the
+ * firmware's clock and tick are where 1 ms stepping leaves them: the output
+ * is the same bytes as with every tick run (--step-every-ms, for
+ * comparison). The replay ends with the first tick after the last frame (the
  * one that takes that frame in), so the final state is the one the last
  * inputs gave; --tail-ms MS runs on for MS more (default 0). Nothing depends
  * on the wall clock, so the same log gives the same bytes.
@@ -110,6 +117,7 @@ typedef struct {
 	const char *summary_json; /* --summary-json FILE|- (replay_summary.h) */
 	bool no_output;           /* --no-output: no frame lines, only counts */
 	bool quiet;               /* --quiet: no line per message, the summary only */
+	bool step_every_ms;       /* --step-every-ms: run every tick, skip none */
 } replay_args_t;
 
 /* Where a new segment began: the log line, how far the log's time went
@@ -170,8 +178,15 @@ typedef struct {
 	/* time */
 	bool started;
 	uint64_t t0_us;
-	uint64_t now_us;
-	uint64_t next_tick_us;
+	uint64_t now_us;           /* the virtual clock, counted up to (set_time) */
+	uint64_t frame_us;         /* time of the latest frame given             */
+	uint64_t next_tick_us;     /* the next tick not yet run or skipped       */
+	bool skip;                 /* skip the ticks that change nothing         */
+	bool idle_pending;         /* idle_tick_us was skipped, nothing run since */
+	uint64_t idle_tick_us;     /* the last tick skipped                      */
+	/* standard identifiers the controller's filters refused, per bus (the
+	 * firmware sets its filters once, at init) */
+	bool std_filtered[HAL_CAN_BUSES][CANDUMP_SFF_MAX + 1U];
 	uint64_t backwards;
 	uint64_t segments;         /* new segments after a jump back > 1 s  */
 	uint64_t rebase_us;        /* added to the log's time (segments)    */
@@ -184,10 +199,10 @@ typedef struct {
 	uint64_t transitions[N_STATES][N_STATES];
 	/* the reorder window: frames read in time order wait in a FIFO, the
 	 * others in a binary min-heap on (t_us, seq); the two are merged */
-	held_t fifo[REORDER_FRAMES];
+	held_t *fifo;              /* REORDER_FRAMES each (window_fifo, window_heap) */
 	uint32_t fifo_head;
 	uint32_t fifo_n;
-	held_t held[REORDER_FRAMES];
+	held_t *held;
 	uint32_t n_held;
 	uint64_t seq;
 	bool have_max;
@@ -219,6 +234,10 @@ typedef struct {
 	uint64_t out_frames;
 	uint64_t out_by_msg[MSG_COUNT + 1U];
 	bool out_error;
+	/* the output lines, written to stdout a block at a time (not a stdio
+	 * call per frame) */
+	char out_buf[1U << 16];
+	size_t out_len;
 	bool no_output;
 	replay_summary_t *summary; /* NULL without --summary-json */
 } replay_t;
@@ -257,13 +276,17 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 			     "no line per message: neither the ECU's frames nor the\n"
 			     "notes on single log lines (each still counted); only\n"
 			     "the summary"),
+		CLI_OPT_FLAG("step-every-ms", 0, &a->step_every_ms,
+			     "run every 1 ms tick, also those that change nothing\n"
+			     "(the same output, slower: for comparison)"),
 	};
 	const cli_spec_t spec = {
 		.cmd = "replay",
 		CLI_SPEC_OPTS(opts),
 		.synopsis = "squeal-sim replay LOG|- [--calib FILE] [--bus NAME]\n"
 			    "         [--iface-out NAME] [--tail-ms MS] [--max-gap S] [--rss]\n"
-			    "         [--summary-json FILE|-] [--no-output] [--quiet]",
+			    "         [--summary-json FILE|-] [--no-output] [--quiet]\n"
+			    "         [--step-every-ms]",
 		.description = "Feeds a candump -L log (a file, or - for stdin) through the firmware in\n"
 			       "virtual time taken from the log's timestamps, offline. Writes every frame\n"
 			       "the ECU sends as a candump -L log on stdout, and a summary on stderr:\n"
@@ -312,10 +335,17 @@ static void note(const replay_args_t *a, const char *fmt, ...)
 
 /* ---- output ------------------------------------------------------------------ */
 
+static void out_flush(replay_t *r)
+{
+	if ((r->out_len > 0U) && (fwrite(r->out_buf, 1U, r->out_len, stdout) != r->out_len)) {
+		r->out_error = true;
+	}
+	r->out_len = 0U;
+}
+
 static void emit(replay_t *r, uint8_t bus, const hal_can_frame_t *hf)
 {
 	candump_frame_t f;
-	char line[CANDUMP_FORMAT_MAX + 2U];
 	const msg_desc_t *d;
 	int n;
 
@@ -328,15 +358,16 @@ static void emit(replay_t *r, uint8_t bus, const hal_can_frame_t *hf)
 	if (r->no_output) {
 		return;
 	}
+	if (sizeof(r->out_buf) - r->out_len < CANDUMP_FORMAT_MAX + 2U) {
+		out_flush(r);
+	}
 	candump_from_hal(hf, hf->timestamp_us * 1000U, r->iface[bus], &f);
-	n = candump_format_frame(&f, true, line, sizeof(line));
+	n = candump_format_frame(&f, true, r->out_buf + r->out_len, sizeof(r->out_buf) - r->out_len);
 	if (n < 0) {
 		r->out_error = true;
 		return;
 	}
-	if (fwrite(line, 1U, (size_t)n, stdout) != (size_t)n) {
-		r->out_error = true;
-	}
+	r->out_len += (size_t)n;
 }
 
 /* After each poll: take what the ECU sent, follow state and warning. */
@@ -408,16 +439,58 @@ static void set_time(replay_t *r, uint64_t t_us)
 	}
 }
 
-/* Every 1 ms tick up to and including t_us. */
+/* One 1 ms tick at t_us. */
+static void tick(replay_t *r, uint64_t t_us)
+{
+	set_time(r, t_us);
+	(void)squeal_app_poll();
+	after_poll(r);
+	r->idle_pending = false;
+}
+
+/* The first tick of the grid from `from` at or after ev_us; UINT64_MAX when
+ * it is beyond until_us. */
+static uint64_t first_tick_at(uint64_t from, uint64_t ev_us, uint64_t until_us)
+{
+	uint64_t steps;
+
+	if (ev_us <= from) {
+		return from;
+	}
+	steps = ((ev_us - from) / TICK_US) + ((((ev_us - from) % TICK_US) != 0U) ? 1U : 0U);
+	return (steps > (until_us - from) / TICK_US) ? UINT64_MAX : from + (steps * TICK_US);
+}
+
+/* The 1 ms ticks up to and including t_us: each one, or (skipping) only
+ * those at or after the firmware's next event; the last idle tick skipped is
+ * kept for run_idle_tick(). The clock stays at the last tick run. */
 static void run_until(replay_t *r, uint64_t t_us)
 {
 	while (r->next_tick_us <= t_us) {
-		set_time(r, r->next_tick_us);
-		(void)squeal_app_poll();
-		after_poll(r);
-		r->next_tick_us += TICK_US;
+		uint64_t at = r->next_tick_us;
+
+		if (r->skip) {
+			at = first_tick_at(at, squeal_app_next_event_us(), t_us);
+			if (at == UINT64_MAX) {
+				r->idle_tick_us = r->next_tick_us +
+					(((t_us - r->next_tick_us) / TICK_US) * TICK_US);
+				r->idle_pending = true;
+				r->next_tick_us = r->idle_tick_us + TICK_US;
+				return;
+			}
+		}
+		tick(r, at);
+		r->next_tick_us = at + TICK_US;
 	}
-	set_time(r, t_us);
+}
+
+/* Before the firmware sees anything again (a frame, a gap, the end): the
+ * last tick skipped, so its clock and tick are where every tick leaves them. */
+static void run_idle_tick(replay_t *r)
+{
+	if (r->idle_pending) {
+		tick(r, r->idle_tick_us);
+	}
 }
 
 /* The calibration's input bus, and the bus of every other interface. */
@@ -439,6 +512,7 @@ static void start(replay_t *r, const held_t *h, const replay_args_t *a)
 	r->started = true;
 	r->t0_us = h->t_us;
 	r->now_us = r->t0_us;
+	r->frame_us = r->t0_us;
 	r->next_tick_us = r->t0_us;
 	hal_vbus_set_time_us(r->t0_us);
 	if ((squeal_app_init() != SQ_OK) && (a->calib_path != NULL)) {
@@ -560,6 +634,7 @@ static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 	const calib_t *cal = squeal_app_monitor()->cal;
 	hal_can_frame_t hf = h->frame;
 	uint8_t bus = 0U;
+	bool std;
 	int rc;
 
 	if (h->unsupported) {
@@ -577,9 +652,20 @@ static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 		r->other_bus++; /* a bus the firmware does not use */
 		return;
 	}
-	hf.timestamp_us = r->now_us; /* arrives now */
+	/* arrives at its time, so it is queued ahead of an earlier idle tick;
+	 * an idle tick at the frame's own time comes first (as stepping runs
+	 * it), unless the filters are known to refuse the frame */
+	std = (hf.flags & (HAL_CAN_FLAG_EXT | HAL_CAN_FLAG_ERR)) == 0U;
+	if (r->idle_pending && (r->idle_tick_us == r->frame_us) &&
+	    !(std && r->std_filtered[bus][hf.id & CANDUMP_SFF_MAX])) {
+		run_idle_tick(r);
+	}
+	hf.timestamp_us = r->frame_us;
 	rc = hal_vbus_rx_push(bus, &hf);
 	if (rc == SQ_ENOENT) {
+		if (std) {
+			r->std_filtered[bus][hf.id & CANDUMP_SFF_MAX] = true;
+		}
 		if ((hf.flags & HAL_CAN_FLAG_RTR) != 0U) {
 			r->filtered_rtr++;
 		} else if ((hf.flags & HAL_CAN_FLAG_EXT) != 0U) {
@@ -594,6 +680,8 @@ static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 		return;
 	}
 	r->pushed++;
+	run_idle_tick(r);
+	set_time(r, r->frame_us);
 	(void)squeal_app_poll();
 	after_poll(r);
 }
@@ -612,26 +700,28 @@ static void release(replay_t *r, const held_t *h, const replay_args_t *a)
 			return;
 		}
 	}
-	if (t_us < r->now_us) {
-		const uint64_t back = r->now_us - t_us;
+	if (t_us < r->frame_us) {
+		const uint64_t back = r->frame_us - t_us;
 
 		r->backwards++;
 		note(a, "%s:%llu: timestamp %llu.%06llu s behind, beyond the reorder window: frame given at the current time\n",
 			a->log_name, (unsigned long long)h->line_no,
 			(unsigned long long)(back / 1000000U), (unsigned long long)(back % 1000000U));
-		t_us = r->now_us;
-	} else if (t_us - r->now_us > a->max_gap_us) {
-		const uint64_t gap = t_us - r->now_us;
+		t_us = r->frame_us;
+	} else if (t_us - r->frame_us > a->max_gap_us) {
+		const uint64_t gap = t_us - r->frame_us;
 
 		r->gaps++;
 		note(a, "%s:%llu: gap of %llu.%06llu s > --max-gap: skipped, not simulated\n",
 			a->log_name, (unsigned long long)h->line_no,
 			(unsigned long long)(gap / 1000000U), (unsigned long long)(gap % 1000000U));
 		/* keep the tick grid's phase */
+		run_idle_tick(r);
 		r->next_tick_us += ((t_us - r->next_tick_us) / TICK_US) * TICK_US;
 		set_time(r, t_us);
 	}
 	run_until(r, t_us);
+	r->frame_us = t_us;
 	give_frame(r, h, a);
 }
 
@@ -1509,9 +1599,14 @@ static void report_line(candump_pending_t *p, const replay_args_t *a, uint64_t l
 	}
 }
 
+/* The reorder window's frames (7 MB): outside replay_t, which is cleared
+ * at start, so that only the part a log fills is ever touched. */
+static held_t window_fifo[REORDER_FRAMES];
+static held_t window_heap[REORDER_FRAMES];
+
 int cmd_replay(int argc, char **argv)
 {
-	static candump_reader_t reader; /* 70 kB: not on the stack */
+	static candump_reader_t reader; /* 270 kB: not on the stack */
 	static char outbuf[1U << 16];
 	static replay_t r;
 	static replay_summary_t rs; /* 820 kB of occupancy cells: not on the stack */
@@ -1529,6 +1624,8 @@ int cmd_replay(int argc, char **argv)
 
 	memset(&a, 0, sizeof(a));
 	memset(&r, 0, sizeof(r));
+	r.fifo = window_fifo;
+	r.held = window_heap;
 	rc = replay_parse(argc, argv, &a);
 	if (rc != CLI_OK) {
 		return cli_exit_status((cli_result_t)rc);
@@ -1556,6 +1653,7 @@ int cmd_replay(int argc, char **argv)
 		a.input_iface = r.names.input_iface;
 	}
 	r.no_output = a.no_output;
+	r.skip = !a.step_every_ms;
 	if (a.summary_json != NULL) {
 		json_f = summary_json_open(&jw, &rs, &a);
 		if (json_f == NULL) {
@@ -1623,17 +1721,22 @@ int cmd_replay(int argc, char **argv)
 	}
 	if (r.started) {
 		/* the tick that takes the last frame in, then the tail */
-		run_until(&r, r.next_tick_us + a.tail_us);
+		const uint64_t end_us = r.next_tick_us + a.tail_us;
+
+		run_until(&r, end_us);
+		run_idle_tick(&r);
+		set_time(&r, end_us);
 	}
 	if (json_f != NULL) {
 		json_rc = summary_json_close(&jw, json_f, &r, &a);
 	}
+	out_flush(&r);
 	if ((fflush(stdout) != 0) || r.out_error) {
 		fprintf(stderr, "squeal-sim replay: error writing the output\n");
 		summary(&r, &a);
 		return 1;
 	}
-	if ((rc >= 0) && candump_pending_no_frames(&pending)) {
+	if ((rc >= 0) && candump_pending_no_frames(&pending, r.lines)) {
 		return 1;
 	}
 	summary(&r, &a);

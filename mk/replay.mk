@@ -66,3 +66,21 @@ build/test/tests/host-sim/test_json_writer: build/test/app/tests/host-sim/test_j
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
 TEST_PROGS += tests/host-sim/test_replay_summary.py build/test/tests/host-sim/test_json_writer
+
+# Replay skips the ticks that change nothing (squeal_app_next_event_us()):
+# the same bytes as 1 ms stepping (--step-every-ms) on every scenario, the
+# sender's faults, holes, gaps, off-grid times and vehicle layouts, both
+# numeric builds.
+tests/host-sim/test_replay_skip.py: build/host/squeal-sim build/host-fixed/squeal-sim
+TEST_PROGS += tests/host-sim/test_replay_skip.py
+
+# squeal_app_next_event_us(): the deadlines by hand, and every tick before
+# the reported time changes nothing (cmocka, both numeric builds, ASan+UBSan)
+$(foreach v,$(MONITOR_TEST_VARIANTS),$(eval $(call monitor_test_rules,$(v),tests/firmware/app/test_squeal_app_next_event)))
+TEST_PROGS += $(foreach v,$(MONITOR_TEST_VARIANTS),build/$(v)/tests/firmware/app/test_squeal_app_next_event)
+
+# make bench: replay against can-utils log2asc and python-can + canmatrix on
+# the project's, a vehicle layout's, a vehicle bus's and CAN FD traffic
+# (10^6 frames each), as CPU-time ratios from one run
+tests/host-sim/bench_replay_vs.py: build/host/squeal-sim
+BENCH_PROGS += tests/host-sim/bench_replay_vs.py

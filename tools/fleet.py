@@ -6,8 +6,12 @@ where and when the brakes ran bistable or unstable.
 usage: fleet.py (LOG... | --dir DIR) [--calib FILE] [--scheduler ADDRESS]
                 [-o REPORT_DIR] [--workers N] [--sim PATH] [--timeout S]
 
-Each task runs `squeal-sim replay LOG --no-output --summary-json -` on one
-log (the JSON document the C side defines, host-sim/replay_summary.h).
+Each log is replayed by `squeal-sim replay LOG --no-output --summary-json -`
+(the JSON document the C side defines, host-sim/replay_summary.h). Tasks are
+sized by work, the bytes of their logs: several short logs make one task, so
+that a task's cost is the replays' and not the scheduler's; a log longer
+than a task's share is a task of its own. On a terminal, a progress line
+(logs done / total, time left) is kept up to date on stderr.
 Without --scheduler a LocalCluster of --workers processes (default: the
 number of CPUs) runs on this machine; with --scheduler tcp://HOST:PORT the
 same tasks go to an existing cluster (`dask scheduler`, `dask worker`), whose
@@ -51,11 +55,20 @@ P = DC.P
 
 # ---- the task (runs on a worker; pickled by value with this script) -------
 
+def replay_command(sim):
+    """`squeal-sim replay` execs squeal-replay from its own folder: run
+    that program directly when it is there (one process start per log less)."""
+    direct = os.path.join(os.path.dirname(sim), "squeal-replay")
+    if os.path.basename(sim) == "squeal-sim" and os.access(direct, os.X_OK):
+        return [direct]
+    return [sim, "replay"]
+
+
 def replay_one(log, sim, calib, timeout_s):
     """Replay one log; always returns a dict, never raises."""
     t0 = time.monotonic()
     res = {"log": log, "status": "ok", "reason": "", "summary": None, "seconds": 0.0}
-    cmd = [sim, "replay", log, "--no-output", "--summary-json", "-"]
+    cmd = replay_command(sim) + [log, "--no-output", "--summary-json", "-"]
     if calib:
         cmd += ["--calib", calib]
     try:
@@ -93,7 +106,69 @@ def replay_one(log, sim, calib, timeout_s):
     return res
 
 
+def replay_batch(logs, sim, calib, timeout_s):
+    """One task: replay_one of each log, in order."""
+    return [replay_one(log, sim, calib, timeout_s) for log in logs]
+
+
 # ---- running it ------------------------------------------------------------
+
+TASKS_PER_WORKER = 8  # tasks of about equal work: the last ones balance the workers
+
+
+def log_bytes(path):
+    try:
+        return os.path.getsize(path) if os.path.isfile(path) else 0
+    except OSError:
+        return 0
+
+
+def batches(logs, nworkers):
+    """The logs in tasks of about equal work (bytes, each log at least one
+    line's worth): about TASKS_PER_WORKER tasks per worker, the largest
+    first, so that the small ones fill the end."""
+    size = {log: max(log_bytes(log), 64) for log in logs}
+    share = sum(size.values()) / float(max(1, nworkers) * TASKS_PER_WORKER)
+    out, cur, work = [], [], 0
+    for log in sorted(logs, key=lambda x: (-size[x], x)):
+        cur.append(log)
+        work += size[log]
+        if work >= share:
+            out.append(cur)
+            cur, work = [], 0
+    if cur:
+        out.append(cur)
+    return out
+
+
+class Progress:
+    """'fleet: 37/200 logs, 2.1 s left' on a terminal (stderr), nothing
+    otherwise; the time left from the bytes still to replay."""
+
+    def __init__(self, logs, stream=sys.stderr):
+        self.on = stream.isatty()
+        self.stream = stream
+        self.total = len(logs)
+        self.work = float(sum(max(log_bytes(x), 64) for x in logs))
+        self.done = 0
+        self.done_work = 0.0
+        self.t0 = time.monotonic()
+
+    def update(self, logs):
+        self.done += len(logs)
+        self.done_work += sum(max(log_bytes(x), 64) for x in logs)
+        if not self.on:
+            return
+        dt = time.monotonic() - self.t0
+        left = dt * (self.work - self.done_work) / self.done_work if self.done_work > 0 else 0.0
+        self.stream.write("\rfleet: %d/%d logs, %.1f s left   " % (self.done, self.total, left))
+        self.stream.flush()
+
+    def close(self):
+        if self.on:
+            self.stream.write("\r%s\r" % (" " * 40))
+            self.stream.flush()
+
 
 def run_tasks(logs, args):
     """Same code path for a LocalCluster and an existing scheduler."""
@@ -111,22 +186,28 @@ def run_tasks(logs, args):
     try:
         nworkers = len(client.scheduler_info().get("workers", {}))
         t_submit = time.monotonic()
-        futures = client.map(replay_one, logs, sim=args.sim, calib=args.calib,
+        tasks = batches(logs, nworkers)
+        futures = client.map(replay_batch, tasks, sim=args.sim, calib=args.calib,
                              timeout_s=args.timeout, pure=False)
+        task_of = {fut.key: batch for fut, batch in zip(futures, tasks)}
+        progress = Progress(logs)
         results = []
         for fut in as_completed(futures):
+            batch = task_of[fut.key]
             try:
-                results.append(fut.result())
-            except Exception as e:  # a worker died: still a listed log
-                log = logs[futures.index(fut)]
-                results.append({"log": log, "status": "failed", "summary": None, "seconds": 0.0,
-                                "reason": "task failed: %s" % (str(e) or type(e).__name__)})
+                results.extend(fut.result())
+            except Exception as e:  # a worker died: still listed logs
+                results.extend({"log": log, "status": "failed", "summary": None, "seconds": 0.0,
+                                "reason": "task failed: %s" % (str(e) or type(e).__name__)}
+                               for log in batch)
+            progress.update(batch)
+        progress.close()
         t_done = time.monotonic()
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
-    timing = {"where": where, "workers": nworkers, "job_s": t_done - t_submit,
+    timing = {"where": where, "workers": nworkers, "tasks": len(tasks), "job_s": t_done - t_submit,
               "wall_s": time.monotonic() - t_start}
     return sorted(results, key=lambda r: r["log"]), timing
 
@@ -393,6 +474,9 @@ def main():
     ap.add_argument("--sim", default=DC.SIM, help="squeal-sim (default: build/host/squeal-sim)")
     ap.add_argument("--timeout", type=float, default=600.0, help="seconds per log (default 600)")
     args = ap.parse_args()
+    if args.dir and not os.path.isdir(args.dir):
+        print("fleet: %s: no such folder" % args.dir, file=sys.stderr)
+        return 1
     logs = find_logs(args)
     if not logs or args.workers < 1:
         ap.error("give LOG files or --dir DIR with *.log files, and --workers >= 1")

@@ -8,7 +8,8 @@ sweep, point at a random v0 and force), the files in scenarios/, and random
 drives (a few brakings from random speeds at random pad forces, written as
 scenario files next to the logs), some with dropped, delayed or corrupted
 frames or a frozen counter. --duration-scale stretches the random drives
-(longer logs for benchmarks).
+(longer logs for benchmarks). --minutes M makes every good log a random
+drive of M minutes (brakings one after the other, as a real drive's log).
 Broken logs (broken-NNN.log), cycling through: binary garbage; a log cut
 in the middle of a line with garbage lines; an empty file; a directory
 named *.log (cannot be read); a dangling symbolic link (cannot be opened).
@@ -26,11 +27,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
-def random_drive(rnd, path, scale):
-    """A scenario file: brakings from random speeds, standing and driving off."""
+def random_drive(rnd, path, scale, min_s=0.0):
+    """A scenario file: brakings from random speeds, standing and driving off
+    (2 to 4 of them, more until the drive lasts min_s seconds)."""
     v = rnd.uniform(8.0, 30.0)
     t, rows = 0.0, [(0.0, v, 0)]
-    for _ in range(rnd.randint(2, 4)):
+    n = rnd.randint(2, 4)
+    while n > 0 or t < min_s:
+        n -= 1
         force = rnd.choice([2000, 4000, 6000, 9000, 12000, 15000, 18000])
         v_end = rnd.choice([0.0, 0.0, rnd.uniform(1.0, 6.0)])
         dur = max(1.0, (v - v_end) / rnd.uniform(2.0, 7.0)) * scale
@@ -73,6 +77,8 @@ def main():
     ap.add_argument("--seed", type=int, default=13, metavar="S", help="random seed: same seed, same fleet (default 13)")
     ap.add_argument("--duration-scale", type=float, default=1.0, metavar="X",
                     help="stretch the random drives by X (default 1)")
+    ap.add_argument("--minutes", type=float, default=0.0, metavar="M",
+                    help="make every good log a random drive of M minutes (real-length drives; default 0: the mix above)")
     ap.add_argument("--sim", default=os.path.join(ROOT, "build", "host", "squeal-sim"), metavar="PATH",
                     help="the squeal-sim that writes the logs (default build/host/squeal-sim)")
     args = ap.parse_args()
@@ -93,7 +99,7 @@ def main():
         car = os.path.join(args.out, "car-%02d" % (n % 8))
         os.makedirs(car, exist_ok=True)
         log = os.path.join(car, "drive-%03d.log" % n)
-        pick = rnd.random()
+        pick = 1.0 if args.minutes > 0 else rnd.random()
         if pick < 0.15:
             scen = [rnd.choice(["stop", "creep", "sweep"])]
         elif pick < 0.25:
@@ -103,8 +109,8 @@ def main():
             scen = [rnd.choice(files)]
         else:
             sf = os.path.join(car, "drive-%03d.scenario" % n)
-            random_drive(rnd, sf, args.duration_scale)
-            scen = [sf]
+            random_drive(rnd, sf, args.duration_scale, 60.0 * args.minutes)
+            scen = [sf] + (["--duration", "%g" % (60.0 * args.minutes)] if args.minutes > 0 else [])
         faults = []
         if rnd.random() < 0.3:
             faults = rnd.choice([["--drop", "0.01"], ["--corrupt-crc", "0.005"],

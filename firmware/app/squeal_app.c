@@ -46,6 +46,7 @@ _Static_assert(sizeof(app_mem.monitor) >= CALIB_BLOCK_LEN, "the block fits the m
 static uint32_t app_corners = 1U;
 static uint32_t app_next_corner;
 static uint64_t app_next_tick_us;
+static bool app_rx_since_tick; /* a frame reached the monitors after the last tick */
 static int app_init_rc;
 
 /* The calibration in use (the stored one, or the factory defaults). */
@@ -230,6 +231,7 @@ int squeal_app_init(void)
 	note_init(&first_error, start_buses(cal_in_use()), false);
 	note_init(&first_error, hal_watchdog_start(cal_in_use()->watchdog_ms), true);
 	app_next_tick_us = hal_time_us();
+	app_rx_since_tick = false;
 	app_init_rc = first_error;
 	return first_error;
 }
@@ -295,6 +297,7 @@ static void to_every_corner(const hal_can_frame_t *f)
 {
 	uint32_t k;
 
+	app_rx_since_tick = true;
 	for (k = 0U; k < app_corners; k++) {
 		monitor_on_frame(&app_mem.monitor[k], f);
 	}
@@ -352,12 +355,69 @@ uint64_t squeal_app_poll(void)
 		for (k = 0U; k < app_corners; k++) {
 			monitor_report_task_time(&app_mem.monitor[k], task_us);
 		}
+		app_rx_since_tick = false;
 		app_next_tick_us += TICK_US;
 		if (app_next_tick_us <= now) {
 			app_next_tick_us = now + TICK_US; /* late: skip, don't burst */
 		}
 	}
 	return app_next_tick_us;
+}
+
+/* The CAN status the monitors took at the last tick is still the HAL's (as
+ * monitor_on_can_status() takes it; every corner takes the same). */
+static bool can_status_taken(void)
+{
+	const monitor_t *m = &app_mem.monitor[0];
+	hal_can_status_t st;
+	bool taken = true; /* no status: a tick takes nothing either */
+
+	if (bus_status(&st) == SQ_OK) {
+		taken = (st.bus_off_count == m->count.bus_off_events) &&
+			(st.rx_overruns == m->count.rx_overruns) &&
+			(m->bus_off_seen ||
+			 ((st.state != HAL_CAN_STATE_BUS_OFF) && (st.bus_off_count == 0U)));
+	}
+	return taken;
+}
+
+static uint64_t earlier(uint64_t a, uint64_t b)
+{
+	return (a < b) ? a : b;
+}
+
+/* The first time at which the input goes stale (the monitor's test: older
+ * than stale_cycles periods); UINT64_MAX when it already is. */
+static uint64_t stale_at_us(const input_t *in, const input_rx_cfg_t *cfg)
+{
+	const uint64_t timeout_us = (uint64_t)cfg->desc.period_ms * TICK_US *
+				    (uint64_t)cfg->desc.stale_cycles;
+
+	return (((in->faults & INPUT_FAULT_STALE) != 0U) ||
+		(in->last_used_us >= UINT64_MAX - timeout_us - 1U)) ? UINT64_MAX :
+		in->last_used_us + timeout_us + 1U;
+}
+
+uint64_t squeal_app_next_event_us(void)
+{
+	bool pending = app_rx_since_tick; /* the commonest: nothing else to look at */
+	uint64_t next = UINT64_MAX;
+	uint32_t k;
+
+	if (!pending) {
+		pending = !can_status_taken();
+	}
+	for (k = 0U; !pending && (k < app_corners); k++) {
+		const monitor_t *m = &app_mem.monitor[k];
+		const bool wants = monitor_wants_classify(m);
+
+		pending = m->status_now || (m->txq_count != 0U) || wants;
+		next = earlier(next, earlier(m->next_status_us,
+					     earlier(m->next_detail_us, m->next_diag_us)));
+		next = earlier(next, earlier(stale_at_us(&m->speed, &m->speed_rx),
+					     stale_at_us(&m->force, &m->force_rx)));
+	}
+	return (pending || (next < app_next_tick_us)) ? app_next_tick_us : next;
 }
 
 int squeal_main(volatile const bool *stop)

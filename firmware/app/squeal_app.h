@@ -21,6 +21,17 @@ int squeal_app_init(void);
  * tasks, transmit. Bounded time per call. Returns the next deadline (us). */
 uint64_t squeal_app_poll(void);
 
+/* The earliest time (hal_time_us()'s clock) at which squeal_app_poll() has
+ * work to do without a new frame: a periodic message, an input's staleness
+ * timeout, or its next 1 ms tick when something is pending (a frame taken
+ * since the last tick, a queued frame, a new input pair, a state change to
+ * send, a new CAN status). Every tick before it changes nothing, so a
+ * virtual scheduler may skip those ticks and the output stays the same.
+ * Never earlier than the next tick. A frame offered to the HAL, or a change
+ * of the controller's status, is the caller's event: poll when it arrives.
+ * The ECU keeps polling every tick; this is for virtual time. */
+uint64_t squeal_app_next_event_us(void);
+
 /* init, then poll + hal_idle_until() until *stop becomes true (never, on the
  * ECU). Returns the init status. */
 int squeal_main(volatile const bool *stop);

@@ -302,12 +302,16 @@ def test_rejections_and_time(r, tmp, db):
     for text in ("", "# nothing\n\n", "not a log\nat all\n"):
         for cmd in ("replay", "decode"):
             rc, so, err = run(SIM_TEST, [cmd, "-"], stdin=text.encode())
-            r.check(rc == 1 and so == b"" and err == "no CAN frames in <stdin>\n",
-                    "%s of %r: 'no CAN frames', exit 1 (%d %r)" % (cmd, text, rc, err))
+            n = len(text.splitlines())
+            want = "<stdin>: no CAN frame in %d line%s\n" % (n, "" if n == 1 else "s")
+            r.check(rc == 1 and so == b"" and err == want,
+                    "%s of %r: 'no CAN frame', exit 1 (%d %r)" % (cmd, text, rc, err))
     readme = os.path.join(HERE, "README.md")
+    with open(readme, "rb") as f:
+        readme_lines = len(f.read().splitlines())
     for cmd in ("replay", "decode"):
         rc, so, err = run(SIM_TEST, [cmd, readme])
-        r.check(rc == 1 and so == b"" and err == "no CAN frames in %s\n" % readme,
+        r.check(rc == 1 and so == b"" and err == "%s: no CAN frame in %d lines\n" % (readme, readme_lines),
                 "%s of a text file: one line, exit 1 (%d, %d lines)" % (cmd, rc, len(err.splitlines())))
     rc, _, err = run(SIM_TEST, ["replay", os.path.join(tmp, "missing.log")])
     r.check(rc == 1 and "cannot open" in err, "missing log: exit 1 with a message")

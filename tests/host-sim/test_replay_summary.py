@@ -318,7 +318,7 @@ def check_segments(tmp):
     open(empty, "w").close()
     p = run(["replay", empty, "--no-output", "--summary-json", "-"])
     doc = load_strict(p.stdout.decode())
-    R.check(p.returncode == 1 and p.stderr.decode() == "no CAN frames in %s\n" % empty,
+    R.check(p.returncode == 1 and p.stderr.decode() == "%s: no CAN frame in 0 lines\n" % empty,
             "segments: an empty log is one line and exit 1")
     R.check(doc["segments"] == {"total": 0, "new": 0, "rebase_points": [], "points_not_listed": 0},
             "segments: none in an empty log")

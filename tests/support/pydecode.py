@@ -5,7 +5,9 @@ python-can and decode every frame of squeal.dbc to physical values with
 canmatrix. Used by bench-replay.sh as the baseline for `squeal-sim replay`
 and `squeal-sim decode`.
 
-    pydecode.py LOG [--print]
+    pydecode.py LOG [--print] [--dbc FILE]
+
+--dbc decodes with another DBC file (a vehicle's) instead of squeal.dbc.
 
 Prints "frames N decoded M seconds S frames_per_s R" (the decoded values
 are kept in a per-signal running sum so nothing is optimised away).
@@ -27,10 +29,11 @@ def main(argv):
         print(__doc__)
         return 2
     show = "--print" in argv[1:]
+    dbc = argv[argv.index("--dbc") + 1] if "--dbc" in argv[1:-1] else DBC
     t0 = time.perf_counter()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        db = list(canmatrix.formats.loadp(DBC).values())[0]
+        db = list(canmatrix.formats.loadp(dbc).values())[0]
     by_id = {f.arbitration_id.id: f for f in db.frames}
     sums = {}
     n = 0
@@ -38,8 +41,8 @@ def main(argv):
     for msg in can.io.CanutilsLogReader(argv[0]):
         n += 1
         fr = by_id.get(msg.arbitration_id)
-        if fr is None or msg.is_extended_id or msg.is_remote_frame:
-            continue
+        if fr is None or msg.is_extended_id or msg.is_remote_frame or len(msg.data) != fr.size:
+            continue  # not this DBC's frame (another layout's length: not decoded)
         values = fr.decode(msg.data)
         for name, sig in values.items():
             sums[name] = sums.get(name, 0) + sig.phys_value
