@@ -1,7 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Fleet analysis: replay many candump logs in parallel on Dask and report
-where and when the brakes ran bistable or unstable.
+"""Fleet analysis: replay many candump logs in parallel on Dask and report where and when the brakes ran bistable or unstable.
 
 usage: fleet.py (LOG... | --dir DIR) [--calib FILE] [--scheduler ADDRESS]
                 [-o REPORT_DIR] [--workers N] [--sim PATH] [--timeout S]
@@ -29,7 +28,7 @@ build/fleet-report):
                    monitor reported, over the brake's stability borders
   index.html       all of the above on one page
   fleet.json       counts and the speed (logs/s)
-The borders are the closed forms of shared/model.md computed with scipy
+The borders are the closed forms of docs/model.md computed with scipy
 (tools/plots/plotlib.py), each corner's panel for that corner's brake in
 --calib (its [corner POS] keys over the flat ones; default: the paper's).
 Each corner's frames are found by the identifiers of the calibration
@@ -49,6 +48,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import drive_common as DC  # noqa: E402
+import helptext  # noqa: E402
 
 P = DC.P
 
@@ -463,12 +463,13 @@ def find_logs(args):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("logs", nargs="*", metavar="LOG")
-    ap.add_argument("--dir", help="every *.log below DIR")
+    ap = helptext.parser(__doc__, "tools/fleet.py")
+    ap.add_argument("logs", nargs="*", metavar="LOG", help="candump log files (-l format), as many as you like")
+    ap.add_argument("--dir", metavar="DIR", help="every *.log below DIR (searched recursively)")
     ap.add_argument("--calib", help="calibration text file (replay's --calib and the map's brake)")
     ap.add_argument("--scheduler", help="address of an existing Dask scheduler (tcp://HOST:PORT)")
-    ap.add_argument("-o", "--out", default=os.path.join(DC.ROOT, "build", "fleet-report"))
+    ap.add_argument("-o", "--out", default=os.path.join(DC.ROOT, "build", "fleet-report"), metavar="REPORT_DIR",
+                    help="folder the report is written to (default build/fleet-report)")
     ap.add_argument("--workers", type=int, default=os.cpu_count() or 1,
                     help="LocalCluster worker processes (default: CPUs)")
     ap.add_argument("--sim", default=DC.SIM, help="squeal-sim (default: build/host/squeal-sim)")
