@@ -2,19 +2,19 @@
 /* The HSE against the HSI by timer input capture (stm32_hse_meter.h). */
 #include "stm32_hse_meter.h"
 
-#include "cortex_m.h"
 #include "stm32_time.h"
 #include "sq_status.h"
 
-/* TIMx registers (offsets from the timer's base) and the bits used: the
- * same in TIM11 (RM0090 18.5) and TIM17 (RM0440 TIM16/TIM17 registers). */
-#define TIMX_CR1(b)   REG32((b) + 0x00U)
-#define TIMX_SR(b)    REG32((b) + 0x10U)
-#define TIMX_CCMR1(b) REG32((b) + 0x18U)
-#define TIMX_CCER(b)  REG32((b) + 0x20U)
-#define TIMX_PSC(b)   REG32((b) + 0x28U)
-#define TIMX_ARR(b)   REG32((b) + 0x2CU)
-#define TIMX_CCR1(b)  REG32((b) + 0x34U)
+/* TIMx registers, as 32-bit words from the timer's base, and the bits
+ * used: the same in TIM11 (RM0090 18.5) and TIM17 (RM0440 TIM16/TIM17
+ * registers). */
+#define TIMX_CR1   (0x00U / 4U)
+#define TIMX_SR    (0x10U / 4U)
+#define TIMX_CCMR1 (0x18U / 4U)
+#define TIMX_CCER  (0x20U / 4U)
+#define TIMX_PSC   (0x28U / 4U)
+#define TIMX_ARR   (0x2CU / 4U)
+#define TIMX_CCR1  (0x34U / 4U)
 #define TIMX_CR1_CEN (1U << 0)
 #define TIMX_SR_CC1IF (1U << 1)
 #define TIMX_CCMR1_CC1S_TI1 1U
@@ -27,29 +27,30 @@
 #define MEAS_TIMEOUT_US 2000U
 #define HSE_TOLERANCE_PERMILLE 100U
 
-static int capture_wait(uintptr_t tim, uint32_t *ccr)
+static int capture_wait(volatile uint32_t *tim, uint32_t *ccr)
 {
-	if (stm32_wait_reg(&TIMX_SR(tim), TIMX_SR_CC1IF, TIMX_SR_CC1IF, MEAS_TIMEOUT_US) != SQ_OK) {
+	if (stm32_wait_reg(&tim[TIMX_SR], TIMX_SR_CC1IF, TIMX_SR_CC1IF, MEAS_TIMEOUT_US) != SQ_OK) {
 		return SQ_EAGAIN;
 	}
-	*ccr = TIMX_CCR1(tim) & 0xFFFFU; /* reading CCR1 clears CC1IF */
+	*ccr = tim[TIMX_CCR1] & 0xFFFFU; /* reading CCR1 clears CC1IF */
 	return SQ_OK;
 }
 
-uint32_t stm32_hse_meter_run(uintptr_t tim, uint32_t hse_div, uint32_t hsi_hz)
+uint32_t stm32_hse_meter_run(uintptr_t tim_base, uint32_t hse_div, uint32_t hsi_hz)
 {
+	volatile uint32_t *const tim = (volatile uint32_t *)tim_base; /* the timer's registers */
 	uint32_t prev;
 	uint32_t now;
 	uint32_t ticks = 0U;
 	uint64_t hz;
 
-	TIMX_CR1(tim) = 0U;
-	TIMX_PSC(tim) = 0U;
-	TIMX_ARR(tim) = 0xFFFFU;
-	TIMX_CCMR1(tim) = TIMX_CCMR1_CC1S_TI1 | TIMX_CCMR1_IC1PSC_8;
-	TIMX_CCER(tim) = TIMX_CCER_CC1E;
-	TIMX_SR(tim) = 0U;
-	TIMX_CR1(tim) = TIMX_CR1_CEN;
+	tim[TIMX_CR1] = 0U;
+	tim[TIMX_PSC] = 0U;
+	tim[TIMX_ARR] = 0xFFFFU;
+	tim[TIMX_CCMR1] = TIMX_CCMR1_CC1S_TI1 | TIMX_CCMR1_IC1PSC_8;
+	tim[TIMX_CCER] = TIMX_CCER_CC1E;
+	tim[TIMX_SR] = 0U;
+	tim[TIMX_CR1] = TIMX_CR1_CEN;
 	if (capture_wait(tim, &prev) == SQ_OK) {
 		uint32_t i;
 
@@ -62,8 +63,8 @@ uint32_t stm32_hse_meter_run(uintptr_t tim, uint32_t hse_div, uint32_t hsi_hz)
 			prev = now;
 		}
 	}
-	TIMX_CR1(tim) = 0U;
-	TIMX_CCER(tim) = 0U;
+	tim[TIMX_CR1] = 0U;
+	tim[TIMX_CCER] = 0U;
 	if (ticks == 0U) {
 		return 0U;
 	}

@@ -129,14 +129,8 @@ void CAN2_SCE_IRQHandler(void);
 #define FLASH_OPTCR_BOR_LEV_SHIFT 2U
 #define FLASH_OPTCR_BOR_LEV_MSK (3U << 2) /* 00 level 3 (2.7 V) .. 11 off */
 
-/* TIM11 (RM0090 section 17): input capture of HSE_RTC on channel 1 */
-#define TIM11_CR1   REG32(TIM11_BASE + 0x00U)
-#define TIM11_SR    REG32(TIM11_BASE + 0x10U)
-#define TIM11_CCMR1 REG32(TIM11_BASE + 0x18U)
-#define TIM11_CCER  REG32(TIM11_BASE + 0x20U)
-#define TIM11_PSC   REG32(TIM11_BASE + 0x28U)
-#define TIM11_ARR   REG32(TIM11_BASE + 0x2CU)
-#define TIM11_CCR1  REG32(TIM11_BASE + 0x34U)
+/* TIM11 (RM0090 section 17): input capture of HSE_RTC on channel 1; its
+ * capture registers are hse_meter.c's, the input remap is the F4's */
 #define TIM11_OR    REG32(TIM11_BASE + 0x50U)
 #define TIM11_OR_TI1_HSE_RTC 2U
 #define FLASH_ACR_LATENCY_MSK 7U

@@ -221,14 +221,9 @@ void FDCAN2_IT0_IRQHandler(void);
 /* 64-bit double words, each programmed once after an erase (ECC) */
 #define CHIP_FLASH_PROGRAM_BYTES 8U
 
-/* TIM17 (RM0440 TIM15/TIM16/TIM17 chapter, registers): input capture of HSE/32 on channel 1 */
-#define TIM17_CR1   REG32(TIM17_BASE + 0x00U)
-#define TIM17_SR    REG32(TIM17_BASE + 0x10U)
-#define TIM17_CCMR1 REG32(TIM17_BASE + 0x18U)
-#define TIM17_CCER  REG32(TIM17_BASE + 0x20U)
-#define TIM17_PSC   REG32(TIM17_BASE + 0x28U)
-#define TIM17_ARR   REG32(TIM17_BASE + 0x2CU)
-#define TIM17_CCR1  REG32(TIM17_BASE + 0x34U)
+/* TIM17 (RM0440 TIM15/TIM16/TIM17 chapter, registers): input capture of
+ * HSE/32 on channel 1; its capture registers are hse_meter.c's, the input
+ * selection the G4's */
 #define TIM17_TISEL REG32(TIM17_BASE + 0x5CU)
 #define TIM17_OR1   REG32(TIM17_BASE + 0x68U)
 #define TIM17_TISEL_TI1_HSE_32 3U /* TI1SEL 0011: HSE/32 */

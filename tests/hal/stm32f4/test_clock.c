@@ -21,6 +21,12 @@
 #include "sq_cmocka.h"
 
 #include "chip.h"
+/* TIM11's capture registers (RM0090 18.5), which hse_meter.c drives */
+#define TIM11_CR1   REG32(TIM11_BASE + 0x00U)
+#define TIM11_SR    REG32(TIM11_BASE + 0x10U)
+#define TIM11_CCMR1 REG32(TIM11_BASE + 0x18U)
+#define TIM11_CCER  REG32(TIM11_BASE + 0x20U)
+#define TIM11_CCR1  REG32(TIM11_BASE + 0x34U)
 #include "sq_status.h"
 #include "stm32_board.h"
 #include "stm32_time.h"

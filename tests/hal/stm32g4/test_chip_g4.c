@@ -23,6 +23,12 @@
 #include <cmocka.h>
 
 #include "chip.h"
+/* TIM17's capture registers (RM0440 TIM16/TIM17), which hse_meter.c drives */
+#define TIM17_CR1   REG32(TIM17_BASE + 0x00U)
+#define TIM17_SR    REG32(TIM17_BASE + 0x10U)
+#define TIM17_CCMR1 REG32(TIM17_BASE + 0x18U)
+#define TIM17_CCER  REG32(TIM17_BASE + 0x20U)
+#define TIM17_CCR1  REG32(TIM17_BASE + 0x34U)
 #include "regsim/calib_pattern.h"
 #include "hal.h"
 #include "sq_status.h"
