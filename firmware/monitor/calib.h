@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * calib: the monitor's calibration block: every parameter of the model
- * (shared/model.md section 8) plus CAN identifiers, periods and thresholds.
+ * (docs/model.md section 8) plus CAN identifiers, periods and thresholds.
  *
  * The block is the same bytes for both numeric builds: model parameters are
  * stored in the fixed build's Q-formats (squeal_model.h), everything else as
@@ -242,7 +242,7 @@ typedef enum {
 			    * 1000 kbit/s; 800 is not exact at 42 MHz)     */
 } calib_error_t;
 
-/* The factory defaults (model.md section 8, the DBC's IDs and periods). */
+/* The factory defaults (docs/model.md section 8, the DBC's IDs and periods). */
 void calib_default(calib_t *cal);
 /* The same, as one read-only object. */
 const calib_t *calib_factory(void);

@@ -4,9 +4,9 @@
   - the fixture layouts (which DBC, which signals feed which corner, how the
     drive is sent) and the vehicle_calib.py command for each;
   - a reader of the calibration text's [input]/[corner] sections;
-  - a reference extractor written from vehicle-bus.md (bit by bit, no
+  - a reference extractor written from the DBC conventions (bit by bit, no
     canmatrix), used to validate the harnesses in their self-tests;
-  - the conversions of vehicle-bus.md (speed -> v0, pressure/torque -> N);
+  - the conversions of docs/vehicle.md (speed -> v0, pressure/torque -> N);
   - CRC-8H2F (E2E P02) and CRC-8 0x1D (P01), CRC-16/CCITT-FALSE (P05),
     bitwise from their definitions.
 """
@@ -271,7 +271,7 @@ def wrong_keys(inp, want, sig):
 # ------------------------------------------------------------ reference extraction
 
 def bits_of(start, length, intel):
-    """DBC bit numbers of a signal, MSB first (vehicle-bus.md, 'Bit layout')."""
+    """DBC bit numbers of a signal, MSB first (the DBC bit numbering of firmware/protocol/can_signal.h)."""
     if intel:
         return list(range(start + length - 1, start - 1, -1))
     out, b = [], start
@@ -336,7 +336,7 @@ def reference_rows(inputs, frames):
     return rows
 
 
-# ------------------------------------------------------------ conversions (vehicle-bus.md)
+# ------------------------------------------------------------ conversions (docs/vehicle.md)
 
 LINEAR = {"km/h": 1 / 3.6, "kph": 1 / 3.6, "m/s": 1.0, "mph": 0.44704}
 ANGULAR = {"rad/s": 1.0, "rpm": 2 * math.pi / 60, "1/min": 2 * math.pi / 60}
