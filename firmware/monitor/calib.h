@@ -73,7 +73,7 @@
 typedef input_dec_t calib_dec_t;
 
 /*
- * Standard deviations of the brake's parameters (issue 12, docs/uncertainty.md),
+ * Standard deviations of the brake's parameters (docs/uncertainty.md),
  * in the Q formats of the parameters they belong to; all zero (the default)
  * is today's crisp classification. Domain: 0 <= sd <= |parameter|,
  * |corr| <= 1 (calib_validate).
@@ -207,7 +207,7 @@ typedef struct {
 	/* input map and corners (0 corners: the legacy flat keys above) */
 	uint8_t n_inputs;
 	uint8_t n_corners;
-	/* uncertainty (issue 12): the flat brake's deviations (every corner
+	/* uncertainty: the flat brake's deviations (every corner
 	 * inherits them) and k of the "uncertain" rule */
 	calib_sd_t sd;               /* all 0: crisp classes               0 */
 	int32_t uncertain_k_q16;     /* k [sigma], SQUEAL_Q_MARGIN         2 */

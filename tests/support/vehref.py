@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Shared pieces of the vehicle-bus tests (issue 11), independent of the C code:
+"""Shared pieces of the vehicle-bus tests, independent of the C code:
 
   - the fixture layouts (which DBC, which signals feed which corner, how the
     drive is sent) and the vehicle_calib.py command for each;
@@ -90,7 +90,7 @@ LAYOUTS = {
         "period_from": "GenMsgCycleTime x pages / --period-ms",
     },
 }
-# Kept apart: no unit test uses it (issue 11's Done-when check).
+# Kept apart: no unit test uses it (the check on a layout no other test uses).
 UNSEEN = {
     "dbc": os.path.join("unseen", "ev_chassis.dbc"),
     "corners": [("FL", "VDC_WheelSpeeds.WheelSpeed_FrontLeft", "VDC_BrakePressure.MasterCylPressure",
@@ -432,5 +432,5 @@ def run_sim(args, stdin=None):
 
 def sim_missing(r, what, rc, err):
     """A C-side feature this test needs is missing: one clear failure."""
-    r.check(False, "%s: squeal-sim (%s) exited %d; the C side of issue 11 is missing or broken: %s"
+    r.check(False, "%s: squeal-sim (%s) exited %d; the C side of the vehicle input map is missing or broken: %s"
             % (what, SIM, rc, (err.strip().splitlines() or ["no message"])[-1][:300]))

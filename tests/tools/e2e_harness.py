@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""End-to-end harness of the vehicle layouts (issue 11), shared by
+"""End-to-end harness of the vehicle layouts, shared by
 test_vehicle_e2e.py and test_vehicle_unseen.py:
 
   drive (gen_drive.py, canmatrix) -> calibration (tools/vehicle_calib.py from

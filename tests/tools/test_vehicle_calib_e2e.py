@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""End to end on every fixture vehicle layout (issue 11): a braking drive in
+"""End to end on every fixture vehicle layout: a braking drive in
 the vehicle's layout (10/20/24 ms, dropped frames, other traffic, the
 layout's protection) -> calibration from the DBC by tools/vehicle_calib.py ->
 `squeal-sim replay LOG --calib car.cal` -> each corner's outputs decoded with

@@ -350,7 +350,7 @@ static bool bxcan_exact(uint32_t clock_hz, uint32_t bps)
 	return false;
 }
 
-/* issue 14: a rate the ECU's CAN clock cannot make exactly is refused by
+/* A rate the ECU's CAN clock cannot make exactly is refused by
  * the calibration, with its own reason; every rate it accepts is exact on
  * each clock the ECU runs on (APB1 42 MHz F4, 36 MHz F103, HSI fallback
  * 16 MHz F4 and 8 MHz F103), so hal_can_set_bitrate() never refuses it. */

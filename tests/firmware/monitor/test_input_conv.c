@@ -13,7 +13,7 @@
  * 01 00 00 00 00 00 00 -> CRC 0x1B), which a bitwise Python CRC
  * (poly 0x2F, init 0xFF, xorout 0xFF) reproduces.
  *
- * Contracts (issue 10 item 4): NULL pointers, a P02 configuration its check
+ * Contracts: NULL pointers, a P02 configuration its check
  * refuses, a conversion not built by input_conv_make go to
  * hal_contract_failed (caught with expect_assert_failure,
  * tests/support/test_contract.c); bad data (a short or corrupted frame, an
