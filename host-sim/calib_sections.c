@@ -181,7 +181,7 @@ static const key_desc_t key_table[] = {
 	  "bus the Squeal* frames go out on"),
 	K("input_listen_only", input_listen_only, KIND_BOOL, 1.0, "",
 	  "input bus listen-only: nothing sent on it, no ACK (yes/no)"),
-	/* uncertainty (issue 12, docs/uncertainty.md): 0 <= sd <= |param|
+	/* uncertainty (docs/uncertainty.md): 0 <= sd <= |param|
 	 * (mu_inf's <= 1.5), |corr| <= 1; all 0: crisp classes as before */
 	K_SD("mass_kg", sd.mass_sd_q16, Q16, "kg"),
 	K_SD("omega0_radps", sd.omega0_sd_q12, Q12, "rad/s"),

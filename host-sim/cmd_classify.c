@@ -19,7 +19,7 @@
 
 /* Vehicle speed for display: v_car = (r_w / r_p) v0, with the wheel and
  * effective pad radius of --calib's corner (its own keys, else the flat
- * ones), without --calib the defaults (0.30 m, 0.12 m) of model.md
+ * ones), without --calib the defaults (0.30 m, 0.12 m) of docs/model.md
  * section 8. */
 #define WHEEL_OVER_PAD_RADIUS (0.30 / 0.12)
 

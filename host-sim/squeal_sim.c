@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * squeal-sim: the Linux programs around the brake-squeal monitor firmware,
- * one binary with subcommands (architecture.md section 4).
+ * one binary with subcommands (docs/commands.md).
  */
 #include <errno.h>
 #include <limits.h>

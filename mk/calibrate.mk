@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Issue 12, calibrating a brake from measurements:
+# Calibrating a brake from measurements:
 #   build/test{,-fixed}/tests/firmware/model/test_squeal_sigma    firmware/model/squeal_sigma.h against
 #                                     Monte Carlo (tests/support/golden/sigma_vectors.csv)
 #   tests/tools/test_fit_*.py         the fitting tools on synthetic data
@@ -27,7 +27,7 @@ CALIB_FIT_TESTS := tests/tools/test_fit_friction.py tests/tools/test_fit_modal.p
 	tests/tools/test_fit_friction_cli.py tests/host-sim/test_cmd_classify_sigma.py \
 	tests/tools/test_calibfit_user.py
 tests/tools/test_fit_friction_cli.py: build/host/squeal-sim
-# issue 12's "Done when": fits -> calibration -> classify/replay --calib, both builds
+# A user's whole path: fits -> calibration -> classify/replay --calib, both builds
 tests/host-sim/test_cmd_classify_sigma.py tests/tools/test_calibfit_user.py: build/host/squeal-sim \
 	build/host-fixed/squeal-sim
 TEST_PROGS += $(CALIB_FIT_TESTS)

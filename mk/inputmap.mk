@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Input map (issue 11): E2E P02, counter check, unit conversion (the
+# Input map: E2E P02, counter check, unit conversion (the
 # signal descriptors: mk/protocol.mk, test_can_signal); cmocka, both
 # numeric builds, ASan+UBSan.
 #   build/<v>/tests/firmware/monitor/test_input_conv

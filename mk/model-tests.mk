@@ -30,7 +30,7 @@ golden:
 	$(PYTHON) tests/support/reference/squeal_reference.py --self-check
 	$(PYTHON) tests/support/reference/gen_model_vectors.py -o tests/support/golden/model_vectors.csv
 
-# The reference against model.md, and the golden file against the reference.
+# The reference against docs/model.md, and the golden file against the reference.
 TEST_PROGS += tests/firmware/model/check_squeal_model_golden.py
 
 # fixmath against libm at its documented accuracy (fixed build only)

@@ -9,7 +9,7 @@
 #                                          both builds)
 #   tests/host-sim/test_cmd_decode.py      decode's text/CSV of frames encoded by
 #                                          canmatrix, every E2E status, both builds
-#   tests/host-sim/oscsim/test_oscsim_cmd.py  oscsim map/simulate vs model.md's
+#   tests/host-sim/oscsim/test_oscsim_cmd.py  oscsim map/simulate vs docs/model.md's
 #                                          closed forms (numpy/scipy), both builds
 NAMED_HOSTSIM_BOTH := test test-fixed
 

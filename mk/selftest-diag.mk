@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# SquealDiag page 4, the bring-up self-test (issue 14): the monitor alone,
+# SquealDiag page 4, the bring-up self-test: the monitor alone,
 # both numeric builds, no HAL (the monitor is platform-free).
 define selftest_diag_rules
 build/$(1)/tests/firmware/monitor/test_monitor_selftest: tests/firmware/monitor/test_monitor_selftest.c build/$(1)/libfirmware.a

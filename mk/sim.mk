@@ -44,7 +44,7 @@ endef
 $(foreach v,$(OSCSIM_AGREE_VARIANTS),$(eval $(call oscsim_agree_rules,$(v))))
 TEST_PROGS += $(foreach v,$(OSCSIM_AGREE_VARIANTS),build/$(v)/tests/host-sim/oscsim/test_oscsim_map_agreement)
 
-# Cross-check against scipy's solve_ivp and model.md section 6.
+# Cross-check against scipy's solve_ivp and docs/model.md section 6.
 tests/host-sim/oscsim/test_oscsim_scipy.py: build/host/oscsim
 TEST_PROGS += tests/host-sim/oscsim/test_oscsim_scipy.py
 

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Fault injection, memory checks and the soak (issue 7, items 2 and 4):
+# Fault injection, memory checks and the soak:
 #   build/<v>/tests/firmware/app/test_squeal_app_fault_injection   cmocka, test HAL, both numeric builds,
 #                                    ASan+UBSan: dropouts, counter wrap/jumps,
 #                                    CRC storms, DLC errors, bus-off, TX full

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# The monitor on a vehicle's bus (issue 11), Python side:
+# The monitor on a vehicle's bus, Python side:
 #   tools/vehicle_calib.py                  calibration text (+ outputs DBC) from a vehicle DBC
 #   tests/tools/fixtures/*.dbc, unseen/     fixture layouts written by the project
 #   tools/dbc_tolerant.py, vcalib_rules.py  its DBC reader for files from the field, its signal rules
@@ -9,7 +9,7 @@
 #                                           available, qualifiers, bad lines, mux, buses, units (no C)
 #   tests/tools/test_vehicle_calib_crosscheck.py  decode --calib --inputs-csv == canmatrix, random frames
 #   tests/tools/test_vehicle_calib_e2e.py       drive -> replay --calib -> outputs vs the reference
-#   tests/tools/test_vehicle_calib_unseen.py    issue 11's Done-when layout (tests/tools/fixtures/unseen/)
+#   tests/tools/test_vehicle_calib_unseen.py    a layout no other test uses (tests/tools/fixtures/unseen/)
 #   tests/system/realcan/test_realcan_sweep.py     every integer signal of the real DBC files of the
 #                                           realcan collection beside the repository (a counted
 #                                           skip without it)

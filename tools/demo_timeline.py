@@ -15,7 +15,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import helptext  # noqa: E402
 
-R_P, R_W = 0.12, 0.30            # default calibration (model.md section 8)
+R_P, R_W = 0.12, 0.30            # default calibration (docs/model.md section 8)
 STATES = {0: "stable", 1: "bistable", 2: "unstable", 3: "not sliding", 15: "FAULT"}
 LEVELS = {0: "none", 1: "advisory", 2: "WARNING", 3: "CRITICAL"}
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * squeal_model: the friction-oscillator ("mass on a belt") stability model of
- * a disc brake, as derived in shared/model.md.
+ * a disc brake, as derived in docs/model.md.
  *
  * One API, two numeric builds chosen at compile time:
  *   - float (default): squeal_num_t is float, every field in SI units;
@@ -146,7 +146,7 @@ int squeal_model_classify(const squeal_params_t *params,
 			  squeal_criterion_t criterion,
 			  squeal_result_t *out);
 
-/* The paper's default disc brake (shared/model.md section 8). */
+/* The paper's default disc brake (docs/model.md section 8). */
 void squeal_model_default_params(squeal_params_t *params);
 
 /* "stable", "bistable", "unstable", "not_sliding", "invalid" ("?" otherwise). */

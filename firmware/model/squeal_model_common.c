@@ -17,7 +17,7 @@
 #define FORCE_MAX     SQUEAL_NUM_LIMIT(500000, SQUEAL_Q_FORCE)
 
 /*
- * The paper's disc brake (model.md section 8). Fixed-build values are the
+ * The paper's disc brake (docs/model.md section 8). Fixed-build values are the
  * nearest raw integers: D = 0.023 * 2^30 = 24696061.95, dmu = 0.15 * 2^30 =
  * 161061273.6 (errors < 1e-9, far below the tests' tolerances).
  */

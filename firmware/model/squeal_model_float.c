@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Float build of the squeal model (shared/model.md sections 2-4, 7).
+ * Float build of the squeal model (docs/model.md sections 2-4, 7).
  *
  * Everything is expressed through lq2 = ln(2Q) = c2 + s, with
  *   c2 = ln(2 D w0 m / (a N dmu))   (bounded: a sum of logs of bounded inputs)

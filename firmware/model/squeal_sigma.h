@@ -2,7 +2,7 @@
 /*
  * squeal_sigma: how sure is a classification? First-order propagation of the
  * calibration's standard deviations to the two border functions of the
- * classification's criterion (model.md sections 2-4; docs/uncertainty.md):
+ * classification's criterion (docs/model.md sections 2-4; docs/uncertainty.md):
  *
  *   g_H = ln 2Q = ln(2 D w0 m / (a N dmu)) + a v0        Hopf border: g_H = 0
  *   g_S = ln 2Q - G(s),  s = a v0                         stable border: g_S = 0

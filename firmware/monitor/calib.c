@@ -188,7 +188,7 @@ static const calib_field_t fields[] = {
 
 #define FIELD_COUNT (sizeof(fields) / sizeof(fields[0]))
 
-/* The factory defaults (model.md section 8, the DBC's IDs and periods); no
+/* The factory defaults (docs/model.md section 8, the DBC's IDs and periods); no
  * input map (n_corners 0: the legacy DiscSpeed/PadForce corner). A const
  * object, so that a monitor running on defaults needs no copy of its own. */
 static const calib_t factory = {

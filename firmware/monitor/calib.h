@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * calib: the monitor's calibration block: every parameter of the model
- * (shared/model.md section 8) plus CAN identifiers, periods and thresholds.
+ * (docs/model.md section 8) plus CAN identifiers, periods and thresholds.
  *
  * The block is the same bytes for both numeric builds: model parameters are
  * stored in the fixed build's Q-formats (squeal_model.h), everything else as
@@ -73,7 +73,7 @@
 typedef input_dec_t calib_dec_t;
 
 /*
- * Standard deviations of the brake's parameters (issue 12, docs/uncertainty.md),
+ * Standard deviations of the brake's parameters (docs/uncertainty.md),
  * in the Q formats of the parameters they belong to; all zero (the default)
  * is today's crisp classification. Domain: 0 <= sd <= |parameter|,
  * |corr| <= 1 (calib_validate).
@@ -207,7 +207,7 @@ typedef struct {
 	/* input map and corners (0 corners: the legacy flat keys above) */
 	uint8_t n_inputs;
 	uint8_t n_corners;
-	/* uncertainty (issue 12): the flat brake's deviations (every corner
+	/* uncertainty: the flat brake's deviations (every corner
 	 * inherits them) and k of the "uncertain" rule */
 	calib_sd_t sd;               /* all 0: crisp classes               0 */
 	int32_t uncertain_k_q16;     /* k [sigma], SQUEAL_Q_MARGIN         2 */
@@ -242,7 +242,7 @@ typedef enum {
 			    * 1000 kbit/s; 800 is not exact at 42 MHz)     */
 } calib_error_t;
 
-/* The factory defaults (model.md section 8, the DBC's IDs and periods). */
+/* The factory defaults (docs/model.md section 8, the DBC's IDs and periods). */
 void calib_default(calib_t *cal);
 /* The same, as one read-only object. */
 const calib_t *calib_factory(void);

@@ -426,7 +426,7 @@ static void debounce(monitor_t *me, uint8_t cls)
 /* ---- uncertainty and warning level of the debounced class ---------------- */
 
 /*
- * The uncertainty of the debounced class (issue 12, docs/uncertainty.md):
+ * The uncertainty of the debounced class (docs/uncertainty.md):
  * BorderMargin of `state` and whether the point is within k sigma of the
  * border to the MORE severe neighbouring class (stable: the stable border,
  * next to bistable; bistable: the Hopf border, next to unstable; unstable

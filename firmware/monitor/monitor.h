@@ -144,7 +144,7 @@ typedef struct {
 	uint8_t warning;             /* reported WarningLevel                   */
 	uint8_t candidate;           /* state the debounce is counting towards  */
 	uint8_t candidate_count;
-	/* uncertainty (issue 12): off when the corner's deviations are all 0 */
+	/* uncertainty: off when the corner's deviations are all 0 */
 	bool sigma_on;
 	bool uncertain;              /* within k sigma of the border to the more
 				      * severe neighbouring class              */

@@ -4,7 +4,7 @@
  * up to 64), described the way a DBC file describes it, and the raw value it
  * carries. One code path for every message: the same descriptor type reads
  * DiscSpeed_radps, a vehicle's wheel speed or a brake pressure
- * (shared/vehicle-bus.md).
+ * (docs/calib-input-map.md).
  *
  * Bit numbering (DBC): bit j of byte i is number 8 i + j, j = 7 the MSB;
  * an FD frame of 64 bytes has the numbers 0..511.

@@ -8,7 +8,7 @@
  *   but the two CRC bytes, the counter included), then the 16-bit Data ID,
  *   low byte first (the Data ID is never sent). off is e2e_offset_byte
  *   (AUTOSAR's Offset / 8), 0 by default.
- * Published example (shared/vehicle-bus.md): 8 zero bytes, Data ID 0x1234
+ * Published example (AUTOSAR E2E Profile 5): 8 zero bytes, Data ID 0x1234
  * -> CRC bytes 1c ca; counter 1 -> cf 8d (tests/firmware/protocol).
  * The receiver's sequence machine is P01's (e2e_rx_sequence, e2e_p01.h)
  * with modulus 256; the statuses are e2e_p01_status_t.

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * oscsim: a host-side simulator of the real, nonsmooth friction oscillator
- * (shared/model.md section 1), used as ground truth for the firmware's
+ * (docs/model.md section 1), used as ground truth for the firmware's
  * closed-form classifier. Double precision, libm, no firmware types.
  *
  * Equation of motion, relative velocity w = v0 - x':
@@ -18,7 +18,7 @@
  *     control, 4th-order dense output and event location on the dense
  *     output (Illinois method), forward or backward in time;
  *   - oscsim_cycle_find: the unstable sliding limit cycle of the
- *     dimensionless sliding system (model.md section 5)
+ *     dimensionless sliding system (docs/model.md section 5)
  *       u'' + 2 D u' + u = kappa (exp(u') - 1),   kappa = D / Q,
  *     found by integrating it BACKWARDS in time (where the unstable cycle
  *     attracts) over single revolutions between crossings of the section
@@ -52,7 +52,7 @@ typedef struct {
 	double force_n;      /* pad normal force N              */
 } oscsim_params_t;
 
-/* The paper's disc brake (model.md section 8) at a = 2 s/m, v0 = 1 m/s,
+/* The paper's disc brake (docs/model.md section 8) at a = 2 s/m, v0 = 1 m/s,
  * N = 9000 N: the brake is the firmware's default (sim_params_default), so
  * this one function lives with the firmware-facing part, oscsim_map.c. */
 void oscsim_default_params(oscsim_params_t *p);
@@ -190,7 +190,7 @@ typedef struct {
 	oscsim_cycle_kind_t kind;
 	double r;        /* u where the cycle crosses {u' = 0, u > 0}          */
 	double u_min;    /* u where it crosses {u' = 0, u < 0}                 */
-	double v_max;    /* max u' on the cycle (the x of model.md section 3)  */
+	double v_max;    /* max u' on the cycle (the x of docs/model.md section 3)  */
 	double v_min;    /* min u' on the cycle                                */
 	double period;   /* period in tau = w0 t                              */
 	double v_reach;  /* AT_STICK: largest u' seen on an inside orbit       */

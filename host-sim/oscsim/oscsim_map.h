@@ -18,7 +18,7 @@
 
 #include "oscsim.h"
 
-/* A brake: the paper's default and its variations (model.md section 8). */
+/* A brake: the paper's default and its variations (docs/model.md section 8). */
 typedef struct {
 	const char *name;
 	const char *what; /* one line for humans */

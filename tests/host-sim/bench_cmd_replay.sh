@@ -7,7 +7,7 @@
 #     E2E-protected, generated into build/replay-bench/ (not committed);
 #   - squeal-sim replay (release build): the firmware runs every 1 ms tick
 #     (5,000,000 ticks) and writes ~3M output frames to /dev/null;
-#   - replay --no-output (issue 13): the same run without formatting and
+#   - replay --no-output: the same run without formatting and
 #     writing the frames, and with --summary-json (the fleet's job);
 #   - squeal-sim decode: the same log to physical values (like for like with
 #     the Python script);
@@ -62,7 +62,7 @@ median_s() {
 
 echo "input: $LOG ($N frames, $(du -h "$LOG" | cut -f1))"
 read -r rep_w rep <<<"$(median_s "$RUNS" "$SIM" replay "$LOG")"
-# issue 13: without the frame output (only the summary is wanted)
+# Without the frame output (only the summary is wanted)
 read -r nout_w nout <<<"$(median_s "$RUNS" "$SIM" replay --no-output "$LOG")"
 read -r njs_w njs <<<"$(median_s "$RUNS" "$SIM" replay --no-output --summary-json "$DIR/summary.json" "$LOG")"
 read -r dec_w dec <<<"$(median_s "$RUNS" "$SIM" decode "$LOG")"
@@ -98,7 +98,7 @@ for f in "$DIR/in-1e5.log" "$DIR/in-1e6.log"; do
 	printf 'replay peak RSS %8s frames: %6s kB (%s)\n' "$n" "$kb" "$how"
 done
 
-# Real vehicle traffic (issue 13's "about 4 M frames/s where most frames have
+# Real vehicle traffic (the replay's target "about 4 M frames/s where most frames have
 # other identifiers"): a vehicle-layout log, 1,000,000 frames, the input map
 # of tests/firmware/monitor/fixtures/moto15_p02.cal (four corners, wheel speeds every 10 ms,
 # P02 pressure every 20 ms) among 40 other ECUs' identifiers

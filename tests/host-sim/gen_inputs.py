@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(_TESTS)
 DBC = os.path.join(ROOT, "firmware", "protocol", "squeal.dbc")
 
-PAD_RADIUS_M = 0.12  # calibration default r_p (model.md section 8)
+PAD_RADIUS_M = 0.12  # calibration default r_p (docs/model.md section 8)
 
 
 def crc8_p01(data):

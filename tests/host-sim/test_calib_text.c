@@ -423,7 +423,7 @@ static void test_example_file_parses_to_defaults(void **state)
 	free(text);
 }
 
-/* The deviations (issue 12): stored in their parameters' Q formats
+/* The deviations (docs/uncertainty.md): stored in their parameters' Q formats
  * (hand-derived raw values), bounded by their parameters. */
 static void test_deviations(void **state)
 {

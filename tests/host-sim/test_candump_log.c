@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Unit tests of host-sim/candump_log: every form of shared/style.md "The
- * candump log format" (expected values written by hand from the grammar),
+ * Unit tests of host-sim/candump_log: every form of the candump log format
+ * (can-utils' candump -L, as docs/commands.md uses it; expected values
+ * written by hand from the grammar),
  * many malformed lines (each with its reason), bytes that are not text at
  * all, and the writer (exact strings; parse(format(f)) == f for random
  * frames). Runs under ASan+UBSan: a read outside the given length fails.

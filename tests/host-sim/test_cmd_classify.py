@@ -204,7 +204,7 @@ def check_literal(build):
     ok = rc == 0
     try:
         got = json.loads(out)
-        # v_H = 1.2314639 m/s (model.md 8), so margin = 1.5 - v_H
+        # v_H = 1.2314639 m/s (docs/model.md section 8), so margin = 1.5 - v_H
         ok = ok and got["state"] in ("stable", "bistable", "unstable") and \
             abs(got["hopf_margin_mps"] - (1.5 - 1.2314639)) < 1e-4 and \
             got["hopf_force_n"] is not None and got["hopf_force_n"] > 9000.0

@@ -6,7 +6,7 @@
  *   fixed: value * 2^q rounded to nearest (ties to even, the default
  *          rounding mode), saturated to int32 with -1, NaN -> INT32_MIN;
  *   float: (float)value, -1 only when a finite double overflows the float.
- * The default brake is model.md's: m 1 kg, w0 5000 rad/s, D 0.023,
+ * The default brake is docs/model.md's: m 1 kg, w0 5000 rad/s, D 0.023,
  * mu_inf 0.25, delta_mu 0.15, slope 2 s/m, each as the decimal written.
  */
 #include <math.h>

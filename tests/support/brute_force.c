@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Brute-force decision by backward integration of the sliding oscillator,
- * see brute_force.h. Written from shared/model.md section 5, independent of
+ * see brute_force.h. Written from docs/model.md section 5, independent of
  * firmware/model.
  */
 #include "brute_force.h"

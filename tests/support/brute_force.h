@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Brute-force decision of an operating point by simulation, for comparison
- * with the closed-form classification of firmware/model (shared/model.md
+ * with the closed-form classification of firmware/model (docs/model.md
  * sections 4 to 6). Host only: double precision, libm.
  *
- * The sliding oscillator in dimensionless form (model.md section 5):
+ * The sliding oscillator in dimensionless form (docs/model.md section 5):
  *
  *     u'' + 2 D u' + u = kappa (exp(u') - 1),   kappa = D / Q
  *
@@ -21,7 +21,7 @@
 #define BRUTE_FORCE_H
 
 /* Fixed-step RK4, this many steps per natural period 2 pi (64: the cycle
- * maxima of model.md section 6 agree within 0.005 %, as with 128). */
+ * maxima of docs/model.md section 6 agree within 0.005 %, as with 128). */
 #define BF_STEPS_PER_PERIOD 64
 /* Relative change of successive maxima of u' that counts as settled. */
 #define BF_SETTLE_TOL 1e-6

@@ -5,7 +5,7 @@ canmatrix (Frame.encode) from the fixture DBC, independently of the firmware:
 
   - the wheel speeds and the pressures / torques of the corners follow one
     braking run (braking_run: v0 at the pad and pad force N), turned into the vehicle's signal values with the inverse of
-    vehicle-bus.md's conversions, a per-corner scale on top;
+    the conversions of docs/vehicle.md, a per-corner scale on top;
   - each message at its period (10, 20 or 24 ms) with a little jitter;
     multiplexed pages take turns;
   - the logger drops frames (about 3 %, sometimes two in a row; the sender's

@@ -4,8 +4,8 @@
 # false when any part is false or cannot be evaluated (an empty field in
 # arithmetic), any_of only when every part is; and a compound condition
 # given to check through them is decided inside check, unlike
-# `check "d" [ A ] && [ B ]`, whose [ B ] runs outside it (the defect of
-# issue 15). Prints "RESULT: N passed, M failed".
+# `check "d" [ A ] && [ B ]`, whose [ B ] runs outside it (a defect this
+# library was written against). Prints "RESULT: N passed, M failed".
 set -u
 cd "$(dirname "$0")/../.."
 # shellcheck source=tests/support/checks.sh

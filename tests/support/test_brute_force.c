@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * The brute-force reference of the benchmark (brute_force.c) against the
- * simulated cycle maxima of shared/model.md section 6 (an independent
+ * simulated cycle maxima of docs/model.md section 6 (an independent
  * simulation) and against the classification rule of section 4, so that
  * the bench compares the model with a simulation that is itself right.
  */

@@ -1,12 +1,12 @@
 # SPDX-License-Identifier: MIT
-"""Shared pieces of the vehicle-bus tests (issue 11), independent of the C code:
+"""Shared pieces of the vehicle-bus tests, independent of the C code:
 
   - the fixture layouts (which DBC, which signals feed which corner, how the
     drive is sent) and the vehicle_calib.py command for each;
   - a reader of the calibration text's [input]/[corner] sections;
-  - a reference extractor written from vehicle-bus.md (bit by bit, no
+  - a reference extractor written from the DBC conventions (bit by bit, no
     canmatrix), used to validate the harnesses in their self-tests;
-  - the conversions of vehicle-bus.md (speed -> v0, pressure/torque -> N);
+  - the conversions of docs/vehicle.md (speed -> v0, pressure/torque -> N);
   - CRC-8H2F (E2E P02) and CRC-8 0x1D (P01), CRC-16/CCITT-FALSE (P05),
     bitwise from their definitions.
 """
@@ -90,7 +90,7 @@ LAYOUTS = {
         "period_from": "GenMsgCycleTime x pages / --period-ms",
     },
 }
-# Kept apart: no unit test uses it (issue 11's Done-when check).
+# Kept apart: no unit test uses it (the check on a layout no other test uses).
 UNSEEN = {
     "dbc": os.path.join("unseen", "ev_chassis.dbc"),
     "corners": [("FL", "VDC_WheelSpeeds.WheelSpeed_FrontLeft", "VDC_BrakePressure.MasterCylPressure",
@@ -271,7 +271,7 @@ def wrong_keys(inp, want, sig):
 # ------------------------------------------------------------ reference extraction
 
 def bits_of(start, length, intel):
-    """DBC bit numbers of a signal, MSB first (vehicle-bus.md, 'Bit layout')."""
+    """DBC bit numbers of a signal, MSB first (the DBC bit numbering of firmware/protocol/can_signal.h)."""
     if intel:
         return list(range(start + length - 1, start - 1, -1))
     out, b = [], start
@@ -336,7 +336,7 @@ def reference_rows(inputs, frames):
     return rows
 
 
-# ------------------------------------------------------------ conversions (vehicle-bus.md)
+# ------------------------------------------------------------ conversions (docs/vehicle.md)
 
 LINEAR = {"km/h": 1 / 3.6, "kph": 1 / 3.6, "m/s": 1.0, "mph": 0.44704}
 ANGULAR = {"rad/s": 1.0, "rpm": 2 * math.pi / 60, "1/min": 2 * math.pi / 60}
@@ -432,5 +432,5 @@ def run_sim(args, stdin=None):
 
 def sim_missing(r, what, rc, err):
     """A C-side feature this test needs is missing: one clear failure."""
-    r.check(False, "%s: squeal-sim (%s) exited %d; the C side of issue 11 is missing or broken: %s"
+    r.check(False, "%s: squeal-sim (%s) exited %d; the C side of the vehicle input map is missing or broken: %s"
             % (what, SIM, rc, (err.strip().splitlines() or ["no message"])[-1][:300]))

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""End-to-end harness of the vehicle layouts (issue 11), shared by
+"""End-to-end harness of the vehicle layouts, shared by
 test_vehicle_e2e.py and test_vehicle_unseen.py:
 
   drive (gen_drive.py, canmatrix) -> calibration (tools/vehicle_calib.py from
@@ -7,7 +7,7 @@ test_vehicle_e2e.py and test_vehicle_unseen.py:
   SquealStatus / SquealDetail / SquealDetail2 decoded with canmatrix from
   firmware/protocol/squeal.dbc (identifiers 0x300.. + 0x10 k) ->
     - V0_mps and Force_N follow the vehicle's signals, decoded from the log
-      with canmatrix and converted here with vehicle-bus.md's formulas;
+      with canmatrix and converted here with the conversions of docs/vehicle.md;
     - SquealState equals the scipy reference (tests/reference) at the
       converted operating points, away from borders (debounce, hysteresis)
       and after start-up;
@@ -59,7 +59,7 @@ def corner_index(pos):
 
 def expected_points(layout, db, frames):
     """{pos: [(t_us, v0, force)]} after every input frame of the corner,
-    from canmatrix's decoding of the log and vehicle-bus.md's formulas."""
+    from canmatrix's decoding of the log and the conversions of docs/vehicle.md."""
     out = {}
     for pos, spd, frc, opts in layout["corners"]:
         area, eta, k = gen_drive.corner_params(opts)

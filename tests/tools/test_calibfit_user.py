@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Issue 12's "Done when", run exactly as a user runs it:
+"""Calibrating a brake from measurements, fits to replay, run exactly as a user runs it:
 
   tools/fit_friction.py and tools/fit_modal.py on the documented example
   data (docs/examples/, the commands of `make plots-calib`) write a

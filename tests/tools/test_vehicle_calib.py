@@ -19,7 +19,7 @@ self-tests of the vehicle harnesses (pure Python, no C needed):
   - squeal.dbc's own inputs come out as P01 with their data IDs;
   - the drive generator: one 2.8 s jump back, periods, a few frames lost,
     P02 CRC-8H2F and counters as their definitions say (canmatrix decoding);
-  - the references: CRC check values, vehicle-bus.md's worked example, the
+  - the references: CRC check values, the worked example (40 bar on 2290 mm^2: 9.16 kN), the
     cross-check harness on vehref's pure-Python extraction (and that it
     catches a wrong value), the end-to-end harness on its Python stand-in.
 Prints "RESULT: N passed, M failed".

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Canmatrix cross-check of the input map (issue 11): for every fixture
+"""Canmatrix cross-check of the input map: for every fixture
 layout, a calibration built by tools/vehicle_calib.py from the DBC, thousands
 of random frames of the configured messages (random payloads, random
 multiplexer pages, 10 % of them shorter than the DBC's DLC), and

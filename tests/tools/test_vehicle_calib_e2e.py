@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""End to end on every fixture vehicle layout (issue 11): a braking drive in
+"""End to end on every fixture vehicle layout: a braking drive in
 the vehicle's layout (10/20/24 ms, dropped frames, other traffic, the
 layout's protection) -> calibration from the DBC by tools/vehicle_calib.py ->
 `squeal-sim replay LOG --calib car.cal` -> each corner's outputs decoded with
-canmatrix: V0_mps and Force_N follow the vehicle's signals (vehicle-bus.md's
+canmatrix: V0_mps and Force_N follow the vehicle's signals (docs/vehicle.md's
 formulas, computed here), SquealState equals the scipy reference at the
 converted operating points away from borders, no FAULT; and the drive with a
 2.8 s backward timestamp jump is a new segment, nothing squeezed

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Issue 11's Done-when check: a drive in a layout no other test uses
+"""The check on a layout no other test uses: a drive in a layout no other test uses
 (tests/tools/fixtures/unseen/), configured only with tools/vehicle_calib.py from its
 DBC, replays with the inputs used (no FAULT after start-up); V0_mps and
 Force_N follow the vehicle's signals and the states equal the reference at

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The platform's bring-up self-test through the app (issue 14): what
+ * The platform's bring-up self-test through the app: what
  * hal_selftest() reports at start-up reaches SquealDiag page 4 in the DBC's
  * raw units, and a platform without a self-test (SQ_ENOTSUP: Linux, the
  * in-memory bus) leaves the page "not measured". Frames are read back with

@@ -6,7 +6,7 @@
  * and the cost of deciding the same points by brute-force simulation
  * (brute_force.c).
  *
- * The operating points: the default brake (model.md section 8) with the
+ * The operating points: the default brake (docs/model.md section 8) with the
  * friction slope a uniform in [0.5, 6] s/m, v0 uniform in [0, 40] m/s and N
  * uniform in [0, 30] kN, drawn from a fixed xorshift64* sequence and kept
  * until each class (by the exact criterion, decided here in double
@@ -25,7 +25,7 @@
  *       per call = (Ir(N) - Ir(0)) / N.
  *   bench_model --brute K
  *       brute-force decision of the first K points with Q > 1/2; prints the
- *       per-decision time and the check of model.md section 6.
+ *       per-decision time and the check of docs/model.md section 6.
  */
 #include <errno.h>
 #include <math.h>
@@ -384,7 +384,7 @@ static int bench_timing(int repeats, unsigned long calls)
 	return 0;
 }
 
-/* model.md section 6: simulated max u' of the unstable cycle. */
+/* docs/model.md section 6: simulated max u' of the unstable cycle. */
 static const struct {
 	double damping, q, max_du;
 } md_table[] = {
@@ -413,7 +413,7 @@ static int bench_brute(unsigned int k)
 		rc = bf_decide(md_table[ti].damping, md_table[ti].q, HUGE_VAL, &br);
 		t = now_ns() - t;
 		err = (br.cycle_max_du / md_table[ti].max_du - 1.0) * 100.0;
-		printf("check D=%.3f Q=%.1f: brute-force cycle max u' %.5f, model.md %.4f,"
+		printf("check D=%.3f Q=%.1f: brute-force cycle max u' %.5f, docs/model.md %.4f,"
 		       " error %+.4f %% (%s), %ld RK4 steps, %.0f us\n",
 		       md_table[ti].damping, md_table[ti].q, br.cycle_max_du,
 		       md_table[ti].max_du, err,

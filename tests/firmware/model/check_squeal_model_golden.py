@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""Checks the reference against model.md (--self-check) and that the
+"""Checks the reference against docs/model.md (--self-check) and that the
 committed golden vectors are exactly what the reference generates now.
 Prints "RESULT: N passed, M failed". Run from the repository root."""
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * Golden-vector test of firmware/model against the independent Python
- * reference (tests/support/reference/squeal_reference.py, written from model.md with
+ * reference (tests/support/reference/squeal_reference.py, written from docs/model.md with
  * scipy). Compiled twice: float build (build/test/tests/firmware/model/test_squeal_model) and fixed build
  * (build/test-fixed/tests/firmware/model/test_squeal_model). Reads tests/support/golden/model_vectors.csv (or the
  * file named by argv[1]) at run time.

@@ -6,7 +6,7 @@
  * and the fixed build (build/test-fixed/tests/firmware/model/test_squeal_model_props).
  *
  * The few closed forms used here (v_H, N_H, the cubic border) are written
- * out by hand from model.md sections 2 and 4, in double, on the inputs as
+ * out by hand from docs/model.md sections 2 and 4, in double, on the inputs as
  * the build holds them.
  */
 #include <math.h>
@@ -117,14 +117,14 @@ static double num(squeal_num_t n, int q)
 	return sq_num_to_double(n, q);
 }
 
-/* ln Q = ln(D w0 m / (a N dmu)) + a v0, model.md section 2. */
+/* ln Q = ln(D w0 m / (a N dmu)) + a v0, docs/model.md section 2. */
 static double ln_q(const pt_t *h)
 {
 	return log(h->damping) + log(h->omega0) + log(h->mass) - log(h->slope) -
 	       log(h->force) - log(h->delta_mu) + h->slope * h->v0;
 }
 
-/* A random calibration around the paper's brake (model.md sections 6, 8). */
+/* A random calibration around the paper's brake (docs/model.md sections 6, 8). */
 static void random_brake(pt_t *d)
 {
 	d->slope = rng_range(0.05, 10.0);
@@ -140,7 +140,7 @@ static void random_brake(pt_t *d)
 /* ---- properties ------------------------------------------------------------ */
 
 /*
- * At fixed N, steady sliding is unstable exactly below v_H (model.md 2):
+ * At fixed N, steady sliding is unstable exactly below v_H (docs/model.md section 2):
  * sweeping v0 upwards, the class is UNSTABLE until v_H and never again
  * after it. And at fixed v0, unstable exactly above N_H.
  */
@@ -225,7 +225,7 @@ static void test_class_monotone_in_force_across_hopf_border(void **state)
 		random_brake(&d);
 		d.v0 = rng_range(0.05, 5.0);
 		make_input(&d, &in);
-		/* N_H = 2 D w0 m e^(a v0) / (a dmu), model.md section 2 */
+		/* N_H = 2 D w0 m e^(a v0) / (a dmu), docs/model.md section 2 */
 		n_h = 2.0 * in.held.damping * in.held.omega0 * in.held.mass *
 		      exp(in.held.slope * in.held.v0) / (in.held.slope * in.held.delta_mu);
 		if (n_h > 200000.0 || n_h < 10.0) {
@@ -304,7 +304,7 @@ static void test_cubic_stable_set_contains_exact_stable_set(void **state)
 	assert_true(n_exact_stable > 1000U && n_underwarn > 100U);
 }
 
-/* rho = x / s lies in (0, 1) exactly for bistable points (model.md 4). */
+/* rho = x / s lies in (0, 1) exactly for bistable points (docs/model.md section 4). */
 static void test_basin_ratio_below_one_exactly_for_bistable(void **state)
 {
 	unsigned n_bistable = 0U;
@@ -572,11 +572,11 @@ static void assert_close(double got, double want, double tol, const char *what)
 }
 
 /*
- * Default brake (model.md 8): m = 1 kg, w0 = 5000 rad/s, D = 0.023,
+ * Default brake (docs/model.md section 8): m = 1 kg, w0 = 5000 rad/s, D = 0.023,
  * dmu = 0.15, a = 2 s/m, N = 9000 N.
  *   a N dmu = 2 * 9000 * 0.15 = 2700;  2 D w0 m = 2 * 0.023 * 5000 = 230
  *   v_H = ln(2700 / 230) / 2 = ln(11.7391304) / 2 = 2.4629277 / 2
- *       = 1.2314639 m/s                      (model.md: 1.2315 m/s)
+ *       = 1.2314639 m/s                      (docs/model.md: 1.2315 m/s)
  * At v0 = 1 m/s:
  *   N_H = 2 D w0 m e^(a v0) / (a dmu) = 230 e^2 / 0.3
  *       = 766.66667 * 7.3890561 = 5664.9430 N
@@ -585,7 +585,7 @@ static void assert_close(double got, double want, double tol, const char *what)
  * At v0 = 2 m/s: ln Q = -3.1560749 + 4 = 0.8439251, Q = 2.3254; s = 4:
  *   exact: I1(4)/4 = 9.7594652 / 4 = 2.4398663 > Q        -> bistable
  *   cubic: 1/2 + 16/16 = 1.5 < Q                          -> stable
- *   (the cubic form under-warns, model.md 6).
+ *   (the cubic form under-warns, docs/model.md section 6).
  */
 static void test_default_brake_hand_values(void **state)
 {
@@ -642,7 +642,7 @@ static void test_default_brake_hand_values(void **state)
 }
 
 /*
- * model.md section 6, "exact averaged x" and "cubic x3" columns, at
+ * docs/model.md section 6, "exact averaged x" and "cubic x3" columns, at
  * D = 0.023: pick N so that Q is the table's value with the default brake
  * at v0 = 1 m/s:  Q = 115 e^2 / (0.3 N)  ->  N = 115 e^2 / (0.3 Q).
  * cubic x3 = 4 sqrt(Q - 1/2) by hand: Q = 0.6 -> 4 sqrt(0.1) = 1.2649;

@@ -17,7 +17,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # "corners 4": the same drive with four corners on the same frames (the
 # worst step: one corner classifies, all four receive, tick and send).
-# "sigma": the calibration carries standard deviations (issue 12): every
+# "sigma": the calibration carries standard deviations: every
 # classification also propagates them.
 for run in "host 1" "host-fixed 1" "host 4" "host-fixed 4" \
 	   "host 1 sigma" "host-fixed 1 sigma" "host 4 sigma" "host-fixed 4 sigma"; do

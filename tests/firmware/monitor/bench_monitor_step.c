@@ -9,7 +9,7 @@
  *
  * A second argument "sigma" calibrates standard deviations (the Monte Carlo
  * file's first set: m 2 %, w0 1.5 %, D 10 %, dmu 4 %, a 5 %, corr 0.85):
- * every classification also propagates them (squeal_sigma, issue 12).
+ * every classification also propagates them (squeal_sigma).
  *
  * With an argument N (2..4) the calibration has N corners, all on the same
  * DiscSpeed/PadForce frames (each corner its own outputs): every frame feeds

@@ -7,7 +7,7 @@
  * Input: byte 0 picks one of four calibrations (defaults, E2E off, cubic
  * criterion with filtering and no debounce, moved identifiers), with bit 2
  * a vehicle input map, bit 3 standard deviations (moderate, or with bit 4
- * each as large as its parameter, correlation -1: issue 12), then
+ * each as large as its parameter, correlation -1), then
  * operations [op, arguments...] until the input ends (at most 512).
  *
  * Properties after every operation:

@@ -87,7 +87,7 @@ def dbc_attrs(path):
 def main(argv):
     dbc, out = argv[1], argv[2]
     vh = hopf_v0()
-    # model.md section 8 prints v_H = 1.2315 m/s for these values
+    # docs/model.md section 8 prints v_H = 1.2315 m/s for these values
     assert abs(vh - 1.2315) < 5e-5, vh
     vs = stable_border_v0()
     vr = rho_border_v0(0.5)

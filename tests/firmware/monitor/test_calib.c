@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * The calibration block (firmware/monitor/calib.c): CRC-32, the stored
- * layout of calib.h, defaults = shared/model.md section 8 as hand-computed
+ * layout of calib.h, defaults = docs/model.md section 8 as hand-computed
  * Q integers, whole-block rejection of any corruption, every field's range.
  *
  * The layout table below is written from calib.h's description (header 8
@@ -70,7 +70,7 @@ typedef struct {
 } field_t;
 
 static const field_t fields[] = {
-	/* model: shared/model.md section 8 in the fixed build's Q formats:
+	/* model: docs/model.md section 8 in the fixed build's Q formats:
 	 * m 1 kg Q16 = 65536; w0 5000 rad/s Q12 = 20480000;
 	 * D 0.023 Q30 = 24696061.95 -> 24696062; mu_inf 0.25 Q30 = 268435456;
 	 * dmu 0.15 Q30 = 161061273.6 -> 161061274; a 2 s/m Q24 = 33554432 */
@@ -350,7 +350,7 @@ static bool bxcan_exact(uint32_t clock_hz, uint32_t bps)
 	return false;
 }
 
-/* issue 14: a rate the ECU's CAN clock cannot make exactly is refused by
+/* A rate the ECU's CAN clock cannot make exactly is refused by
  * the calibration, with its own reason; every rate it accepts is exact on
  * each clock the ECU runs on (APB1 42 MHz F4, 36 MHz F103, HSI fallback
  * 16 MHz F4 and 8 MHz F103), so hal_can_set_bitrate() never refuses it. */

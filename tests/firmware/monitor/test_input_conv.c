@@ -5,14 +5,15 @@
  * (units to v0 [um/s] and N [mN]). The DBC bit layouts (can_signal):
  * tests/firmware/protocol/test_can_signal.c.
  *
- * Every expected value is derived by hand from the DBC conventions in
- * shared/vehicle-bus.md or from the formulas there (worked in the comments),
+ * Every expected value is derived by hand from the DBC conventions (bit
+ * numbering in firmware/protocol/can_signal.h) or from the conversions of
+ * docs/vehicle.md (worked in the comments),
  * never from the code under test. The P02 vector is the AUTOSAR PRS E2E
  * protocol's Profile 2 example (DataIDList 0x01..0x10, bytes 1..7 =
  * 01 00 00 00 00 00 00 -> CRC 0x1B), which a bitwise Python CRC
  * (poly 0x2F, init 0xFF, xorout 0xFF) reproduces.
  *
- * Contracts (issue 10 item 4): NULL pointers, a P02 configuration its check
+ * Contracts: NULL pointers, a P02 configuration its check
  * refuses, a conversion not built by input_conv_make go to
  * hal_contract_failed (caught with expect_assert_failure,
  * tests/support/test_contract.c); bad data (a short or corrupted frame, an
@@ -229,7 +230,7 @@ static void test_force_and_pressure_conversions(void **state)
 	(void)state;
 	assert_int_equal(conv(5, -1, 0, 0, "N", &geom, 2000), 1000000);     /* PadForce 0.5 N */
 	assert_int_equal(conv(1, -3, 0, 0, "kN", &geom, 9160), 9160000);
-	/* 40 bar x 2290 mm^2 = 9.16 kN (vehicle-bus.md's example) */
+	/* 40 bar x 2290 mm^2 = 9.16 kN (a 54 mm piston at 40 bar) */
 	assert_int_equal(conv(1, -1, 0, 0, "bar", &geom, 400), 9160000);
 	assert_int_equal(conv(1, 0, 0, 0, "kPa", &geom, 4000), 9160000);
 	assert_int_equal(conv(1, -3, 0, 0, "MPa", &geom, 4000), 9160000);

@@ -15,10 +15,10 @@
  *   F torque_rpm       wheel rpm and brake torque (Nm), 2-bit counters
  *
  * Frames are written byte by byte from the DBC conventions
- * (shared/vehicle-bus.md) and the expected raw values and conversions are
+ * (bit numbering in firmware/protocol/can_signal.h) and the expected raw values and conversions are
  * derived by hand in the comments. Also: bad calibrations are refused whole
  * with FILE:LINE; a short frame is a bad DLC; "not available" and a fault
- * bit raise the input fault. Contracts (issue 10 item 4): NULL pointers and
+ * bit raise the input fault. Contracts: NULL pointers and
  * a descriptor the calibration's validation refuses go to hal_contract_failed
  * (expect_assert_failure, tests/support/test_contract.c); frames never do.
  */

@@ -10,7 +10,7 @@ At the end of every hold of the drive, for every corner of the layout:
   - the monitor's operating point (SquealDetail.V0_mps, SquealDetail2.Force_N
     of that corner's identifiers, decoded with canmatrix from squeal.dbc)
     equals the one derived HERE from the drive, the calibration file and the
-    formulas of shared/vehicle-bus.md (the vehicle's raw quantization
+    conversions of docs/vehicle.md (the vehicle's raw quantization
     included; v0 = v_w r_p / r_w, N = p A eta k, N = T / (n_f mu(v0) r_p)),
     written without any of the C code;
   - its SquealState equals `squeal-sim classify` at that derived point

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * SquealDiag page 4 (issue 14): the monitor cycles pages 0..4 and reports
+ * SquealDiag page 4, the bring-up self-test: the monitor cycles pages 0..4 and reports
  * the platform's self-test on page 4 with the DBC's raw units, "not
  * measured" until the platform passes its figures, Fault_SelfTest in every
  * page once a check failed, and refuses out-of-range figures. Frames are

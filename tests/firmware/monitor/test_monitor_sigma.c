@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * The calibration's standard deviations in the monitor (issue 12), through
+ * The calibration's standard deviations in the monitor, through
  * its real interfaces as in test_monitor.c: protected frames in, the app
  * polled every virtual millisecond, frames out decoded by hand from the
  * DBC layout (SquealStatus: SquealState 12|4, WarningLevel 16|4,

@@ -5,7 +5,7 @@
  * holds a signal, overlap, put as the inverse of get.
  *
  * Every expected value is derived by hand from the DBC conventions in
- * vehicle-bus.md (worked in the comments), never from the code under test.
+ * firmware/protocol/can_signal.h (worked in the comments), never from the code under test.
  * Contracts: NULL pointers and a bad descriptor given to get/value/put/raw_of
  * go to hal_contract_failed (caught with expect_assert_failure,
  * tests/support/test_contract.c); the validation functions answer for a bad

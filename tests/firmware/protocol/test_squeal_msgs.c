@@ -118,7 +118,7 @@ static void test_layout_squeal_status_extremes(void **state)
 	assert_memory_equal(d, expect, 8);
 }
 
-/* BorderMargin_sigma (issue 12): bits 56..63, Intel = byte 7 whole; raw
+/* BorderMargin_sigma: bits 56..63, Intel = byte 7 whole; raw
  * 21 = 2.0 sigma (x 0.1 - 0.1) */
 static void test_layout_squeal_status_border_margin(void **state)
 {

@@ -3,7 +3,7 @@
  * Unit tests of host-sim/oscsim against closed forms derived by hand:
  * the harmonic and the damped linear oscillator, constant-friction
  * stick-slip, the linearised return map at the Hopf point, and the table
- * of model.md section 6 (computed there independently).
+ * of docs/model.md section 6 (computed there independently).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -421,7 +421,7 @@ static void test_sim_modes_match_relative_velocity(void **state)
 
 /* ---- the sliding cycle -------------------------------------------------- */
 
-/* model.md section 6: max u' of the unstable cycle, simulated there. */
+/* docs/model.md section 6: max u' of the unstable cycle, simulated there. */
 static const double table6[][3] = {
 	{ 0.023, 0.6, 1.2260 }, { 0.023, 1.0, 2.4874 }, { 0.023, 2.0, 3.6936 },
 	{ 0.023, 3.0, 4.3102 }, { 0.1, 1.0, 2.4982 },   { 0.1, 3.0, 4.3368 },
@@ -544,7 +544,7 @@ static void test_truth_on_the_default_brake(void **state)
 
 	(void)state;
 	oscsim_default_params(&p);
-	/* v_H = 1.2315 m/s at a = 2 s/m (model.md section 8) */
+	/* v_H = 1.2315 m/s at a = 2 s/m (docs/model.md section 8) */
 	p.v0_mps = 1.2;
 	assert_int_equal(oscsim_truth(&p, NULL, 1, &t), SQ_OK);
 	assert_int_equal(t.cls, OSCSIM_TRUTH_UNSTABLE);

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """The simulator's commands (host-sim/oscsim/oscsim_cmd.c: `map`, `simulate`)
 from outside, on the sanitizer builds of the oscsim program (float, fixed),
-against model.md's closed forms computed here with numpy/scipy:
+against docs/model.md's closed forms computed here with numpy/scipy:
 
   - map --csv: the header, one row per grid point at a_i = a_max i / n_a,
     v0_j = v_max j / n_v, s = a v0 and
@@ -36,7 +36,7 @@ import dbc_common  # noqa: E402  (Results)
 
 PROGS = sys.argv[1:] or [os.path.join(ROOT, "build", b, "oscsim") for b in ("test", "test-fixed")]
 
-# model.md section 8's brake and its variations (oscsim map --list)
+# docs/model.md section 8's brake and its variations (oscsim map --list)
 M_KG, MU_INF, DMU = 1.0, 0.25, 0.15
 BRAKES = {  # name: (D, w0 [rad/s], N [N])
     "default": (0.023, 5000.0, 9000.0),
@@ -68,7 +68,7 @@ def ln_q_of(brake, a, v0):
 
 
 def exact_class(ln_q, s):
-    """model.md's exact criterion: (class, x of I1(x)/x = Q or None, distance to a border)."""
+    """docs/model.md's exact criterion: (class, x of I1(x)/x = Q or None, distance to a border)."""
     border = math.log(i1(s) / s)
     dist = min(abs(ln_q - math.log(0.5)), abs(ln_q - border))
     if ln_q <= math.log(0.5):
@@ -124,7 +124,7 @@ def test_map_csv(prog, tag):
                     bad.append((name, a, v0, xcol, r[xcol], x))
                 elif x is None and r[xcol] != "nan":
                     bad.append((name, a, v0, xcol, r[xcol], "nan"))
-    check(not bad, "%s: grid, ln Q, s, truth and the model's classes and cycles as model.md says "
+    check(not bad, "%s: grid, ln Q, s, truth and the model's classes and cycles as docs/model.md says "
           "(%d compared; %s)" % (tag, compared, bad[:4]))
     check(compared > 100, "%s: most points away from a border (%d of %d)" % (tag, compared, 2 * len(rows)))
     # the summary (on stderr with --csv -) counts what the CSV holds

@@ -8,7 +8,7 @@
  * model (build/host{,-fixed}/tests/host-sim/oscsim/test_oscsim_map_agreement).
  *
  * The truth is oscsim_truth (backward-time search for the unstable sliding
- * cycle, checked against scipy and model.md in the other tests); nothing
+ * cycle, checked against scipy and docs/model.md in the other tests); nothing
  * here uses the model's own formulas.
  */
 #include <math.h>
@@ -58,7 +58,7 @@ static void run_brake(const char *name, oscsim_map_stats_t *st)
 	/* the simulated linear test agrees with Q <= 1/2 */
 	assert_int_equal(st->linear_checked, GRID * GRID);
 	assert_int_equal(st->linear_mismatch, 0);
-	/* the exact cycle is within 1 % of the simulated one (model.md: 0.05 %
+	/* the exact cycle is within 1 % of the simulated one (docs/model.md: 0.05 %
 	 * at D = 0.023, 0.7 % at D = 0.1) away from the Hopf point, where the
 	 * cycle shrinks to nothing */
 	assert_true(st->exact_amp_err_far < 0.01);
@@ -78,7 +78,7 @@ static void test_default_brake(void **state)
 	(void)state;
 	run_brake("default", &st);
 	/* the same check rejects the paper's cubic limit, which under-warns
-	 * (model.md section 6: about one point in seven): it can fail */
+	 * (docs/model.md section 6: about one point in seven): it can fail */
 	assert_true(st.cubic_far_disagree > GRID * GRID / 10U);
 	assert_true(st.cubic_under > 0U);
 	assert_int_equal(st.cubic_over, 0);

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """Cross-check of the C simulator (host-sim/oscsim, driven through
 `oscsim simulate`) against an independent implementation on scipy's
-solve_ivp (DOP853 with event location), and against model.md section 6.
+solve_ivp (DOP853 with event location), and against docs/model.md section 6.
 
 Checks:
   - stick-slip trajectories: mode switch times and positions, samples,
@@ -10,7 +10,7 @@ Checks:
   - the unstable sliding cycle of u'' + 2 D u' + u = (D/Q)(exp(u') - 1)
     (section {u' = 0, u > 0}, backward-time return map, brentq in scipy),
     both C methods (return-map search and plain backward integration);
-  - model.md section 6's table of simulated max u';
+  - docs/model.md section 6's table of simulated max u';
   - ground-truth classes of a set of operating points;
   - the basin test's capture time.
 Usage: test_oscsim_scipy.py [path/to/oscsim]   (default build/host/oscsim)
@@ -267,11 +267,11 @@ def check_cycles():
             # 4 decimals, and its Q = 3 rows sit 2.2e-4 below both
             # integrations here (its own tolerance): 3e-4
             ok = ok and abs(c["v_max"] - table) < 3e-4
-            detail += f", model.md {table}"
-        check("unstable cycle agrees with scipy" + (" and model.md section 6" if table else ""), ok, detail)
+            detail += f", docs/model.md {table}"
+        check("unstable cycle agrees with scipy" + (" and docs/model.md section 6" if table else ""), ok, detail)
     # the plain backward integration gives the same cycle
     c = keyvals(run(["--dimless", "--damping", "0.023", "--q", "1.0", "--plain"]))
-    check("plain backward integration reproduces model.md (D 0.023, Q 1 -> 2.4874)",
+    check("plain backward integration reproduces docs/model.md (D 0.023, Q 1 -> 2.4874)",
           c["kind"] == "found" and abs(c["v_max"] - 2.4874) < 1e-4,
           f"max u' = {c['v_max']:.6f} after {int(c['evals'])} revolutions")
     # the stick line stops the search

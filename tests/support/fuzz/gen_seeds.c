@@ -65,7 +65,7 @@ typedef struct {
 } model_case_t;
 
 static const model_case_t model_cases[] = {
-	/* the paper's brake (model.md section 8) at several points */
+	/* the paper's brake (docs/model.md section 8) at several points */
 	{ 1.0, 5000.0, 0.023, 0.25, 0.15, 2.0, 0.0, 0.0, 0 },      /* not sliding */
 	{ 1.0, 5000.0, 0.023, 0.25, 0.15, 2.0, 10.0, 0.0, 0 },     /* no force */
 	{ 1.0, 5000.0, 0.023, 0.25, 0.15, 2.0, 0.5, 4000.0, 0 },   /* unstable */

@@ -114,7 +114,7 @@ def random_params(rng):
 def gen(w):
     rng = np.random.default_rng(SEED)
 
-    # 1. Wide random grid (model.md-scale values).
+    # 1. Wide random grid (values on the default brake's scale, docs/model.md section 8).
     for _ in range(2400):
         p = random_params(rng)
         p["v0"] = float(rng.uniform(0.0, 40.0)) if rng.random() < 0.6 \
@@ -123,7 +123,7 @@ def gen(w):
             else float(10.0 ** rng.uniform(0.0, math.log10(30000.0)))
         w.add("grid", quantize(p))
 
-    # 2. The default brake's map (model.md 6: a up to 6 s/m, v0 up to 3 m/s).
+    # 2. The default brake's map (docs/model.md section 6: a up to 6 s/m, v0 up to 3 m/s).
     for a in np.linspace(0.25, 6.0, 24):
         for v0 in np.linspace(0.125, 3.0, 24):
             w.add("map", quantize(base(slope=float(a), v0=float(v0))))

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
-"""Independent reference of the squeal model (shared/model.md sections 2-4).
+"""Independent reference of the squeal model (docs/model.md sections 2-4).
 
-Written from model.md and firmware/model/squeal_model.h only, in double
+Written from docs/model.md and firmware/model/squeal_model.h only, in double
 precision with scipy, so it shares no code and no numerical method with the
 firmware. Everything is done in the log domain:
 
@@ -14,7 +14,7 @@ the border) and from scipy.special.ive (exponentially scaled I1) for large x
 (no overflow for x in the thousands).
 
 Run `python3 squeal_reference.py --self-check` to compare against the
-numbers printed in model.md.
+numbers printed in docs/model.md.
 """
 
 import math
@@ -48,7 +48,7 @@ DOMAIN = {
     "force": (0.0, 500000.0, False),
 }
 
-# Defaults: model.md section 8.
+# Defaults: docs/model.md section 8.
 DEFAULTS = {
     "mass": 1.0,
     "omega0": 5000.0,
@@ -255,7 +255,7 @@ def represent(p, build):
     return out
 
 
-# ---- self check against model.md --------------------------------------------
+# ---- self check against docs/model.md ---------------------------------------
 
 def self_check():
     fails = 0
@@ -268,15 +268,15 @@ def self_check():
             fails += 1
 
     r = classify(default_point(1.0, 9000.0))
-    check("v_H default brake, N=9000 (model.md 8)", r["hopf_v0"], 1.2315, 5e-5)
+    check("v_H default brake, N=9000 (docs/model.md section 8)", r["hopf_v0"], 1.2315, 5e-5)
     check("state at v0=1 N=9000 is unstable", float(r["state"] == UNSTABLE), 1.0, 0)
     # N_H at v0 = 1: 2 * 0.023 * 5000 * 1 * e^2 / (2 * 0.15) = 766.667 e^2
     check("N_H at v0=1 m/s", r["hopf_force"], 766.6666666666666 * math.exp(2.0), 1e-9)
     for q, x_exact, x_cubic in ((0.6, 1.2259, 1.2649), (1.0, 2.4868, 2.8284),
                                 (2.0, 3.6924, 4.8990), (3.0, 4.3089, 6.3246)):
         t = math.log(q) + LN2
-        check("exact averaged x at Q=%.1f (model.md 6)" % q, solve_exact_x(t), x_exact, 6e-5)
-        check("cubic x3 at Q=%.1f (model.md 6)" % q, math.exp(ln_cubic_x(t)), x_cubic, 6e-5)
+        check("exact averaged x at Q=%.1f (docs/model.md section 6)" % q, solve_exact_x(t), x_exact, 6e-5)
+        check("cubic x3 at Q=%.1f (docs/model.md section 6)" % q, math.exp(ln_cubic_x(t)), x_cubic, 6e-5)
     # g_ratio: series branch and ive branch agree at the switch, and with a
     # direct evaluation of I1 at moderate x.
     from scipy.special import i1

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Memory checks of the offline replay (issue 7, item 2), on the release
+# Memory checks of the offline replay, on the release
 # builds (no sanitizer: valgrind and ASan do not mix), float and fixed:
 #
 #   memcheck-replay.sh [FRAMES [BIG]]     defaults 100000 and 10000000

@@ -3,7 +3,7 @@
 #
 # guest.sh: run a test script on a real SocketCAN vcan0.
 #
-# The build machines' kernel has no CAN (see ../shared/platform.md), so this
+# The build machines' kernel has no CAN (no CONFIG_CAN: no vcan, no PF_CAN), so this
 # boots Debian's own kernel under qemu-system-x86_64 (TCG) with a tiny
 # initramfs: busybox, the CAN modules, can-utils, and the files you add. The
 # guest creates vcan0 (and vcan1 with --vcan1), runs the script from /work

@@ -4,7 +4,7 @@
 paper's brake without uncertainty (both bands collapse onto the nominal
 borders) and with only the damping uncertain (sd 10 % of D). Checked as
 the reader of the picture relies on it: the files, the two panels with
-their axes, units, titles and legend, the borders where model.md's closed
+their axes, units, titles and legend, the borders where docs/model.md's closed
 forms put them and the bands as wide as derived by hand:
   N_H(v0) = 2 D w0 m / (a dmu) e^(a v0), at v0 = 1 m/s, a = 2 s/m:
             230 / 0.3 e^2 N = 5664.9 N

@@ -6,7 +6,7 @@ SquealStatus frames in the `squeal-sim decode --csv` form. Checked as the
 reader of the picture relies on it: the files, the axes and their units,
 the legend, the path's segments in the reported state's colour through the
 given points, the time plots' series, the borders where the closed forms
-put them (model.md, by hand):
+put them (docs/model.md, by hand):
   N_H(v0) = 2 D w0 m / (a dmu) e^(a v0)       at v0 = 1 m/s, a = 2 s/m:
           = 2 0.023 5000 / 0.3 e^2 N = 5664.9 N; at a = 3: 10266.4 N
   N_S(v0) = N_H(v0) / (2 I1(s)/s), s = a v0    at s = 2: 5664.9 / I1(2) N

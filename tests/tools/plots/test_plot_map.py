@@ -6,7 +6,7 @@ class, the two criteria's classes and ln Q by the closed form): both
 pictures are written, and what a reader takes from them is right: the axes
 and their units, the legend, the agreement stated in the title (11 of 12
 points for the exact criterion, 9 of 12 for the cubic), the disagreeing
-point marked, and the three borders where model.md's closed forms put
+point marked, and the three borders where docs/model.md's closed forms put
 them (solved here with scipy's I1, not plotlib's):
   Hopf   ln Q = ln(D w0 m / (a N dmu)) + a v0 = ln(1/2)
   exact  ln Q = ln(I1(s)/s),  s = a v0
@@ -27,7 +27,7 @@ from scipy.special import iv  # noqa: E402
 
 A_SPM = (1.0, 2.0, 3.0, 4.0)
 V0_MPS = (0.5, 1.5, 2.5)
-BRAKE = dict(m=1.0, w0=5000.0, n=9000.0, dmu=0.15)   # model.md's paper brake
+BRAKE = dict(m=1.0, w0=5000.0, n=9000.0, dmu=0.15)   # docs/model.md's paper brake
 
 
 def ln_c(d, a):

@@ -151,7 +151,7 @@ def main():
         check_save(tmp)
     check_names()
     check_zoom()
-    # the borders the maps draw: v_H of the default brake (model.md section 8)
+    # the borders the maps draw: v_H of the default brake (docs/model.md section 8)
     v_h = plotlib.border_v0(plotlib.DEFAULT, 2.0, "hopf")
     check("map's Hopf border at a = 2 s/m is 1.2315 m/s", abs(v_h - 1.2315) < 5e-5, f"{v_h:.6f}")
     # the committed pictures (make docs-img): PNG 150 dpi under 300 KB, SVGs
