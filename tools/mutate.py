@@ -36,12 +36,16 @@ pass/fail test: exit 0 unless the unmutated tree fails its own tests or a
 mutant cannot be applied.
 """
 import argparse
+import hashlib
 import json
 import os
+import queue
 import re
+import resource
 import shutil
 import subprocess
 import sys
+import threading
 import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
@@ -52,11 +56,12 @@ SCRATCH = os.path.join(ROOT, "build", "mutate", "tree")
 LOGDIR = os.path.join(ROOT, "build", "mutate")
 REPORT = os.path.join(LOGDIR, "report.txt")
 RESULTS = os.path.join(LOGDIR, "results.json")
+BASELINE = os.path.join(LOGDIR, "baseline.json")
 MUTANTS = os.path.join(ROOT, "tools", "mutants.txt")
 # A test that takes this many times its unmutated time (and at least
 # TIMEOUT_MIN_S) has met a mutant that makes it hang: killed.
-TIMEOUT_FACTOR = 10
-TIMEOUT_MIN_S = 60
+TIMEOUT_FACTOR = 4
+TIMEOUT_MIN_S = 10
 NOT_PASS_FAIL = ("fuzz", "bench")
 ENV = dict(os.environ, PYTHONDONTWRITEBYTECODE="1", CI="", MAKEFLAGS="")
 
@@ -147,41 +152,49 @@ def check_mutants(mutants, root=ROOT):
     return errors
 
 
-def copy_tree():
-    files = subprocess.run(["git", "ls-files", "-co", "--exclude-standard"], cwd=ROOT,
-                           check=True, stdout=subprocess.PIPE,
-                           universal_newlines=True).stdout.split("\n")
+def tree_files():
+    out = subprocess.run(["git", "ls-files", "-co", "--exclude-standard"], cwd=ROOT,
+                         check=True, stdout=subprocess.PIPE,
+                         universal_newlines=True).stdout.split("\n")
+    return [rel for rel in out if rel and not rel.startswith("build/")
+            and os.path.isfile(os.path.join(ROOT, rel))]
+
+
+def copy_tree(dst, files):
+    """Bring scratch tree dst up to date with the sources; returns a
+    fingerprint of their contents (the baseline is reused while it holds)."""
+    h = hashlib.sha1()
     for rel in files:
-        if not rel or rel.startswith("build/"):
-            continue
         src = os.path.join(ROOT, rel)
-        dst = os.path.join(SCRATCH, rel)
-        if not os.path.isfile(src):
-            continue
-        if os.path.exists(dst):
-            with open(src, "rb") as a, open(dst, "rb") as b:
-                if a.read() == b.read():
+        out = os.path.join(dst, rel)
+        with open(src, "rb") as a:
+            data = a.read()
+        h.update(rel.encode() + b"\0" + hashlib.sha1(data).digest())
+        if os.path.exists(out):
+            with open(out, "rb") as b:
+                if b.read() == data:
                     continue  # keep its time stamp: make need not rebuild it
-        os.makedirs(os.path.dirname(dst), exist_ok=True)
-        shutil.copy2(src, dst)
-        os.utime(dst)
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        shutil.copy2(src, out)
+        os.utime(out)
+    return h.hexdigest()
 
 
-def make(targets, log):
+def make(tree, targets, log, jobs):
     with open(log, "w") as f:
-        return subprocess.run(["nice", "make", "-j2", "--no-print-directory"] + targets,
-                              cwd=SCRATCH, env=ENV, stdout=f, stderr=subprocess.STDOUT).returncode
+        return subprocess.run(["nice", "make", "-j%d" % jobs, "--no-print-directory"] + targets,
+                              cwd=tree, env=ENV, stdout=f, stderr=subprocess.STDOUT).returncode
 
 
 RESULT_RE = re.compile(r"^RESULT: (\d+) passed, (\d+) failed", re.M)
 CMOCKA_FAILED_RE = re.compile(r"^\[  FAILED  \] \d+ test", re.M)
 
 
-def run_one(prog, timeout_s):
-    """(passed, seconds, why) of one test program in the scratch tree."""
+def run_one(tree, prog, timeout_s):
+    """(passed, seconds, why) of one test program in a scratch tree."""
     t0 = time.time()
     try:
-        p = subprocess.run(["nice", os.path.join(SCRATCH, prog)], cwd=SCRATCH, env=ENV,
+        p = subprocess.run(["nice", os.path.join(tree, prog)], cwd=tree, env=ENV,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            timeout=timeout_s)
     except subprocess.TimeoutExpired:
@@ -242,6 +255,89 @@ def score_table(results, before):
     return lines
 
 
+def baseline_times(fingerprint, needed, trees, tty, fresh):
+    """{program: seconds} of the unmutated tree's tests, or None when one
+    fails. Kept in build/mutate/baseline.json with the sources'
+    fingerprint: while the sources are unchanged the tests are not run
+    again (their builds are checked by make all the same)."""
+    cache = {}
+    if os.path.exists(BASELINE) and not fresh:
+        with open(BASELINE, encoding="utf-8") as f:
+            doc = json.load(f)
+        if doc.get("fingerprint") == fingerprint:
+            cache = doc.get("secs", {})
+    todo = [p for _, p in needed if p not in cache]
+    failing = []
+    lock = threading.Lock()
+    work = queue.Queue()
+    for p in todo:
+        work.put(p)
+
+    def worker(tree):
+        while True:
+            try:
+                prog = work.get_nowait()
+            except queue.Empty:
+                return
+            ok, secs, why = run_one(tree, prog, None)
+            with lock:
+                cache[prog] = secs
+                if not ok:
+                    failing.append("%s (%s)" % (prog, why))
+                if tty:
+                    sys.stderr.write("\r\033[Kbaseline: ran %d/%d %s" % (len(todo) - work.qsize(), len(todo), prog))
+
+    threads = [threading.Thread(target=worker, args=(t,)) for t in trees]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    if failing:
+        print("\nbaseline: fails on the unmutated tree, no score:\n  " + "\n  ".join(sorted(failing)))
+        return None
+    with open(BASELINE, "w", encoding="utf-8") as f:
+        json.dump({"fingerprint": fingerprint, "secs": cache}, f, indent=0)
+    return cache
+
+
+def run_mutant(tree, m, how_map, tests, base_s, make_jobs):
+    """Apply one mutant in a scratch tree, build and run its tests (in the
+    given order, stop at the first failure), put the file back."""
+    t0 = time.time()
+    path = os.path.join(tree, m["file"])
+    log = os.path.join(LOGDIR, "mutant-build-%s.log" % os.path.basename(tree))
+    with open(path, encoding="utf-8") as f:
+        orig = f.read()
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(orig.replace(m["old"], m["new"], 1))
+    how, by = "SURVIVED", ""
+    # a Python tool builds nothing: its tests run at once (the baseline
+    # built what they need)
+    python = m["file"].endswith(".py")
+    try:
+        # the first test (last time's killer, else the fastest) built
+        # alone: most mutants die there, and the others need not be linked
+        for group in (tests[:1], tests[1:]):
+            if not group or how == "KILLED":
+                continue
+            if not python and make(tree, sorted({mk for mk, _ in group}), log, make_jobs) != 0:
+                how, by = "KILLED", "(does not build)"
+                break
+            for _, prog in group:
+                limit = max(TIMEOUT_MIN_S, TIMEOUT_FACTOR * base_s[prog])
+                ok, _, why = run_one(tree, prog, limit)
+                if not ok:
+                    how, by = "KILLED", prog + (" (timeout)" if why == "timeout" else "")
+                    break
+    finally:
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(orig)
+        now = time.time()
+        os.utime(path, (now, now))
+    return dict(id=m["id"], file=m["file"], old=m["old"], new=m["new"], how=how, by=by,
+                map=how_map, secs=round(time.time() - t0, 1))
+
+
 def main(argv):
     ap = argparse.ArgumentParser(prog="tools/mutate.py", description=__doc__.split("\n\n")[0],
                                  epilog=__doc__.split("\n\n", 1)[1],
@@ -251,6 +347,10 @@ def main(argv):
     ap.add_argument("--folder", metavar="DIR", help="only the mutants of modules under DIR")
     ap.add_argument("--before", metavar="JSON", default=RESULTS,
                     help="the results to compare with (default: the previous run's, %(default)s)")
+    ap.add_argument("-j", "--jobs", type=int, default=min(2, os.cpu_count() or 1),
+                    help="mutants at once, each in its own scratch tree (default %(default)s)")
+    ap.add_argument("--fresh-baseline", action="store_true",
+                    help="run the unmutated tree's tests even when the sources are unchanged")
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per mutant on a terminal too")
     args = ap.parse_args(argv[1:])
 
@@ -285,27 +385,34 @@ def main(argv):
 
     tty = sys.stderr.isatty()
     say = print if (args.verbose or not tty) else (lambda *a, **k: None)
-    os.makedirs(SCRATCH, exist_ok=True)
     start = time.time()
-    copy_tree()
+    cpu0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    jobs = max(1, args.jobs)
+    make_jobs = max(1, (os.cpu_count() or 1) // jobs)
+    trees = [SCRATCH] + ["%s-%d" % (SCRATCH, k) for k in range(1, jobs)]
+    files = tree_files()
+    os.makedirs(SCRATCH, exist_ok=True)
+    fingerprint = copy_tree(SCRATCH, files)
     needed = sorted({t for m in mutants for t in plan[m["file"]][1]})
     targets = sorted({mk for mk, _ in needed})
     if tty:
         sys.stderr.write("baseline: building %d targets in %s ...\n" % (len(targets), SCRATCH))
-    if make(targets, os.path.join(LOGDIR, "baseline-build.log")) != 0:
+    if make(SCRATCH, targets, os.path.join(LOGDIR, "baseline-build.log"), os.cpu_count() or 1) != 0:
         print("baseline build failed: see build/mutate/baseline-build.log")
         return 1
-    base_s = {}
-    failing = []
-    for i, (_, prog) in enumerate(needed):
-        if tty:
-            sys.stderr.write("\r\033[Kbaseline: running %d/%d %s" % (i + 1, len(needed), prog))
-        ok, secs, why = run_one(prog, None)
-        if not ok:
-            failing.append("%s (%s)" % (prog, why))
-        base_s[prog] = secs
-    if failing:
-        print("\nbaseline: fails on the unmutated tree, no score:\n  " + "\n  ".join(failing))
+    for tree in trees[1:]:
+        # a second tree starts as a copy of the first, builds and all
+        # (time stamps kept), so that it need not be built again
+        if not os.path.isdir(os.path.join(tree, "build")):
+            shutil.rmtree(tree, ignore_errors=True)
+            shutil.copytree(SCRATCH, tree, symlinks=True)
+        copy_tree(tree, files)
+        if make(tree, targets, os.path.join(LOGDIR, "baseline-build-%s.log" % os.path.basename(tree)),
+                os.cpu_count() or 1) != 0:
+            print("baseline build failed in %s" % tree)
+            return 1
+    base_s = baseline_times(fingerprint, needed, trees, tty, args.fresh_baseline)
+    if base_s is None:
         return 1
     if tty:
         sys.stderr.write("\r\033[Kbaseline: %d tests pass (%s)\n" % (len(needed), fmt_s(time.time() - start)))
@@ -318,55 +425,61 @@ def main(argv):
     if os.path.exists(RESULTS):
         with open(RESULTS, encoding="utf-8") as f:
             previous = {r["id"]: r for r in json.load(f)}
-    results = []
+    order = {}
+    for m in mutants:
+        tests = sorted(plan[m["file"]][1], key=lambda t: base_s[t[1]])
+        # the test that killed it last time first: most mutants die there again
+        killer = previous.get(m["id"], {}).get("by", "").split(" ")[0]
+        tests.sort(key=lambda t: t[1] != killer)
+        order[m["id"]] = tests
+    # the longest first, so that the workers end together
+    expect = {m["id"]: sum(base_s[p] for _, p in order[m["id"]][:1 if previous.get(m["id"], {}).get("how") == "KILLED" else None])
+              for m in mutants}
+    work = queue.Queue()
+    for m in sorted(mutants, key=lambda m: -expect[m["id"]]):
+        work.put(m)
+    lock = threading.Lock()
+    results = {}
     prog_bar = Progress(len(mutants), tty)
-    killed = survived = 0
-    for n, m in enumerate(mutants):
-        prog_bar.show(n, killed, survived, m["id"])
-        t0 = time.time()
-        how_map, tests = plan[m["file"]]
-        tests = sorted(tests, key=lambda t: base_s[t[1]])
-        path = os.path.join(SCRATCH, m["file"])
-        with open(path, encoding="utf-8") as f:
-            orig = f.read()
-        with open(path, "w", encoding="utf-8") as f:
-            f.write(orig.replace(m["old"], m["new"], 1))
-        how, by = "SURVIVED", ""
-        try:
-            # the fastest test first, built alone: most mutants die there,
-            # and the others need not be linked
-            for group in (tests[:1], tests[1:]):
-                if not group or how == "KILLED":
-                    continue
-                if make(sorted({mk for mk, _ in group}), os.path.join(LOGDIR, "mutant-build.log")) != 0:
-                    how, by = "KILLED", "(does not build)"
-                    break
-                for _, prog in group:
-                    limit = max(TIMEOUT_MIN_S, TIMEOUT_FACTOR * base_s[prog])
-                    ok, _, why = run_one(prog, limit)
-                    if not ok:
-                        how, by = "KILLED", prog + (" (timeout)" if why == "timeout" else "")
-                        break
-        finally:
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(orig)
-            now = time.time()
-            os.utime(path, (now, now))
-        killed += how == "KILLED"
-        survived += how != "KILLED"
-        r = dict(id=m["id"], file=m["file"], old=m["old"], new=m["new"], how=how, by=by,
-                 map=how_map, secs=round(time.time() - t0, 1))
-        results.append(r)
-        if how != "KILLED":
-            prog_bar.clear()
-            if tty and not args.verbose:
-                print("SURVIVED %-10s %s: %s => %s %s" % (m["id"], m["file"], m["old"], m["new"], by))
-        say("%-8s %-10s %s: %s => %s%s  (%.0f s)" % (how, m["id"], m["file"], m["old"], m["new"],
-                                                     "  by " + by if by else "", r["secs"]))
-        sys.stdout.flush()
+    count = {"killed": 0, "survived": 0}
+    busy = {}
+
+    def worker(tree):
+        while True:
+            try:
+                m = work.get_nowait()
+            except queue.Empty:
+                return
+            with lock:
+                busy[tree] = m["id"]
+                prog_bar.show(len(results), count["killed"], count["survived"], " ".join(sorted(busy.values())))
+            r = run_mutant(tree, m, plan[m["file"]][0], order[m["id"]], base_s, make_jobs)
+            with lock:
+                del busy[tree]
+                results[m["id"]] = r
+                count["killed" if r["how"] == "KILLED" else "survived"] += 1
+                if r["how"] != "KILLED":
+                    prog_bar.clear()
+                    if tty and not args.verbose:
+                        print("SURVIVED %-10s %s: %s => %s %s" % (m["id"], m["file"], m["old"], m["new"], r["by"]))
+                say("%-8s %-10s %s: %s => %s%s  (%.0f s)" % (r["how"], m["id"], m["file"], m["old"], m["new"],
+                                                             "  by " + r["by"] if r["by"] else "", r["secs"]))
+                sys.stdout.flush()
+                prog_bar.show(len(results), count["killed"], count["survived"], " ".join(sorted(busy.values())))
+
+    threads = [threading.Thread(target=worker, args=(t,)) for t in trees]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
     prog_bar.clear()
-    # leave the scratch build matching the sources again
-    make(targets, os.path.join(LOGDIR, "restore-build.log"))
+    results = [results[m["id"]] for m in mutants]
+    killed = count["killed"]
+    # leave the scratch builds matching the sources again
+    for tree in trees:
+        make(tree, targets, os.path.join(LOGDIR, "restore-build.log"), os.cpu_count() or 1)
+    cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu_s = (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
 
     stillborn = [r for r in results if r["by"] == "(does not build)"]
     survivors = [r for r in results if r["how"] != "KILLED"]
@@ -375,7 +488,11 @@ def main(argv):
     lines = ["mutation score: %d killed / %d mutants on %d modules (%d of them by not building), "
              "%d survived (%d with no test), %s"
              % (killed, len(results), len({r["file"] for r in results}), len(stillborn),
-                len(survivors), len(untested), fmt_s(time.time() - start))]
+                len(survivors), len(untested), fmt_s(time.time() - start)),
+             "time: %s wall with %d workers, %s CPU (user + system of every build and test; "
+             "on an idle %d-core machine about %s)"
+             % (fmt_s(time.time() - start), jobs, fmt_s(cpu_s), os.cpu_count() or 1,
+                fmt_s(cpu_s / max(1, min(jobs, os.cpu_count() or 1))))]
     lines += score_table(results, before)
     if folder_mapped:
         lines.append("modules without a test named after them (met the tests of their folder): "
