@@ -3,3 +3,14 @@
 # tests (tests/README.md), so that tools/test_map.py gives them to it.
 #   tests/tools/test_vcalib_rules_qualifier.py  the qualifier bit: two equal siblings, none chosen
 TEST_PROGS += tests/tools/test_vcalib_rules_qualifier.py
+
+# cmocka, both numeric builds, ASan+UBSan (the rules of mk/fd-map.mk)
+#   build/<v>/tests/host-sim/test_calib_sections  the key table and sections at their bounds
+$(foreach v,$(FD_MAP_VARIANTS),\
+  $(eval $(call fd_map_rules,$(v),host-sim,test_calib_sections,,host-sim/calib_text.o host-sim/calib_sections.o)))
+#   build/<v>/tests/firmware/protocol/test_e2e_p02_check  P02's configuration bounds and verdicts
+$(foreach v,$(FD_MAP_VARIANTS),\
+  $(eval $(call fd_map_rules,$(v),firmware/protocol,test_e2e_p02_check,,)))
+#   build/<v>/tests/firmware/model/test_squeal_sigma_distance  |g| / sigma and its cap, exact values
+$(foreach v,$(FD_MAP_VARIANTS),\
+  $(eval $(call fd_map_rules,$(v),firmware/model,test_squeal_sigma_distance,,tests/support/sq_num.o)))
