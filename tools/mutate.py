@@ -5,11 +5,14 @@
 Each mutant in tools/mutants.txt is one small source change (a flipped
 comparison, an off-by-one bound, a changed constant, a deleted statement, a
 changed operator; in Python also a changed default or a swapped branch) in
-a module of firmware/, hal/, host-sim/ or tools/. The tree is copied once to
-a scratch directory (build/mutate/tree: the files git knows, build/
-excluded; its builds are kept between runs); for each mutant the harness
-applies the change there, rebuilds and runs the tests of the mutated module,
-fastest first, and puts the file back.
+a module of firmware/, hal/, host-sim/ or tools/. The tree is copied to
+scratch directories (build/mutate/tree, tree-1, ...: the files git knows,
+build/ excluded; their builds are kept between runs), one per worker (-j,
+default 2: the cores); each worker applies one mutant in its tree,
+rebuilds and runs the tests of the mutated module, and puts the file back.
+The test that killed a mutant last time runs first, then the others,
+fastest first; the first failure ends the mutant. A Python tool's mutant
+builds nothing.
 
 Which tests belong to a module follows from where they live
 (tools/test_map.py, tests/README.md): tests/DIR/test_x*, check_x*, conf_x*
@@ -20,8 +23,12 @@ instead, or where that has none every test under the folder above; marked
 not pass/fail and are left out. A C test tests/P/NAME.c is the programs of
 TEST_PROGS built from it (build/test/tests/P/NAME, build/test-fixed/...); a
 .py or .sh test in TEST_PROGS is run after `make <test>` has built what it
-depends on. A mutant is killed when a test fails, times out or does not
-build (counted apart), survives otherwise.
+depends on. A mutant is killed when a test fails, takes more than 4 times
+its unmutated time (at least 10 s: it hangs) or does not build (counted
+apart); it survives otherwise. The unmutated tree's tests run first (the
+baseline; kept in build/mutate/baseline.json while the sources are
+unchanged). Mutants argued equivalent in docs/mutation.md (its table
+"Equivalent mutants") are left out of the score's denominator.
 
   tools/mutate.py                 all mutants; report in build/mutate/report.txt
   tools/mutate.py ID...           only these (e.g. e2e-1 calib-3)
@@ -31,9 +38,10 @@ build (counted apart), survives otherwise.
 On a terminal a progress line shows done/total and the time left; with
 -v (or when not on a terminal, nothing but) one line per mutant and the
 summary: the score per folder, before (the previous run, kept in
-build/mutate/results.json) and now, and every survivor. A figure, not a
-pass/fail test: exit 0 unless the unmutated tree fails its own tests or a
-mutant cannot be applied.
+build/mutate/results.json, or --before FILE) and now, every survivor, and
+the wall and CPU time (CPU / cores: the time on an idle machine). A figure,
+not a pass/fail test: exit 0 unless the unmutated tree fails its own tests
+or a mutant cannot be applied.
 """
 import argparse
 import hashlib
@@ -57,6 +65,7 @@ LOGDIR = os.path.join(ROOT, "build", "mutate")
 REPORT = os.path.join(LOGDIR, "report.txt")
 RESULTS = os.path.join(LOGDIR, "results.json")
 BASELINE = os.path.join(LOGDIR, "baseline.json")
+EQUIV_DOC = os.path.join(ROOT, "docs", "mutation.md")
 MUTANTS = os.path.join(ROOT, "tools", "mutants.txt")
 # A test that takes this many times its unmutated time (and at least
 # TIMEOUT_MIN_S) has met a mutant that makes it hang: killed.
@@ -235,12 +244,33 @@ class Progress:
             sys.stderr.flush()
 
 
-def score_table(results, before):
-    """Lines: per folder, killed / mutants before (previous run) and now."""
+def equivalent_ids(path=EQUIV_DOC):
+    """The mutants argued equivalent: the first column of the table under
+    "## Equivalent mutants" in docs/mutation.md (one place for the list and
+    the arguments)."""
+    ids = set()
+    if not os.path.exists(path):
+        return ids
+    inside = False
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("## "):
+                inside = line.strip() == "## Equivalent mutants"
+            elif inside:
+                m = re.match(r"^\| ([a-z0-9]+-[a-z0-9]+) ", line)
+                if m:
+                    ids.add(m.group(1))
+    return ids
+
+
+def score_table(results, before, equivalent=frozenset()):
+    """Lines: per folder, killed / non-equivalent mutants before (previous
+    run) and now."""
     folders = sorted({folder_of(r["file"]) for r in results})
     lines = ["%-22s %-14s %-14s %s" % ("folder", "before", "now", "modules")]
 
     def frac(rs):
+        rs = [r for r in rs if r["id"] not in equivalent]
         k = sum(1 for r in rs if r["how"] == "KILLED")
         return "%d/%d" % (k, len(rs)) if rs else "-"
 
@@ -482,7 +512,10 @@ def main(argv):
     cpu_s = (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
 
     stillborn = [r for r in results if r["by"] == "(does not build)"]
+    equivalent = equivalent_ids() & {r["id"] for r in results}
     survivors = [r for r in results if r["how"] != "KILLED"]
+    real = len(results) - len(equivalent)
+    killed_real = sum(1 for r in results if r["how"] == "KILLED" and r["id"] not in equivalent)
     untested = [r for r in survivors if r["by"] == "(no test)"]
     folder_mapped = sorted({r["file"] for r in results if r["map"] == "folder"})
     lines = ["mutation score: %d killed / %d mutants on %d modules (%d of them by not building), "
@@ -492,13 +525,16 @@ def main(argv):
              "time: %s wall with %d workers, %s CPU (user + system of every build and test; "
              "on an idle %d-core machine about %s)"
              % (fmt_s(time.time() - start), jobs, fmt_s(cpu_s), os.cpu_count() or 1,
-                fmt_s(cpu_s / max(1, min(jobs, os.cpu_count() or 1))))]
-    lines += score_table(results, before)
+                fmt_s(cpu_s / max(1, min(jobs, os.cpu_count() or 1)))),
+             "score: %d of %d non-equivalent mutants killed (%.1f %%); %d argued equivalent in docs/mutation.md"
+             % (killed_real, real, 100.0 * killed_real / max(1, real), len(equivalent))]
+    lines += score_table(results, before, equivalent)
     if folder_mapped:
         lines.append("modules without a test named after them (met the tests of their folder): "
                      + " ".join(folder_mapped))
-    lines += ["  survivor %s %s: %s => %s%s" % (r["id"], r["file"], r["old"], r["new"],
-                                                "  " + r["by"] if r["by"] else "")
+    lines += ["  survivor %s %s: %s => %s%s%s" % (r["id"], r["file"], r["old"], r["new"],
+                                                  "  " + r["by"] if r["by"] else "",
+                                                  "  (argued equivalent)" if r["id"] in equivalent else "")
               for r in survivors]
     print("\n".join(lines))
     with open(REPORT, "w") as f:
