@@ -14,3 +14,8 @@ $(foreach v,$(FD_MAP_VARIANTS),\
 #   build/<v>/tests/firmware/model/test_squeal_sigma_distance  |g| / sigma and its cap, exact values
 $(foreach v,$(FD_MAP_VARIANTS),\
   $(eval $(call fd_map_rules,$(v),firmware/model,test_squeal_sigma_distance,,tests/support/sq_num.o)))
+#   build/test/tests/host-sim/oscsim/test_oscsim_map_tally  the map's sums against its own points
+build/test/tests/host-sim/oscsim/test_oscsim_map_tally: build/test/app/tests/host-sim/oscsim/test_oscsim_map_tally.o build/test/liboscsim.a build/test/app/host-sim/sim_num.o build/test/libfirmware.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
+TEST_PROGS += build/test/tests/host-sim/oscsim/test_oscsim_map_tally
