@@ -368,12 +368,52 @@ def run_mutant(tree, m, how_map, tests, base_s, make_jobs):
                 map=how_map, secs=round(time.time() - t0, 1))
 
 
+def summary(results, before, timing):
+    """The report's lines: the score, per folder before and now, the
+    survivors."""
+    killed = sum(1 for r in results if r["how"] == "KILLED")
+    stillborn = [r for r in results if r["by"] == "(does not build)"]
+    equivalent = equivalent_ids() & {r["id"] for r in results}
+    survivors = [r for r in results if r["how"] != "KILLED"]
+    real = len(results) - len(equivalent)
+    killed_real = sum(1 for r in results if r["how"] == "KILLED" and r["id"] not in equivalent)
+    untested = [r for r in survivors if r["by"] == "(no test)"]
+    folder_mapped = sorted({r["file"] for r in results if r["map"] == "folder"})
+    lines = ["mutation score: %d killed / %d mutants on %d modules (%d of them by not building), "
+             "%d survived (%d with no test), %s"
+             % (killed, len(results), len({r["file"] for r in results}), len(stillborn),
+                len(survivors), len(untested), timing[0]),
+             timing[1],
+             "score: %d of %d non-equivalent mutants killed (%.1f %%); %d argued equivalent in docs/mutation.md"
+             % (killed_real, real, 100.0 * killed_real / max(1, real), len(equivalent))]
+    logic = [m for m in test_map.modules() if m not in test_map.NO_LOGIC]
+    per = {}
+    for r in results:
+        per[r["file"]] = per.get(r["file"], 0) + 1
+    covered = [m for m in logic if per.get(m, 0) >= 3]
+    lines.append("modules with logic that have at least 3 mutants here: %d of %d (%.0f %%)%s"
+                 % (len(covered), len(logic), 100.0 * len(covered) / max(1, len(logic)),
+                    "; not: " + " ".join(sorted(set(logic) - set(covered)))
+                    if 0 < len(logic) - len(covered) <= 12 else ""))
+    lines += score_table(results, before, equivalent)
+    if folder_mapped:
+        lines.append("modules without a test named after them (met the tests of their folder): "
+                     + " ".join(folder_mapped))
+    lines += ["  survivor %s %s: %s => %s%s%s" % (r["id"], r["file"], r["old"], r["new"],
+                                                  "  " + r["by"] if r["by"] else "",
+                                                  "  (argued equivalent)" if r["id"] in equivalent else "")
+              for r in survivors]
+    return lines
+
+
 def main(argv):
     ap = argparse.ArgumentParser(prog="tools/mutate.py", description=__doc__.split("\n\n")[0],
                                  epilog=__doc__.split("\n\n", 1)[1],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("ids", nargs="*", metavar="ID", help="run only these mutants")
     ap.add_argument("--list", action="store_true", help="print the mutants and their tests, run nothing")
+    ap.add_argument("--report", action="store_true",
+                    help="print the score of the last results of every mutant (build/mutate/results.json), run nothing")
     ap.add_argument("--folder", metavar="DIR", help="only the mutants of modules under DIR")
     ap.add_argument("--before", metavar="JSON", default=RESULTS,
                     help="the results to compare with (default: the previous run's, %(default)s)")
@@ -397,6 +437,25 @@ def main(argv):
     if errors:
         print("\n".join(errors))
         return 2
+    if args.report:
+        # the last result of every mutant of today's list (runs of a few
+        # IDs add to it), nothing run
+        last = {}
+        if os.path.exists(RESULTS):
+            with open(RESULTS, encoding="utf-8") as f:
+                last = {r["id"]: r for r in json.load(f)}
+        have = [last[m["id"]] for m in mutants if m["id"] in last
+                and (last[m["id"]]["old"], last[m["id"]]["new"]) == (m["old"], m["new"])]
+        missing = [m["id"] for m in mutants if m["id"] not in {r["id"] for r in have}]
+        before = {}
+        if args.before != RESULTS and os.path.exists(args.before):
+            with open(args.before, encoding="utf-8") as f:
+                before = {r["id"]: r for r in json.load(f)}
+        lines = summary(have, before, ("-", "time: (the last results of %d mutants, %d not run yet%s)"
+                                       % (len(have), len(missing),
+                                          ": " + " ".join(missing) if 0 < len(missing) <= 20 else "")))
+        print("\n".join(lines))
+        return 0
     if args.list:
         for m in mutants:
             how, tests = plan[m["file"]]
@@ -511,31 +570,12 @@ def main(argv):
     cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu_s = (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
 
-    stillborn = [r for r in results if r["by"] == "(does not build)"]
-    equivalent = equivalent_ids() & {r["id"] for r in results}
-    survivors = [r for r in results if r["how"] != "KILLED"]
-    real = len(results) - len(equivalent)
-    killed_real = sum(1 for r in results if r["how"] == "KILLED" and r["id"] not in equivalent)
-    untested = [r for r in survivors if r["by"] == "(no test)"]
-    folder_mapped = sorted({r["file"] for r in results if r["map"] == "folder"})
-    lines = ["mutation score: %d killed / %d mutants on %d modules (%d of them by not building), "
-             "%d survived (%d with no test), %s"
-             % (killed, len(results), len({r["file"] for r in results}), len(stillborn),
-                len(survivors), len(untested), fmt_s(time.time() - start)),
-             "time: %s wall with %d workers, %s CPU (user + system of every build and test; "
-             "on an idle %d-core machine about %s)"
-             % (fmt_s(time.time() - start), jobs, fmt_s(cpu_s), os.cpu_count() or 1,
-                fmt_s(cpu_s / max(1, min(jobs, os.cpu_count() or 1)))),
-             "score: %d of %d non-equivalent mutants killed (%.1f %%); %d argued equivalent in docs/mutation.md"
-             % (killed_real, real, 100.0 * killed_real / max(1, real), len(equivalent))]
-    lines += score_table(results, before, equivalent)
-    if folder_mapped:
-        lines.append("modules without a test named after them (met the tests of their folder): "
-                     + " ".join(folder_mapped))
-    lines += ["  survivor %s %s: %s => %s%s%s" % (r["id"], r["file"], r["old"], r["new"],
-                                                  "  " + r["by"] if r["by"] else "",
-                                                  "  (argued equivalent)" if r["id"] in equivalent else "")
-              for r in survivors]
+    timing = (fmt_s(time.time() - start),
+              "time: %s wall with %d workers, %s CPU (user + system of every build and test; "
+              "on an idle %d-core machine about %s)"
+              % (fmt_s(time.time() - start), jobs, fmt_s(cpu_s), os.cpu_count() or 1,
+                 fmt_s(cpu_s / max(1, min(jobs, os.cpu_count() or 1)))))
+    lines = summary(results, before, timing)
     print("\n".join(lines))
     with open(REPORT, "w") as f:
         for r in results:
