@@ -51,6 +51,7 @@ import queue
 import re
 import resource
 import shutil
+import signal
 import subprocess
 import sys
 import threading
@@ -423,6 +424,8 @@ def main(argv):
                     help="the results to compare with (default: the previous run's, %(default)s)")
     ap.add_argument("-j", "--jobs", type=int, default=min(2, os.cpu_count() or 1),
                     help="mutants at once, each in its own scratch tree (default %(default)s)")
+    ap.add_argument("--cheap-first", action="store_true",
+                    help="start the quickest mutants first (the default starts the longest: the workers end together)")
     ap.add_argument("--fresh-baseline", action="store_true",
                     help="run the unmutated tree's tests even when the sources are unchanged")
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per mutant on a terminal too")
@@ -529,7 +532,7 @@ def main(argv):
     expect = {m["id"]: sum(base_s[p] for _, p in order[m["id"]][:1 if previous.get(m["id"], {}).get("how") == "KILLED" else None])
               for m in mutants}
     work = queue.Queue()
-    for m in sorted(mutants, key=lambda m: -expect[m["id"]]):
+    for m in sorted(mutants, key=lambda m: expect[m["id"]] if args.cheap_first else -expect[m["id"]]):
         work.put(m)
     lock = threading.Lock()
     results = {}
@@ -538,7 +541,7 @@ def main(argv):
     busy = {}
 
     def worker(tree):
-        while True:
+        while not stop:
             try:
                 m = work.get_nowait()
             except queue.Empty:
@@ -550,6 +553,7 @@ def main(argv):
             with lock:
                 del busy[tree]
                 results[m["id"]] = r
+                save_results(previous, results.values())
                 count["killed" if r["how"] == "KILLED" else "survived"] += 1
                 if r["how"] != "KILLED":
                     prog_bar.clear()
@@ -560,13 +564,25 @@ def main(argv):
                 sys.stdout.flush()
                 prog_bar.show(len(results), count["killed"], count["survived"], " ".join(sorted(busy.values())))
 
+    stop = []
+    signal.signal(signal.SIGTERM, interrupted)
     threads = [threading.Thread(target=worker, args=(t,)) for t in trees]
     for t in threads:
         t.start()
-    for t in threads:
-        t.join()
+    try:
+        for t in threads:
+            while t.is_alive():
+                t.join(0.5)
+    except KeyboardInterrupt:
+        # the mutants under way end (their files are put back); the
+        # results so far are kept in build/mutate/results.json
+        stop.append(True)
+        prog_bar.clear()
+        print("interrupted: finishing the %d mutants under way" % len(busy))
+        for t in threads:
+            t.join()
     prog_bar.clear()
-    results = [results[m["id"]] for m in mutants]
+    results = [results[m["id"]] for m in mutants if m["id"] in results]
     killed = count["killed"]
     # leave the scratch builds matching the sources again
     for tree in trees:
@@ -585,10 +601,22 @@ def main(argv):
         for r in results:
             f.write("%s %s %s: %s => %s %s\n" % (r["how"], r["id"], r["file"], r["old"], r["new"], r["by"]))
         f.write("\n".join(lines) + "\n")
-    keep = dict(previous, **{r["id"]: r for r in results})  # the next run's "before"
-    with open(RESULTS, "w", encoding="utf-8") as f:
-        json.dump(sorted(keep.values(), key=lambda r: r["id"]), f, indent=0)
+    save_results(previous, results)
     return 0
+
+
+def interrupted(signum, frame):
+    raise KeyboardInterrupt
+
+
+def save_results(previous, results):
+    """build/mutate/results.json: the last result of every mutant (the
+    next run's "before" and its order), written after each mutant."""
+    keep = dict(previous, **{r["id"]: r for r in results})
+    tmp = RESULTS + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        json.dump(sorted(keep.values(), key=lambda r: r["id"]), f, indent=0)
+    os.replace(tmp, RESULTS)
 
 
 if __name__ == "__main__":
