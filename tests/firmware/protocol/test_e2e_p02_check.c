@@ -25,17 +25,24 @@
 #include "e2e_p02.h"
 #include "sq_status.h"
 
+/* one byte into the bitwise CRC-8H2F register */
+static uint32_t ref_byte(uint32_t c, uint8_t byte)
+{
+	c ^= byte;
+	for (int k = 0; k < 8; k++) {
+		c = ((c & 0x80U) != 0U) ? (((c << 1) ^ 0x2FU) & 0xFFU) : ((c << 1) & 0xFFU);
+	}
+	return c;
+}
+
 static uint8_t ref_crc8h2f(const uint8_t *d, size_t n, uint8_t id)
 {
 	uint32_t c = 0xFFU;
 
-	for (size_t i = 0U; i <= n; i++) {
-		c ^= (i < n) ? d[i] : id;
-		for (int k = 0; k < 8; k++) {
-			c = ((c & 0x80U) != 0U) ? (((c << 1) ^ 0x2FU) & 0xFFU) : ((c << 1) & 0xFFU);
-		}
+	for (size_t i = 0U; i < n; i++) {
+		c = ref_byte(c, d[i]);
 	}
-	return (uint8_t)(c ^ 0xFFU);
+	return (uint8_t)(ref_byte(c, id) ^ 0xFFU);
 }
 
 static e2e_p02_config_t config(uint8_t len, uint8_t max_delta)
@@ -67,10 +74,7 @@ static void test_reference_check_value(void **state)
 
 	(void)state;
 	for (size_t i = 0U; i < 9U; i++) {
-		c ^= s[i];
-		for (int k = 0; k < 8; k++) {
-			c = ((c & 0x80U) != 0U) ? (((c << 1) ^ 0x2FU) & 0xFFU) : ((c << 1) & 0xFFU);
-		}
+		c = ref_byte(c, s[i]);
 	}
 	assert_int_equal(c ^ 0xFFU, 0xDFU);
 	assert_int_equal(crc8_h2f(s, 9U), 0xDFU);
