@@ -19,3 +19,8 @@ build/test/tests/host-sim/oscsim/test_oscsim_map_tally: build/test/app/tests/hos
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
 TEST_PROGS += build/test/tests/host-sim/oscsim/test_oscsim_map_tally
+#   build/test/tests/hal/linux/test_hal_linux_selftest  faults accumulate, no self-test on Linux
+build/test/tests/hal/linux/test_hal_linux_selftest: build/test/app/tests/hal/linux/test_hal_linux_selftest.o build/test/app/tests/support/test_contract.o build/test/libhal_linux.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka
+TEST_PROGS += build/test/tests/hal/linux/test_hal_linux_selftest
