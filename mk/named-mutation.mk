@@ -24,3 +24,25 @@ build/test/tests/hal/linux/test_hal_linux_selftest: build/test/app/tests/hal/lin
 	@mkdir -p $(@D)
 	$(CC) $(OPT_test) -o $@ $^ -lcmocka
 TEST_PROGS += build/test/tests/hal/linux/test_hal_linux_selftest
+#   build/test/tests/host-sim/test_plant_scenario_rows  a negative force refused, a row's time gives its values
+build/test/tests/host-sim/test_plant_scenario_rows: build/test/app/tests/host-sim/test_plant_scenario_rows.o build/test/app/host-sim/plant_scenario.o
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
+TEST_PROGS += build/test/tests/host-sim/test_plant_scenario_rows
+#   build/test/tests/firmware/model/test_sq_mathf_clamp  sq_expf's clamp to [-87, 88] (float build only)
+build/test/tests/firmware/model/test_sq_mathf_clamp: build/test/app/tests/firmware/model/test_sq_mathf_clamp.o build/test/libfirmware.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka -lm
+TEST_PROGS += build/test/tests/firmware/model/test_sq_mathf_clamp
+#   build/test/tests/hal/stm32g4/test_fdcan_timing_bounds  the rates' bounds (pure arithmetic)
+build/test/tests/hal/stm32g4/test_fdcan_timing_bounds: tests/hal/stm32g4/test_fdcan_timing_bounds.c \
+		hal/stm32g4/fdcan_timing.c hal/stm32g4/fdcan.h
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -O1 -g $(SAN) $(FW_INC) -Ihal/stm32g4 -Ihal/stm32f4 -o $@ tests/hal/stm32g4/test_fdcan_timing_bounds.c \
+		hal/stm32g4/fdcan_timing.c -lcmocka
+TEST_PROGS += build/test/tests/hal/stm32g4/test_fdcan_timing_bounds
+#   build/test/tests/host-sim/test_candump_hal_error  an error frame's identifier masked
+build/test/tests/host-sim/test_candump_hal_error: build/test/app/tests/host-sim/test_candump_hal_error.o build/test/app/host-sim/candump_log.o build/test/app/host-sim/candump_hal.o
+	@mkdir -p $(@D)
+	$(CC) $(OPT_test) -o $@ $^ -lcmocka
+TEST_PROGS += build/test/tests/host-sim/test_candump_hal_error
