@@ -51,3 +51,11 @@ build/test/tests/hal/stm32f4/test_bxcan_bitrate: tests/hal/stm32f4/test_bxcan_bi
 	@mkdir -p $(@D)
 	$(CC) $(BXCAN_SIM_CFLAGS) -o $@ tests/hal/stm32f4/test_bxcan_bitrate.c $(BXCAN_SIM_SRCS) -lcmocka
 TEST_PROGS += build/test/tests/hal/stm32f4/test_bxcan_bitrate
+#   build/<v>/tests/host-sim/test_cli_args_bounds  numeric options at both ends
+define named_mutation_cli_bounds
+build/$(1)/tests/host-sim/test_cli_args_bounds: build/$(1)/app/tests/host-sim/test_cli_args_bounds.o build/$(1)/app/$(CLI_ARGS_SRC:.c=.o)
+	@mkdir -p $$(@D)
+	$$(CC) $$(OPT_$(1)) -o $$@ $$^ -lcmocka
+TEST_PROGS += build/$(1)/tests/host-sim/test_cli_args_bounds
+endef
+$(foreach v,test test-fixed,$(eval $(call named_mutation_cli_bounds,$(v))))
