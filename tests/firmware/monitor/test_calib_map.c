@@ -313,6 +313,27 @@ static void test_two_corners_one_position_refused(void **state)
 	assert_int_equal(calib_map_validate(&cal), SQ_EINVAL);
 }
 
+/* a rolling counter of 4 bits counting 0..11: a jump of 11 is the largest */
+static void test_counter_delta_bounds(void **state)
+{
+	calib_t cal;
+	calib_input_t *in = &cal.inputs[0];
+	const char *why = NULL;
+
+	(void)state;
+	two_input_map(&cal);
+	in->protection = (uint8_t)CALIB_PROT_COUNTER;
+	in->counter = (can_signal_t){ 0U, 4U, CAN_SIGNAL_INTEL, 0U }; /* byte 0, clear of bits 16..31 */
+	in->counter_modulus = 12U;
+	in->max_delta_counter = 11U;
+	assert_int_equal(calib_input_check(in, &why), SQ_OK);
+	in->max_delta_counter = 12U;
+	assert_int_equal(calib_input_check(in, &why), SQ_EINVAL);
+	assert_string_equal(why, "max_delta_counter out of range (1 .. counter_modulus - 1)");
+	in->max_delta_counter = 0U;
+	assert_int_equal(calib_input_check(in, &why), SQ_EINVAL);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -322,6 +343,7 @@ int main(void)
 		cmocka_unit_test(test_a_valid_map_and_its_views),
 		cmocka_unit_test(test_period_bounds),
 		cmocka_unit_test(test_two_corners_one_position_refused),
+		cmocka_unit_test(test_counter_delta_bounds),
 		cmocka_unit_test(test_each_broken_rule_is_named_at_its_input_or_corner),
 	};
 
