@@ -59,3 +59,6 @@ build/$(1)/tests/host-sim/test_cli_args_bounds: build/$(1)/app/tests/host-sim/te
 TEST_PROGS += build/$(1)/tests/host-sim/test_cli_args_bounds
 endef
 $(foreach v,test test-fixed,$(eval $(call named_mutation_cli_bounds,$(v))))
+#   build/<v>/tests/hal/vbus/test_hal_vbus_can_rx  the receive queue's end, arrival time, rate bounds
+$(foreach v,$(HAL_VBUS_TEST_VARIANTS),$(eval $(call hal_vbus_test_rules,$(v),tests/hal/vbus/test_hal_vbus_can_rx)))
+TEST_PROGS += $(foreach v,$(HAL_VBUS_TEST_VARIANTS),build/$(v)/tests/hal/vbus/test_hal_vbus_can_rx)
