@@ -62,3 +62,5 @@ $(foreach v,test test-fixed,$(eval $(call named_mutation_cli_bounds,$(v))))
 #   build/<v>/tests/hal/vbus/test_hal_vbus_can_rx  the receive queue's end, arrival time, rate bounds
 $(foreach v,$(HAL_VBUS_TEST_VARIANTS),$(eval $(call hal_vbus_test_rules,$(v),tests/hal/vbus/test_hal_vbus_can_rx)))
 TEST_PROGS += $(foreach v,$(HAL_VBUS_TEST_VARIANTS),build/$(v)/tests/hal/vbus/test_hal_vbus_can_rx)
+#   tests/tools/test_dbc_tolerant_empty.py  a DBC file whose messages all go is refused
+TEST_PROGS += tests/tools/test_dbc_tolerant_empty.py
