@@ -13,6 +13,8 @@
  *                          range, never "not a whole multiple"
  *   an input's length      1..32 bits: 32 taken, 33 refused
  *   data_id_list           16 bytes 0..255: 0xFF taken, 0x100 refused
+ *   a decimal (factor)     17 significant digits taken, 18 refused
+ *   an input's id          extended: 0x1FFFFFFF taken, 0x20000000 refused
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -78,18 +80,21 @@ static void test_flat_scaled_bounds(void **state)
 	expect_error("speed_max_radps = 655.355\n", "b.cal:1: speed_max_radps = 655.355 is out of range");
 }
 
-/* A two-input map: a wheel speed of LENGTH bits, a P02 pressure with the
- * data ID list's first byte FIRST_ID (the other 15 are 0x11..0xFF). */
-static void map_text(char *buf, size_t len, unsigned length, const char *first_id)
+/* A two-input map: a wheel speed of LENGTH bits with FACTOR on the
+ * identifier WS_ID (line 3: "id = ...", with "extended = yes" where it
+ * needs one), a P02 pressure with the data ID list's first byte FIRST_ID
+ * (the other 15 are 0x22..0xFF). */
+static void map_text_of(char *buf, size_t len, unsigned length, const char *first_id,
+			const char *factor, const char *ws_id)
 {
 	snprintf(buf, len,
 		 "mass_kg = 1.0\n"                 /* 1 */
 		 "[input WS]\n"                    /* 2 */
-		 "id = 0x1A0\n"                    /* 3 */
+		 "%s\n"                            /* 3 */
 		 "start_bit = 0\n"                 /* 4 */
 		 "length = %u\n"                   /* 5 */
 		 "byte_order = intel\n"            /* 6 */
-		 "factor = 0.01\n"                 /* 7 */
+		 "factor = %s\n"                   /* 7 */
 		 "unit = km/h\n"                   /* 8 */
 		 "period_ms = 10\n"                /* 9 */
 		 "max = 300\n"                     /* 10 */
@@ -111,7 +116,12 @@ static void map_text(char *buf, size_t len, unsigned length, const char *first_i
 		 "speed = WS\n"
 		 "force = PR\n"
 		 "piston_area_mm2 = 2290\n",
-		 length, first_id);
+		 ws_id, length, factor, first_id);
+}
+
+static void map_text(char *buf, size_t len, unsigned length, const char *first_id)
+{
+	map_text_of(buf, len, length, first_id, "0.01", "id = 0x1A0");
 }
 
 static void test_signal_length_bounds(void **state)
@@ -144,6 +154,21 @@ static void test_data_id_list_bounds(void **state)
 	expect_error(text, "b.cal:21: [input PR] data_id_list: 16 byte values 0..255");
 }
 
+static void test_decimal_digits_and_id_bounds(void **state)
+{
+	char text[2048];
+
+	(void)state;
+	map_text_of(text, sizeof(text), 15U, "0x11", "0.12345678901234567", "id = 0x1A0");
+	expect_ok(text);
+	map_text_of(text, sizeof(text), 15U, "0x11", "0.123456789012345678", "id = 0x1A0");
+	expect_error(text, "b.cal:7: [input WS] factor needs a decimal number (at most 17 significant digits");
+	map_text_of(text, sizeof(text), 15U, "0x11", "0.01", "id = 0x1FFFFFFF\nextended = yes");
+	expect_ok(text);
+	map_text_of(text, sizeof(text), 15U, "0x11", "0.01", "id = 0x20000000\nextended = yes");
+	expect_error(text, "b.cal:3: [input WS] id");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -151,6 +176,7 @@ int main(void)
 		cmocka_unit_test(test_flat_scaled_bounds),
 		cmocka_unit_test(test_signal_length_bounds),
 		cmocka_unit_test(test_data_id_list_bounds),
+		cmocka_unit_test(test_decimal_digits_and_id_bounds),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
