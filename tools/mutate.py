@@ -5,11 +5,14 @@
 Each mutant in tools/mutants.txt is one small source change (a flipped
 comparison, an off-by-one bound, a changed constant, a deleted statement, a
 changed operator; in Python also a changed default or a swapped branch) in
-a module of firmware/, hal/, host-sim/ or tools/. The tree is copied once to
-a scratch directory (build/mutate/tree: the files git knows, build/
-excluded; its builds are kept between runs); for each mutant the harness
-applies the change there, rebuilds and runs the tests of the mutated module,
-fastest first, and puts the file back.
+a module of firmware/, hal/, host-sim/ or tools/. The tree is copied to
+scratch directories (build/mutate/tree, tree-1, ...: the files git knows,
+build/ excluded; their builds are kept between runs), one per worker (-j,
+default 2: the cores); each worker applies one mutant in its tree,
+rebuilds and runs the tests of the mutated module, and puts the file back.
+The test that killed a mutant last time runs first, then the others,
+fastest first; the first failure ends the mutant. A Python tool's mutant
+builds nothing.
 
 Which tests belong to a module follows from where they live
 (tools/test_map.py, tests/README.md): tests/DIR/test_x*, check_x*, conf_x*
@@ -20,8 +23,12 @@ instead, or where that has none every test under the folder above; marked
 not pass/fail and are left out. A C test tests/P/NAME.c is the programs of
 TEST_PROGS built from it (build/test/tests/P/NAME, build/test-fixed/...); a
 .py or .sh test in TEST_PROGS is run after `make <test>` has built what it
-depends on. A mutant is killed when a test fails, times out or does not
-build (counted apart), survives otherwise.
+depends on. A mutant is killed when a test fails, takes more than 4 times
+its unmutated time (at least 10 s: it hangs) or does not build (counted
+apart); it survives otherwise. The unmutated tree's tests run first (the
+baseline; kept in build/mutate/baseline.json while the sources are
+unchanged). Mutants argued equivalent in docs/mutation.md (its table
+"Equivalent mutants") are left out of the score's denominator.
 
   tools/mutate.py                 all mutants; report in build/mutate/report.txt
   tools/mutate.py ID...           only these (e.g. e2e-1 calib-3)
@@ -31,17 +38,23 @@ build (counted apart), survives otherwise.
 On a terminal a progress line shows done/total and the time left; with
 -v (or when not on a terminal, nothing but) one line per mutant and the
 summary: the score per folder, before (the previous run, kept in
-build/mutate/results.json) and now, and every survivor. A figure, not a
-pass/fail test: exit 0 unless the unmutated tree fails its own tests or a
-mutant cannot be applied.
+build/mutate/results.json, or --before FILE) and now, every survivor, and
+the wall and CPU time (CPU / cores: the time on an idle machine). A figure,
+not a pass/fail test: exit 0 unless the unmutated tree fails its own tests
+or a mutant cannot be applied.
 """
 import argparse
+import hashlib
 import json
 import os
+import queue
 import re
+import resource
 import shutil
+import signal
 import subprocess
 import sys
+import threading
 import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
@@ -52,11 +65,16 @@ SCRATCH = os.path.join(ROOT, "build", "mutate", "tree")
 LOGDIR = os.path.join(ROOT, "build", "mutate")
 REPORT = os.path.join(LOGDIR, "report.txt")
 RESULTS = os.path.join(LOGDIR, "results.json")
+BASELINE = os.path.join(LOGDIR, "baseline.json")
+EQUIV_DOC = os.path.join(ROOT, "docs", "mutation.md")
+# what the harness reads itself, no test of a mutated module: a change here
+# keeps the baseline
+NOT_FINGERPRINTED = ("tools/mutants.txt", "docs/mutation.md", "tools/mutate.py")
 MUTANTS = os.path.join(ROOT, "tools", "mutants.txt")
 # A test that takes this many times its unmutated time (and at least
 # TIMEOUT_MIN_S) has met a mutant that makes it hang: killed.
-TIMEOUT_FACTOR = 10
-TIMEOUT_MIN_S = 60
+TIMEOUT_FACTOR = 4
+TIMEOUT_MIN_S = 10
 NOT_PASS_FAIL = ("fuzz", "bench")
 ENV = dict(os.environ, PYTHONDONTWRITEBYTECODE="1", CI="", MAKEFLAGS="")
 
@@ -147,41 +165,50 @@ def check_mutants(mutants, root=ROOT):
     return errors
 
 
-def copy_tree():
-    files = subprocess.run(["git", "ls-files", "-co", "--exclude-standard"], cwd=ROOT,
-                           check=True, stdout=subprocess.PIPE,
-                           universal_newlines=True).stdout.split("\n")
+def tree_files():
+    out = subprocess.run(["git", "ls-files", "-co", "--exclude-standard"], cwd=ROOT,
+                         check=True, stdout=subprocess.PIPE,
+                         universal_newlines=True).stdout.split("\n")
+    return [rel for rel in out if rel and not rel.startswith("build/")
+            and os.path.isfile(os.path.join(ROOT, rel))]
+
+
+def copy_tree(dst, files):
+    """Bring scratch tree dst up to date with the sources; returns a
+    fingerprint of their contents (the baseline is reused while it holds)."""
+    h = hashlib.sha1()
     for rel in files:
-        if not rel or rel.startswith("build/"):
-            continue
         src = os.path.join(ROOT, rel)
-        dst = os.path.join(SCRATCH, rel)
-        if not os.path.isfile(src):
-            continue
-        if os.path.exists(dst):
-            with open(src, "rb") as a, open(dst, "rb") as b:
-                if a.read() == b.read():
+        out = os.path.join(dst, rel)
+        with open(src, "rb") as a:
+            data = a.read()
+        if rel not in NOT_FINGERPRINTED:
+            h.update(rel.encode() + b"\0" + hashlib.sha1(data).digest())
+        if os.path.exists(out):
+            with open(out, "rb") as b:
+                if b.read() == data:
                     continue  # keep its time stamp: make need not rebuild it
-        os.makedirs(os.path.dirname(dst), exist_ok=True)
-        shutil.copy2(src, dst)
-        os.utime(dst)
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        shutil.copy2(src, out)
+        os.utime(out)
+    return h.hexdigest()
 
 
-def make(targets, log):
+def make(tree, targets, log, jobs):
     with open(log, "w") as f:
-        return subprocess.run(["nice", "make", "-j2", "--no-print-directory"] + targets,
-                              cwd=SCRATCH, env=ENV, stdout=f, stderr=subprocess.STDOUT).returncode
+        return subprocess.run(["nice", "make", "-j%d" % jobs, "--no-print-directory"] + targets,
+                              cwd=tree, env=ENV, stdout=f, stderr=subprocess.STDOUT).returncode
 
 
 RESULT_RE = re.compile(r"^RESULT: (\d+) passed, (\d+) failed", re.M)
 CMOCKA_FAILED_RE = re.compile(r"^\[  FAILED  \] \d+ test", re.M)
 
 
-def run_one(prog, timeout_s):
-    """(passed, seconds, why) of one test program in the scratch tree."""
+def run_one(tree, prog, timeout_s):
+    """(passed, seconds, why) of one test program in a scratch tree."""
     t0 = time.time()
     try:
-        p = subprocess.run(["nice", os.path.join(SCRATCH, prog)], cwd=SCRATCH, env=ENV,
+        p = subprocess.run(["nice", os.path.join(tree, prog)], cwd=tree, env=ENV,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            timeout=timeout_s)
     except subprocess.TimeoutExpired:
@@ -222,12 +249,33 @@ class Progress:
             sys.stderr.flush()
 
 
-def score_table(results, before):
-    """Lines: per folder, killed / mutants before (previous run) and now."""
+def equivalent_ids(path=EQUIV_DOC):
+    """The mutants argued equivalent: the first column of the table under
+    "## Equivalent mutants" in docs/mutation.md (one place for the list and
+    the arguments)."""
+    ids = set()
+    if not os.path.exists(path):
+        return ids
+    inside = False
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("## "):
+                inside = line.strip() == "## Equivalent mutants"
+            elif inside:
+                m = re.match(r"^\| ([a-z0-9]+-[a-z0-9]+) ", line)
+                if m:
+                    ids.add(m.group(1))
+    return ids
+
+
+def score_table(results, before, equivalent=frozenset()):
+    """Lines: per folder, killed / non-equivalent mutants before (previous
+    run) and now."""
     folders = sorted({folder_of(r["file"]) for r in results})
     lines = ["%-22s %-14s %-14s %s" % ("folder", "before", "now", "modules")]
 
     def frac(rs):
+        rs = [r for r in rs if r["id"] not in equivalent]
         k = sum(1 for r in rs if r["how"] == "KILLED")
         return "%d/%d" % (k, len(rs)) if rs else "-"
 
@@ -242,15 +290,144 @@ def score_table(results, before):
     return lines
 
 
+def baseline_times(fingerprint, needed, trees, tty, fresh):
+    """{program: seconds} of the unmutated tree's tests, or None when one
+    fails. Kept in build/mutate/baseline.json with the sources'
+    fingerprint: while the sources are unchanged the tests are not run
+    again (their builds are checked by make all the same)."""
+    cache = {}
+    if os.path.exists(BASELINE) and not fresh:
+        with open(BASELINE, encoding="utf-8") as f:
+            doc = json.load(f)
+        if doc.get("fingerprint") == fingerprint:
+            cache = doc.get("secs", {})
+    todo = [p for _, p in needed if p not in cache]
+    failing = []
+    lock = threading.Lock()
+    work = queue.Queue()
+    for p in todo:
+        work.put(p)
+
+    def worker(tree):
+        while True:
+            try:
+                prog = work.get_nowait()
+            except queue.Empty:
+                return
+            ok, secs, why = run_one(tree, prog, None)
+            with lock:
+                cache[prog] = secs
+                if not ok:
+                    failing.append("%s (%s)" % (prog, why))
+                if tty:
+                    sys.stderr.write("\r\033[Kbaseline: ran %d/%d %s" % (len(todo) - work.qsize(), len(todo), prog))
+
+    threads = [threading.Thread(target=worker, args=(t,)) for t in trees]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    if failing:
+        print("\nbaseline: fails on the unmutated tree, no score:\n  " + "\n  ".join(sorted(failing)))
+        return None
+    with open(BASELINE, "w", encoding="utf-8") as f:
+        json.dump({"fingerprint": fingerprint, "secs": cache}, f, indent=0)
+    return cache
+
+
+def run_mutant(tree, m, how_map, tests, base_s, make_jobs):
+    """Apply one mutant in a scratch tree, build and run its tests (in the
+    given order, stop at the first failure), put the file back."""
+    t0 = time.time()
+    path = os.path.join(tree, m["file"])
+    log = os.path.join(LOGDIR, "mutant-build-%s.log" % os.path.basename(tree))
+    with open(path, encoding="utf-8") as f:
+        orig = f.read()
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(orig.replace(m["old"], m["new"], 1))
+    how, by = "SURVIVED", ""
+    # a Python tool builds nothing: its tests run at once (the baseline
+    # built what they need)
+    python = m["file"].endswith(".py")
+    try:
+        # the first test (last time's killer, else the fastest) built
+        # alone: most mutants die there, and the others need not be linked
+        for group in (tests[:1], tests[1:]):
+            if not group or how == "KILLED":
+                continue
+            if not python and make(tree, sorted({mk for mk, _ in group}), log, make_jobs) != 0:
+                how, by = "KILLED", "(does not build)"
+                break
+            for _, prog in group:
+                limit = max(TIMEOUT_MIN_S, TIMEOUT_FACTOR * base_s[prog])
+                ok, _, why = run_one(tree, prog, limit)
+                if not ok:
+                    how, by = "KILLED", prog + (" (timeout)" if why == "timeout" else "")
+                    break
+    finally:
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(orig)
+        now = time.time()
+        os.utime(path, (now, now))
+    return dict(id=m["id"], file=m["file"], old=m["old"], new=m["new"], how=how, by=by,
+                map=how_map, secs=round(time.time() - t0, 1))
+
+
+def summary(results, before, timing):
+    """The report's lines: the score, per folder before and now, the
+    survivors."""
+    killed = sum(1 for r in results if r["how"] == "KILLED")
+    stillborn = [r for r in results if r["by"] == "(does not build)"]
+    equivalent = equivalent_ids() & {r["id"] for r in results}
+    survivors = [r for r in results if r["how"] != "KILLED"]
+    real = len(results) - len(equivalent)
+    killed_real = sum(1 for r in results if r["how"] == "KILLED" and r["id"] not in equivalent)
+    untested = [r for r in survivors if r["by"] == "(no test)"]
+    folder_mapped = sorted({r["file"] for r in results if r["map"] == "folder"})
+    lines = ["mutation score: %d killed / %d mutants on %d modules (%d of them by not building), "
+             "%d survived (%d with no test), %s"
+             % (killed, len(results), len({r["file"] for r in results}), len(stillborn),
+                len(survivors), len(untested), timing[0]),
+             timing[1],
+             "score: %d of %d non-equivalent mutants killed (%.1f %%); %d argued equivalent in docs/mutation.md"
+             % (killed_real, real, 100.0 * killed_real / max(1, real), len(equivalent))]
+    logic = [m for m in test_map.modules() if m not in test_map.NO_LOGIC]
+    per = {}
+    for r in results:
+        per[r["file"]] = per.get(r["file"], 0) + 1
+    covered = [m for m in logic if per.get(m, 0) >= 3]
+    lines.append("modules with logic that have at least 3 mutants here: %d of %d (%.0f %%)%s"
+                 % (len(covered), len(logic), 100.0 * len(covered) / max(1, len(logic)),
+                    "; not: " + " ".join(sorted(set(logic) - set(covered)))
+                    if 0 < len(logic) - len(covered) <= 12 else ""))
+    lines += score_table(results, before, equivalent)
+    if folder_mapped:
+        lines.append("modules without a test named after them (met the tests of their folder): "
+                     + " ".join(folder_mapped))
+    lines += ["  survivor %s %s: %s => %s%s%s" % (r["id"], r["file"], r["old"], r["new"],
+                                                  "  " + r["by"] if r["by"] else "",
+                                                  "  (argued equivalent)" if r["id"] in equivalent else "")
+              for r in survivors]
+    return lines
+
+
 def main(argv):
     ap = argparse.ArgumentParser(prog="tools/mutate.py", description=__doc__.split("\n\n")[0],
                                  epilog=__doc__.split("\n\n", 1)[1],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("ids", nargs="*", metavar="ID", help="run only these mutants")
     ap.add_argument("--list", action="store_true", help="print the mutants and their tests, run nothing")
+    ap.add_argument("--report", action="store_true",
+                    help="print the score of the last results of every mutant (build/mutate/results.json), run nothing")
     ap.add_argument("--folder", metavar="DIR", help="only the mutants of modules under DIR")
     ap.add_argument("--before", metavar="JSON", default=RESULTS,
                     help="the results to compare with (default: the previous run's, %(default)s)")
+    ap.add_argument("-j", "--jobs", type=int, default=min(2, os.cpu_count() or 1),
+                    help="mutants at once, each in its own scratch tree (default %(default)s)")
+    ap.add_argument("--cheap-first", action="store_true",
+                    help="start the quickest mutants first (the default starts the longest: the workers end together)")
+    ap.add_argument("--fresh-baseline", action="store_true",
+                    help="run the unmutated tree's tests even when the sources are unchanged")
     ap.add_argument("-v", "--verbose", action="store_true", help="one line per mutant on a terminal too")
     args = ap.parse_args(argv[1:])
 
@@ -267,6 +444,25 @@ def main(argv):
     if errors:
         print("\n".join(errors))
         return 2
+    if args.report:
+        # the last result of every mutant of today's list (runs of a few
+        # IDs add to it), nothing run
+        last = {}
+        if os.path.exists(RESULTS):
+            with open(RESULTS, encoding="utf-8") as f:
+                last = {r["id"]: r for r in json.load(f)}
+        have = [last[m["id"]] for m in mutants if m["id"] in last
+                and (last[m["id"]]["old"], last[m["id"]]["new"]) == (m["old"], m["new"])]
+        missing = [m["id"] for m in mutants if m["id"] not in {r["id"] for r in have}]
+        before = {}
+        if args.before != RESULTS and os.path.exists(args.before):
+            with open(args.before, encoding="utf-8") as f:
+                before = {r["id"]: r for r in json.load(f)}
+        lines = summary(have, before, ("-", "time: (the last results of %d mutants, %d not run yet%s)"
+                                       % (len(have), len(missing),
+                                          ": " + " ".join(missing) if 0 < len(missing) <= 20 else "")))
+        print("\n".join(lines))
+        return 0
     if args.list:
         for m in mutants:
             how, tests = plan[m["file"]]
@@ -285,27 +481,34 @@ def main(argv):
 
     tty = sys.stderr.isatty()
     say = print if (args.verbose or not tty) else (lambda *a, **k: None)
-    os.makedirs(SCRATCH, exist_ok=True)
     start = time.time()
-    copy_tree()
+    cpu0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    jobs = max(1, args.jobs)
+    make_jobs = max(1, (os.cpu_count() or 1) // jobs)
+    trees = [SCRATCH] + ["%s-%d" % (SCRATCH, k) for k in range(1, jobs)]
+    files = tree_files()
+    os.makedirs(SCRATCH, exist_ok=True)
+    fingerprint = copy_tree(SCRATCH, files)
     needed = sorted({t for m in mutants for t in plan[m["file"]][1]})
     targets = sorted({mk for mk, _ in needed})
     if tty:
         sys.stderr.write("baseline: building %d targets in %s ...\n" % (len(targets), SCRATCH))
-    if make(targets, os.path.join(LOGDIR, "baseline-build.log")) != 0:
+    if make(SCRATCH, targets, os.path.join(LOGDIR, "baseline-build.log"), os.cpu_count() or 1) != 0:
         print("baseline build failed: see build/mutate/baseline-build.log")
         return 1
-    base_s = {}
-    failing = []
-    for i, (_, prog) in enumerate(needed):
-        if tty:
-            sys.stderr.write("\r\033[Kbaseline: running %d/%d %s" % (i + 1, len(needed), prog))
-        ok, secs, why = run_one(prog, None)
-        if not ok:
-            failing.append("%s (%s)" % (prog, why))
-        base_s[prog] = secs
-    if failing:
-        print("\nbaseline: fails on the unmutated tree, no score:\n  " + "\n  ".join(failing))
+    for tree in trees[1:]:
+        # a second tree starts as a copy of the first, builds and all
+        # (time stamps kept), so that it need not be built again
+        if not os.path.isdir(os.path.join(tree, "build")):
+            shutil.rmtree(tree, ignore_errors=True)
+            shutil.copytree(SCRATCH, tree, symlinks=True)
+        copy_tree(tree, files)
+        if make(tree, targets, os.path.join(LOGDIR, "baseline-build-%s.log" % os.path.basename(tree)),
+                os.cpu_count() or 1) != 0:
+            print("baseline build failed in %s" % tree)
+            return 1
+    base_s = baseline_times(fingerprint, needed, trees, tty, args.fresh_baseline)
+    if base_s is None:
         return 1
     if tty:
         sys.stderr.write("\r\033[Kbaseline: %d tests pass (%s)\n" % (len(needed), fmt_s(time.time() - start)))
@@ -318,80 +521,102 @@ def main(argv):
     if os.path.exists(RESULTS):
         with open(RESULTS, encoding="utf-8") as f:
             previous = {r["id"]: r for r in json.load(f)}
-    results = []
+    order = {}
+    for m in mutants:
+        tests = sorted(plan[m["file"]][1], key=lambda t: base_s[t[1]])
+        # the test that killed it last time first: most mutants die there again
+        killer = previous.get(m["id"], {}).get("by", "").split(" ")[0]
+        tests.sort(key=lambda t: t[1] != killer)
+        order[m["id"]] = tests
+    # the longest first, so that the workers end together
+    expect = {m["id"]: sum(base_s[p] for _, p in order[m["id"]][:1 if previous.get(m["id"], {}).get("how") == "KILLED" else None])
+              for m in mutants}
+    work = queue.Queue()
+    for m in sorted(mutants, key=lambda m: expect[m["id"]] if args.cheap_first else -expect[m["id"]]):
+        work.put(m)
+    lock = threading.Lock()
+    results = {}
     prog_bar = Progress(len(mutants), tty)
-    killed = survived = 0
-    for n, m in enumerate(mutants):
-        prog_bar.show(n, killed, survived, m["id"])
-        t0 = time.time()
-        how_map, tests = plan[m["file"]]
-        tests = sorted(tests, key=lambda t: base_s[t[1]])
-        path = os.path.join(SCRATCH, m["file"])
-        with open(path, encoding="utf-8") as f:
-            orig = f.read()
-        with open(path, "w", encoding="utf-8") as f:
-            f.write(orig.replace(m["old"], m["new"], 1))
-        how, by = "SURVIVED", ""
-        try:
-            # the fastest test first, built alone: most mutants die there,
-            # and the others need not be linked
-            for group in (tests[:1], tests[1:]):
-                if not group or how == "KILLED":
-                    continue
-                if make(sorted({mk for mk, _ in group}), os.path.join(LOGDIR, "mutant-build.log")) != 0:
-                    how, by = "KILLED", "(does not build)"
-                    break
-                for _, prog in group:
-                    limit = max(TIMEOUT_MIN_S, TIMEOUT_FACTOR * base_s[prog])
-                    ok, _, why = run_one(prog, limit)
-                    if not ok:
-                        how, by = "KILLED", prog + (" (timeout)" if why == "timeout" else "")
-                        break
-        finally:
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(orig)
-            now = time.time()
-            os.utime(path, (now, now))
-        killed += how == "KILLED"
-        survived += how != "KILLED"
-        r = dict(id=m["id"], file=m["file"], old=m["old"], new=m["new"], how=how, by=by,
-                 map=how_map, secs=round(time.time() - t0, 1))
-        results.append(r)
-        if how != "KILLED":
-            prog_bar.clear()
-            if tty and not args.verbose:
-                print("SURVIVED %-10s %s: %s => %s %s" % (m["id"], m["file"], m["old"], m["new"], by))
-        say("%-8s %-10s %s: %s => %s%s  (%.0f s)" % (how, m["id"], m["file"], m["old"], m["new"],
-                                                     "  by " + by if by else "", r["secs"]))
-        sys.stdout.flush()
-    prog_bar.clear()
-    # leave the scratch build matching the sources again
-    make(targets, os.path.join(LOGDIR, "restore-build.log"))
+    count = {"killed": 0, "survived": 0}
+    busy = {}
 
-    stillborn = [r for r in results if r["by"] == "(does not build)"]
-    survivors = [r for r in results if r["how"] != "KILLED"]
-    untested = [r for r in survivors if r["by"] == "(no test)"]
-    folder_mapped = sorted({r["file"] for r in results if r["map"] == "folder"})
-    lines = ["mutation score: %d killed / %d mutants on %d modules (%d of them by not building), "
-             "%d survived (%d with no test), %s"
-             % (killed, len(results), len({r["file"] for r in results}), len(stillborn),
-                len(survivors), len(untested), fmt_s(time.time() - start))]
-    lines += score_table(results, before)
-    if folder_mapped:
-        lines.append("modules without a test named after them (met the tests of their folder): "
-                     + " ".join(folder_mapped))
-    lines += ["  survivor %s %s: %s => %s%s" % (r["id"], r["file"], r["old"], r["new"],
-                                                "  " + r["by"] if r["by"] else "")
-              for r in survivors]
+    def worker(tree):
+        while not stop:
+            try:
+                m = work.get_nowait()
+            except queue.Empty:
+                return
+            with lock:
+                busy[tree] = m["id"]
+                prog_bar.show(len(results), count["killed"], count["survived"], " ".join(sorted(busy.values())))
+            r = run_mutant(tree, m, plan[m["file"]][0], order[m["id"]], base_s, make_jobs)
+            with lock:
+                del busy[tree]
+                results[m["id"]] = r
+                save_results(previous, results.values())
+                count["killed" if r["how"] == "KILLED" else "survived"] += 1
+                if r["how"] != "KILLED":
+                    prog_bar.clear()
+                    if tty and not args.verbose:
+                        print("SURVIVED %-10s %s: %s => %s %s" % (m["id"], m["file"], m["old"], m["new"], r["by"]))
+                say("%-8s %-10s %s: %s => %s%s  (%.0f s)" % (r["how"], m["id"], m["file"], m["old"], m["new"],
+                                                             "  by " + r["by"] if r["by"] else "", r["secs"]))
+                sys.stdout.flush()
+                prog_bar.show(len(results), count["killed"], count["survived"], " ".join(sorted(busy.values())))
+
+    stop = []
+    signal.signal(signal.SIGTERM, interrupted)
+    threads = [threading.Thread(target=worker, args=(t,)) for t in trees]
+    for t in threads:
+        t.start()
+    try:
+        for t in threads:
+            while t.is_alive():
+                t.join(0.5)
+    except KeyboardInterrupt:
+        # the mutants under way end (their files are put back); the
+        # results so far are kept in build/mutate/results.json
+        stop.append(True)
+        prog_bar.clear()
+        print("interrupted: finishing the %d mutants under way" % len(busy))
+        for t in threads:
+            t.join()
+    prog_bar.clear()
+    results = [results[m["id"]] for m in mutants if m["id"] in results]
+    killed = count["killed"]
+    # leave the scratch builds matching the sources again
+    for tree in trees:
+        make(tree, targets, os.path.join(LOGDIR, "restore-build.log"), os.cpu_count() or 1)
+    cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu_s = (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
+
+    timing = (fmt_s(time.time() - start),
+              "time: %s wall with %d workers, %s CPU (user + system of every build and test; "
+              "on an idle %d-core machine about %s)"
+              % (fmt_s(time.time() - start), jobs, fmt_s(cpu_s), os.cpu_count() or 1,
+                 fmt_s(cpu_s / max(1, min(jobs, os.cpu_count() or 1)))))
+    lines = summary(results, before, timing)
     print("\n".join(lines))
     with open(REPORT, "w") as f:
         for r in results:
             f.write("%s %s %s: %s => %s %s\n" % (r["how"], r["id"], r["file"], r["old"], r["new"], r["by"]))
         f.write("\n".join(lines) + "\n")
-    keep = dict(previous, **{r["id"]: r for r in results})  # the next run's "before"
-    with open(RESULTS, "w", encoding="utf-8") as f:
-        json.dump(sorted(keep.values(), key=lambda r: r["id"]), f, indent=0)
+    save_results(previous, results)
     return 0
+
+
+def interrupted(signum, frame):
+    raise KeyboardInterrupt
+
+
+def save_results(previous, results):
+    """build/mutate/results.json: the last result of every mutant (the
+    next run's "before" and its order), written after each mutant."""
+    keep = dict(previous, **{r["id"]: r for r in results})
+    tmp = RESULTS + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        json.dump(sorted(keep.values(), key=lambda r: r["id"]), f, indent=0)
+    os.replace(tmp, RESULTS)
 
 
 if __name__ == "__main__":

@@ -82,6 +82,25 @@ static void test_physical_in_each_unit(void **state)
 	assert_true(fabs(plant_vehicle_physical(&cal, 3, 10.0, 1000.0) - 600.0 * mu_at_5) <= 1e-6);
 }
 
+/* The same inputs read in the other units (definitions: 1 mph = 0.44704
+ * m/s exactly, 1 psi = 6894.757293 Pa, NIST SP 811): 10 m/s = 22.369363
+ * mph; 9 MPa = 1305.3404 psi = 9000 kPa = 9 MPa; 14400 N = 14.4 kN. */
+static void test_physical_in_the_other_units(void **state)
+{
+	(void)state;
+	load();
+	cal.inputs[0].unit = (uint8_t)INPUT_UNIT_MPH;
+	assert_true(fabs(plant_vehicle_physical(&cal, 0, 10.0, 14400.0) - 10.0 / 0.44704) <= 1e-9);
+	cal.inputs[0].unit = (uint8_t)INPUT_UNIT_MPS;
+	assert_true(fabs(plant_vehicle_physical(&cal, 0, 10.0, 14400.0) - 10.0) <= 1e-12);
+	cal.inputs[2].unit = (uint8_t)INPUT_UNIT_PSI;
+	assert_true(fabs(plant_vehicle_physical(&cal, 2, 10.0, 14400.0) - 9e6 / 6894.757293) <= 1e-7 * 1305.34);
+	cal.inputs[2].unit = (uint8_t)INPUT_UNIT_KPA;
+	assert_true(fabs(plant_vehicle_physical(&cal, 2, 10.0, 14400.0) - 9000.0) <= 1e-9);
+	cal.inputs[2].unit = (uint8_t)INPUT_UNIT_MPA;
+	assert_true(fabs(plant_vehicle_physical(&cal, 2, 10.0, 14400.0) - 9.0) <= 1e-12);
+}
+
 static void test_pack(void **state)
 {
 	plant_vframe_t fr[CALIB_MAX_INPUTS];
@@ -124,4 +143,5 @@ static void test_pack(void **state)
 SQ_CMOCKA_MAIN(
 	cmocka_unit_test(test_frames_of_the_map),
 	cmocka_unit_test(test_physical_in_each_unit),
+	cmocka_unit_test(test_physical_in_the_other_units),
 	cmocka_unit_test(test_pack))

@@ -277,6 +277,63 @@ static void test_each_broken_rule_is_named_at_its_input_or_corner(void **state)
 	}
 }
 
+/* period 1..1000 ms at both ends; two corners never share a position */
+static void test_period_bounds(void **state)
+{
+	calib_t cal;
+	const char *why = NULL;
+
+	(void)state;
+	two_input_map(&cal);
+	cal.inputs[0].period_ms = 1000U;
+	assert_int_equal(calib_input_check(&cal.inputs[0], &why), SQ_OK);
+	assert_int_equal(calib_map_validate(&cal), SQ_OK);
+	cal.inputs[0].period_ms = 1001U;
+	assert_int_equal(calib_input_check(&cal.inputs[0], &why), SQ_EINVAL);
+	assert_string_equal(why, "period_ms 1..1000 and stale_cycles 1..100");
+	assert_int_equal(calib_map_validate(&cal), SQ_EINVAL);
+	cal.inputs[0].period_ms = 1U;
+	assert_int_equal(calib_input_check(&cal.inputs[0], &why), SQ_OK);
+	cal.inputs[0].period_ms = 0U;
+	assert_int_equal(calib_input_check(&cal.inputs[0], &why), SQ_EINVAL);
+}
+
+static void test_two_corners_one_position_refused(void **state)
+{
+	calib_t cal;
+
+	(void)state;
+	two_input_map(&cal);
+	cal.n_corners = 2U;
+	calib_corner_defaults(&cal, 1U, &cal.corners[1]);
+	cal.corners[1].speed_input = 0U;
+	cal.corners[1].force_input = 1U;
+	assert_int_equal(calib_map_validate(&cal), SQ_OK); /* FL and FR */
+	cal.corners[1].pos = cal.corners[0].pos;
+	assert_int_equal(calib_map_validate(&cal), SQ_EINVAL);
+}
+
+/* a rolling counter of 4 bits counting 0..11: a jump of 11 is the largest */
+static void test_counter_delta_bounds(void **state)
+{
+	calib_t cal;
+	calib_input_t *in = &cal.inputs[0];
+	const char *why = NULL;
+
+	(void)state;
+	two_input_map(&cal);
+	in->protection = (uint8_t)CALIB_PROT_COUNTER;
+	in->counter = (can_signal_t){ 0U, 4U, CAN_SIGNAL_INTEL, 0U }; /* byte 0, clear of bits 16..31 */
+	in->counter_modulus = 12U;
+	in->max_delta_counter = 11U;
+	assert_int_equal(calib_input_check(in, &why), SQ_OK);
+	in->max_delta_counter = 12U;
+	assert_int_equal(calib_input_check(in, &why), SQ_EINVAL);
+	assert_string_equal(why, "max_delta_counter out of range (1 .. counter_modulus - 1)");
+	in->max_delta_counter = 0U;
+	assert_int_equal(calib_input_check(in, &why), SQ_EINVAL);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -284,6 +341,9 @@ int main(void)
 		cmocka_unit_test(test_corner_defaults_follow_the_flat_keys_and_position),
 		cmocka_unit_test(test_needed_dlc_holds_every_bit_used),
 		cmocka_unit_test(test_a_valid_map_and_its_views),
+		cmocka_unit_test(test_period_bounds),
+		cmocka_unit_test(test_two_corners_one_position_refused),
+		cmocka_unit_test(test_counter_delta_bounds),
 		cmocka_unit_test(test_each_broken_rule_is_named_at_its_input_or_corner),
 	};
 
