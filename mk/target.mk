@@ -202,7 +202,7 @@ tests/system/target/bench-target.sh: build/stm32g474/squeal-monitor.elf build/be
 	build/tv-g4/model-vectors.elf
 # ... and one that divides by zero once it runs, to test the fault path
 $(eval $(call arm_config,stm32f4-faulttest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
-# ... one whose stack overflows on purpose (issue 14: fault handler on a broken stack)
+# ... one whose stack overflows on purpose (the fault handler on a broken stack)
 $(eval $(call arm_config,stm32f4-stacktest,stm32f4,float,-DSQ_TARGET_TEST -DSQ_TARGET_TEST_FAULT -DSQ_TARGET_TEST_STACK_OVERFLOW,$(FW_TARGET_SRCS) $(HAL_SRCS_stm32f4) $(HAL_TEST_SRCS),$(LDS_stm32f4)))
 tests/system/target/run-ecu-stack-overflow.sh: build/stm32f4-stacktest/squeal-monitor.elf
 tests/system/target/run-ecu-selftest.sh: build/stm32f4-ecutest/squeal-monitor.elf build/stm32f4-faulttest/squeal-monitor.elf

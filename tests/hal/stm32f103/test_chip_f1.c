@@ -2,7 +2,7 @@
 /*
  * STM32F103 specifics on the host (hal/stm32f103/chip_f1.c, the shared
  * iwdg.c and bxcan.c built for the F103's chip.h, its registers in arrays:
- * tests/support/regsim/f103/chip.h). Issue 14 / issue 10:
+ * tests/support/regsim/f103/chip.h). The bring-up and contract checks:
  *   - AFIO_MAPR: SWJ_CFG (bits 26:24) is write-only and reads back
  *     undefined (RM0008 9.4.2); the CAN remap must write it as 000 (full
  *     SWJ) whatever it reads, and keep the other remap bits;

@@ -3,7 +3,7 @@
  * The two-bus bxCAN driver (hal/stm32f4/bxcan.c) on the simulated registers
  * (tests/hal/stm32f4/bxcan_sim.c): filter banks split by CAN2SB, masked 11/29-bit
  * filters, silent mode for listen-only (nothing dominant on the wire), bus
- * separation, CAN2 needing CAN1's clock, the bit-rate change of issue 14
+ * separation, CAN2 needing CAN1's clock, the exact bit-rate check
  * (rate checked before any state is touched; restart aborts the mailboxes),
  * the silent-loopback self-test, and the contract handler for programming
  * errors. Expected values come from RM0090 and hal.h, never from the driver.
@@ -283,7 +283,7 @@ static uint32_t btr_rate(uint32_t btr)
 	return APB1_HZ % clocks == 0U ? APB1_HZ / clocks : 0U;
 }
 
-/* issue 14: an inexact rate (800 kbit/s at 42 MHz: 52.5 clocks per bit) is
+/* an inexact rate (800 kbit/s at 42 MHz: 52.5 clocks per bit) is
  * refused before anything changes: still running, same timing, RX and TX
  * working, nothing aborted. */
 static void test_inexact_rate_leaves_bus_running(void **state)

@@ -302,7 +302,7 @@ static void test_short_block_pads_and_bad_args(void **state)
 	assert_int_equal(hal_calib_read(big, sizeof(big)), SQ_EINVAL);
 }
 
-/* issue 14: an erase stalls the CPU longer than a watchdog period, so a
+/* an erase stalls the CPU longer than a watchdog period, so a
  * write is refused once the IWDG runs: SQ_EAGAIN, flash untouched (no
  * erase, no byte programmed), no storage fault; the stored block stays. */
 static void test_write_refused_while_watchdog_runs(void **state)

@@ -299,7 +299,7 @@ int squeal_main(volatile const bool *stop)
 	run(mons, CALIB_MAX_CORNERS, &calfd, overhead, &b);
 	report("BENCHFD4", &b, overhead, cal_ticks);
 #endif
-	/* the same with standard deviations calibrated (issue 12): every
+	/* the same with standard deviations calibrated: every
 	 * classification also propagates them (the corners inherit the flat
 	 * deviations: set them on each) */
 	sd_on(&cal.sd);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Issue 10, contracts on the ECU: a test image calls hal_can_send() with a
+# Contracts on the ECU: a test image calls hal_can_send() with a
 # bus index hal.h does not have once its main loop runs. The STM32
 # hal_contract_failed() must record the file and line in the no-init fault
 # record and reset; the next start reports HAL_RESET_FAULT with that line

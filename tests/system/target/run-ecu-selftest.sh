@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Issue 14, the bring-up self-test at every start, under qemu-system-arm
+# The bring-up self-test at every start, under qemu-system-arm
 # -M netduinoplus2 (STM32F405 without RCC, TIM11 or bxCAN models: the
 # registers read 0). Each boot prints
 #   EVT selftest hse_hz=.. reset=.. bor=.. lb0=.. lb1=.. stack_prev=.. stack_reserve=.. faults=0x..

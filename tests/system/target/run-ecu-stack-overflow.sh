@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Issue 14, "fault handler on a broken stack": an ECU test image
+# The fault handler on a broken stack: an ECU test image
 # (-DSQ_TARGET_TEST_STACK_OVERFLOW) pushes its main stack below the bottom
 # of SRAM once its main loop runs. The exception entry itself then fails
 # (stacking error) and the handler starts with MSP outside any memory; it
