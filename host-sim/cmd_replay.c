@@ -12,9 +12,10 @@
  * time and the firmware polls once more. A tick that cannot change anything
  * is skipped: the firmware says when its next work is due
  * (squeal_app_next_event_us(): a periodic message, a staleness timeout, the
- * next tick after a frame), and the clock goes straight to that tick. Only
- * the last skipped tick before a frame the controller takes is run, so the
- * firmware's clock and tick are where 1 ms stepping leaves them: the output
+ * next tick after a frame), and the clock goes straight to that tick. Before
+ * a frame the controller takes, the firmware's clock and tick are put where
+ * running the last skipped tick leaves them (squeal_app_skip_to_us), so
+ * they are where 1 ms stepping leaves them: the output
  * is the same bytes as with every tick run (--step-every-ms, for
  * comparison). The replay ends with the first tick after the last frame (the
  * one that takes that frame in), so the final state is the one the last
@@ -484,12 +485,16 @@ static void run_until(replay_t *r, uint64_t t_us)
 	}
 }
 
-/* Before the firmware sees anything again (a frame, a gap, the end): the
- * last tick skipped, so its clock and tick are where every tick leaves them. */
+/* Before the firmware sees anything again (a frame, a gap, the end): its
+ * clock and tick go where running the last tick skipped leaves them
+ * (squeal_app_skip_to_us: that tick has nothing to do, sends nothing and
+ * changes no state). */
 static void run_idle_tick(replay_t *r)
 {
 	if (r->idle_pending) {
-		tick(r, r->idle_tick_us);
+		set_time(r, r->idle_tick_us);
+		squeal_app_skip_to_us(r->idle_tick_us);
+		r->idle_pending = false;
 	}
 }
 
