@@ -95,6 +95,9 @@
 #define REORDER_FRAMES 32768U      /* frames held at most (5 s at 6500 frames/s) */
 #define DETOUR_RETURN_STEP_US 100000U /* a forward jump that ends a late block */
 #define IFACES_MAX 16U             /* interfaces told apart (more share the last) */
+/* Frames given before one poll takes them in (skipping): well below the
+ * firmware's RX_BUDGET, so one poll takes them all, as a poll per frame does */
+#define RX_DEFER_MAX 16U
 /* Re-based times saturate here (2^62 us, 146,000 years): a hostile log of
  * endless restarts cannot overflow them; frames beyond are late. */
 #define TIME_MAX_US (1ULL << 62)
@@ -184,6 +187,7 @@ typedef struct {
 	uint64_t next_tick_us;     /* the next tick not yet run or skipped       */
 	bool skip;                 /* skip the ticks that change nothing         */
 	bool idle_pending;         /* idle_tick_us was skipped, nothing run since */
+	uint32_t rx_deferred;      /* frames given, not yet polled (skipping)    */
 	uint64_t idle_tick_us;     /* the last tick skipped                      */
 	/* standard identifiers the controller's filters refused, per bus (the
 	 * firmware sets its filters once, at init) */
@@ -447,6 +451,7 @@ static void tick(replay_t *r, uint64_t t_us)
 	(void)squeal_app_poll();
 	after_poll(r);
 	r->idle_pending = false;
+	r->rx_deferred = 0U;
 }
 
 /* The first tick of the grid from `from` at or after ev_us; UINT64_MAX when
@@ -470,7 +475,7 @@ static void run_until(replay_t *r, uint64_t t_us)
 	while (r->next_tick_us <= t_us) {
 		uint64_t at = r->next_tick_us;
 
-		if (r->skip) {
+		if (r->skip && (r->rx_deferred == 0U)) {
 			at = first_tick_at(at, squeal_app_next_event_us(), t_us);
 			if (at == UINT64_MAX) {
 				r->idle_tick_us = r->next_tick_us +
@@ -495,6 +500,40 @@ static void run_idle_tick(replay_t *r)
 		set_time(r, r->idle_tick_us);
 		squeal_app_skip_to_us(r->idle_tick_us);
 		r->idle_pending = false;
+	}
+}
+
+/*
+ * Skipping, a frame the controller took waits there for the next tick's
+ * poll, which takes it in before it ticks: a poll at the frame's own time
+ * would only take it in (the ticks up to that time have run or are skipped,
+ * the next is later), sends nothing and changes no state, and the monitors
+ * stamp a frame with their own clock at the latest, which moves only when
+ * they tick, so the frames get the times a poll per frame gives them. The
+ * next tick is due (run_until), as after such a poll. Not while a corner is
+ * in FAULT: a frame taken in changes its inputs' faults at once, and the
+ * time in FAULT is counted by those (account_corners). Before a jump of the
+ * clock (a gap not simulated) they are taken in at their time, as stepping
+ * does.
+ */
+static bool fault_time_by_input(void)
+{
+	uint32_t k;
+
+	for (k = 0U; k < squeal_app_corner_count(); k++) {
+		if (msg_squeal_state_slot(squeal_app_corner(k)->state) == MSG_SQUEAL_STATE_SLOT_FAULT) {
+			return true;
+		}
+	}
+	return false;
+}
+
+static void take_deferred(replay_t *r)
+{
+	if (r->rx_deferred > 0U) {
+		(void)squeal_app_poll();
+		after_poll(r);
+		r->rx_deferred = 0U;
 	}
 }
 
@@ -687,8 +726,13 @@ static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 	r->pushed++;
 	run_idle_tick(r);
 	set_time(r, r->frame_us);
-	(void)squeal_app_poll();
-	after_poll(r);
+	if (r->skip && (r->rx_deferred < RX_DEFER_MAX) && !fault_time_by_input()) {
+		r->rx_deferred++;
+	} else {
+		take_deferred(r);
+		(void)squeal_app_poll();
+		after_poll(r);
+	}
 }
 
 /* A frame leaves the window, in time order: the clock goes to its time. */
@@ -721,6 +765,7 @@ static void release(replay_t *r, const held_t *h, const replay_args_t *a)
 			a->log_name, (unsigned long long)h->line_no,
 			(unsigned long long)(gap / 1000000U), (unsigned long long)(gap % 1000000U));
 		/* keep the tick grid's phase */
+		take_deferred(r);
 		run_idle_tick(r);
 		r->next_tick_us += ((t_us - r->next_tick_us) / TICK_US) * TICK_US;
 		set_time(r, t_us);
