@@ -233,6 +233,10 @@ typedef struct {
 	calib_names_t names;
 	bool map_form;             /* [input]/[corner] sections: names apply */
 	corner_stats_t cs[CALIB_MAX_CORNERS];
+	/* the firmware's corners, taken at start (their number is fixed by
+	 * init): read on every frame and tick */
+	uint32_t n_corners;
+	const monitor_t *corner[CALIB_MAX_CORNERS];
 	/* output: the name of each bus in the output log */
 	char iface[HAL_CAN_BUSES][CANDUMP_IFACE_MAX + 1U];
 	bool bus1_named;
@@ -407,8 +411,8 @@ static void account_corners(replay_t *r, uint64_t dt)
 {
 	uint32_t k;
 
-	for (k = 0U; (k < squeal_app_corner_count()) && (k < CALIB_MAX_CORNERS); k++) {
-		const monitor_t *c = squeal_app_corner(k);
+	for (k = 0U; k < r->n_corners; k++) {
+		const monitor_t *c = r->corner[k];
 		corner_stats_t *cs = &r->cs[k];
 		const uint32_t slot = msg_squeal_state_slot(c->state);
 		const uint32_t faults[2] = { c->speed.faults, c->force.faults };
@@ -516,12 +520,12 @@ static void run_idle_tick(replay_t *r)
  * clock (a gap not simulated) they are taken in at their time, as stepping
  * does.
  */
-static bool fault_time_by_input(void)
+static bool fault_time_by_input(const replay_t *r)
 {
 	uint32_t k;
 
-	for (k = 0U; k < squeal_app_corner_count(); k++) {
-		if (msg_squeal_state_slot(squeal_app_corner(k)->state) == MSG_SQUEAL_STATE_SLOT_FAULT) {
+	for (k = 0U; k < r->n_corners; k++) {
+		if (msg_squeal_state_slot(r->corner[k]->state) == MSG_SQUEAL_STATE_SLOT_FAULT) {
 			return true;
 		}
 	}
@@ -566,6 +570,10 @@ static void start(replay_t *r, const held_t *h, const replay_args_t *a)
 		return;
 	}
 	m = squeal_app_monitor();
+	for (r->n_corners = 0U; (r->n_corners < squeal_app_corner_count()) &&
+	     (r->n_corners < CALIB_MAX_CORNERS); r->n_corners++) {
+		r->corner[r->n_corners] = squeal_app_corner(r->n_corners);
+	}
 	if (a->iface_out != NULL) {
 		(void)snprintf(r->iface[0], sizeof(r->iface[0]), "%s", a->iface_out);
 		(void)snprintf(r->iface[1], sizeof(r->iface[1]), "%s", a->iface_out);
@@ -614,12 +622,12 @@ static bool carries_id(const input_rx_cfg_t *cfg, const hal_can_frame_t *f)
 }
 
 /* Does the frame have the identifier of an input of any corner? */
-static bool is_input_frame(const hal_can_frame_t *f)
+static bool is_input_frame(const replay_t *r, const hal_can_frame_t *f)
 {
 	uint32_t k;
 
-	for (k = 0U; k < squeal_app_corner_count(); k++) {
-		const monitor_t *c = squeal_app_corner(k);
+	for (k = 0U; k < r->n_corners; k++) {
+		const monitor_t *c = r->corner[k];
 
 		if (carries_id(&c->speed_rx, f) || carries_id(&c->force_rx, f)) {
 			return true;
@@ -651,7 +659,7 @@ static bool bus_of_frame(replay_t *r, const held_t *h, const hal_can_frame_t *hf
 		return true;
 	}
 	*bus = 0U;
-	if (!is_input_frame(hf)) {
+	if (!is_input_frame(r, hf)) {
 		return true;
 	}
 	if (!r->iface_has_inputs[h->iface]) {
@@ -726,7 +734,7 @@ static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 	r->pushed++;
 	run_idle_tick(r);
 	set_time(r, r->frame_us);
-	if (r->skip && (r->rx_deferred < RX_DEFER_MAX) && !fault_time_by_input()) {
+	if (r->skip && (r->rx_deferred < RX_DEFER_MAX) && !fault_time_by_input(r)) {
 		r->rx_deferred++;
 	} else {
 		take_deferred(r);
