@@ -422,9 +422,9 @@ uint64_t squeal_app_next_event_us(void)
 
 void squeal_app_skip_to_us(uint64_t t_us)
 {
-	uint32_t k;
-
 	if (t_us >= app_next_tick_us) {
+		uint32_t k;
+
 		for (k = 0U; k < app_corners; k++) {
 			/* the one field a tick without work changes (the
 			 * monitor's clock: monitor_step_slot) */

@@ -15,25 +15,20 @@ typedef struct {
 	bool filter_set;
 	uint32_t filter_count;
 	hal_can_filter_t filters[HAL_CAN_MAX_FILTERS];
-	hal_can_frame_t *rx;      /* rx_queue[bus]: HAL_VBUS_RX_LEN frames */
 	uint32_t rx_head;
 	uint32_t rx_count;
-	hal_can_frame_t *tx;      /* tx_queue[bus]: HAL_VBUS_TX_LEN frames */
 	uint32_t tx_head;
 	uint32_t tx_count;
 	hal_vbus_sink_t sink;
 	hal_vbus_stats_t stats;
+	/* the queues' frames last: a reset empties a queue by its count and
+	 * never writes its frames (only those within the count are read), so
+	 * a process that queues few frames touches few of their pages */
+	hal_can_frame_t rx[HAL_VBUS_RX_LEN];
+	hal_can_frame_t tx[HAL_VBUS_TX_LEN];
 } vbus_t;
 
-/* The queues' frames, apart from the buses' state: a reset empties a queue
- * by its count and never writes its frames (only those within the count
- * are read), so a process that queues few frames touches few pages. */
-static hal_can_frame_t rx_queue[HAL_CAN_BUSES][HAL_VBUS_RX_LEN];
-static hal_can_frame_t tx_queue[HAL_CAN_BUSES][HAL_VBUS_TX_LEN];
-_Static_assert(HAL_CAN_BUSES == 2U, "one initializer per bus");
-static vbus_t buses[HAL_CAN_BUSES] = {
-	{ .rx = rx_queue[0], .tx = tx_queue[0] }, { .rx = rx_queue[1], .tx = tx_queue[1] }
-};
+static vbus_t buses[HAL_CAN_BUSES];
 static uint32_t bus_count = HAL_CAN_BUSES;
 static bool filters_enforced = true;
 
@@ -41,10 +36,8 @@ void hal_vbus_can_reset(void)
 {
 	uint32_t b;
 
-	(void)memset(buses, 0, sizeof(buses));
 	for (b = 0U; b < HAL_CAN_BUSES; b++) {
-		buses[b].rx = rx_queue[b];
-		buses[b].tx = tx_queue[b];
+		(void)memset(&buses[b], 0, offsetof(vbus_t, rx));
 		buses[b].status.state = HAL_CAN_STATE_ERROR_ACTIVE;
 		buses[b].status.mode = HAL_CAN_MODE_NORMAL;
 	}
