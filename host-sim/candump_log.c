@@ -105,6 +105,28 @@ const char *candump_strerror(candump_err_t err)
 	return "unknown error";
 }
 
+/* Eight decimal digits at p, as their value; false (and *v untouched) when
+ * one of the eight is no digit. p[0] is in the line, so p[7] is in the line
+ * or its pad. Byte order: little-endian hosts (the digits' first is the
+ * word's lowest byte). */
+_Static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "eight_digits reads a little-endian word");
+_Static_assert(CURSOR_PAD >= 8U, "eight bytes from a character of the line are readable");
+static bool eight_digits(const char *p, uint64_t *v)
+{
+	uint64_t w;
+
+	memcpy(&w, p, sizeof(w));
+	/* every byte 0x30..0x39: high nibble 3, and adding 6 keeps it 3 */
+	if (((w & 0xF0F0F0F0F0F0F0F0ULL) |
+	     (((w + 0x0606060606060606ULL) & 0xF0F0F0F0F0F0F0F0ULL) >> 4)) != 0x3333333333333333ULL) {
+		return false;
+	}
+	w = ((w & 0x0F0F0F0F0F0F0F0FULL) * 2561U) >> 8;          /* pairs:  10 a + b   */
+	w = ((w & 0x00FF00FF00FF00FFULL) * 6553601U) >> 16;      /* fours:  100 p + q  */
+	*v = ((w & 0x0000FFFF0000FFFFULL) * 42949672960001ULL) >> 32; /* 10^4 f + g */
+	return true;
+}
+
 /* (SECONDS.FRACTION). The hot loops below work on local copies of the
  * cursor: a store through a char pointer may alias it, which would make the
  * compiler reload it after every character. */
@@ -118,7 +140,14 @@ static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 	unsigned nd = 0U;
 	unsigned nf = 0U;
 	candump_err_t e = CANDUMP_OK;
+	uint64_t eight;
 
+	/* the first eight digits at once (a Unix time has ten) */
+	if (eight_digits(&s[i], &eight)) {
+		sec = eight;
+		nd = 8U;
+		i += 8U;
+	}
 	while (is_digit((unsigned char)s[i])) {
 		/* 19 digits cannot overflow: the test only from the 20th */
 		if ((nd >= 19U) && ((nd >= 20U) || (sec > (UINT64_MAX - 9U) / 10U))) {

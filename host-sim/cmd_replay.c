@@ -12,9 +12,10 @@
  * time and the firmware polls once more. A tick that cannot change anything
  * is skipped: the firmware says when its next work is due
  * (squeal_app_next_event_us(): a periodic message, a staleness timeout, the
- * next tick after a frame), and the clock goes straight to that tick. Only
- * the last skipped tick before a frame the controller takes is run, so the
- * firmware's clock and tick are where 1 ms stepping leaves them: the output
+ * next tick after a frame), and the clock goes straight to that tick. Before
+ * a frame the controller takes, the firmware's clock and tick are put where
+ * running the last skipped tick leaves them (squeal_app_skip_to_us), so
+ * they are where 1 ms stepping leaves them: the output
  * is the same bytes as with every tick run (--step-every-ms, for
  * comparison). The replay ends with the first tick after the last frame (the
  * one that takes that frame in), so the final state is the one the last
@@ -94,6 +95,9 @@
 #define REORDER_FRAMES 32768U      /* frames held at most (5 s at 6500 frames/s) */
 #define DETOUR_RETURN_STEP_US 100000U /* a forward jump that ends a late block */
 #define IFACES_MAX 16U             /* interfaces told apart (more share the last) */
+/* Frames given before one poll takes them in (skipping): well below the
+ * firmware's RX_BUDGET, so one poll takes them all, as a poll per frame does */
+#define RX_DEFER_MAX 16U
 /* Re-based times saturate here (2^62 us, 146,000 years): a hostile log of
  * endless restarts cannot overflow them; frames beyond are late. */
 #define TIME_MAX_US (1ULL << 62)
@@ -183,6 +187,7 @@ typedef struct {
 	uint64_t next_tick_us;     /* the next tick not yet run or skipped       */
 	bool skip;                 /* skip the ticks that change nothing         */
 	bool idle_pending;         /* idle_tick_us was skipped, nothing run since */
+	uint32_t rx_deferred;      /* frames given, not yet polled (skipping)    */
 	uint64_t idle_tick_us;     /* the last tick skipped                      */
 	/* standard identifiers the controller's filters refused, per bus (the
 	 * firmware sets its filters once, at init) */
@@ -228,6 +233,10 @@ typedef struct {
 	calib_names_t names;
 	bool map_form;             /* [input]/[corner] sections: names apply */
 	corner_stats_t cs[CALIB_MAX_CORNERS];
+	/* the firmware's corners, taken at start (their number is fixed by
+	 * init): read on every frame and tick */
+	uint32_t n_corners;
+	const monitor_t *corner[CALIB_MAX_CORNERS];
 	/* output: the name of each bus in the output log */
 	char iface[HAL_CAN_BUSES][CANDUMP_IFACE_MAX + 1U];
 	bool bus1_named;
@@ -402,8 +411,8 @@ static void account_corners(replay_t *r, uint64_t dt)
 {
 	uint32_t k;
 
-	for (k = 0U; (k < squeal_app_corner_count()) && (k < CALIB_MAX_CORNERS); k++) {
-		const monitor_t *c = squeal_app_corner(k);
+	for (k = 0U; k < r->n_corners; k++) {
+		const monitor_t *c = r->corner[k];
 		corner_stats_t *cs = &r->cs[k];
 		const uint32_t slot = msg_squeal_state_slot(c->state);
 		const uint32_t faults[2] = { c->speed.faults, c->force.faults };
@@ -446,6 +455,7 @@ static void tick(replay_t *r, uint64_t t_us)
 	(void)squeal_app_poll();
 	after_poll(r);
 	r->idle_pending = false;
+	r->rx_deferred = 0U;
 }
 
 /* The first tick of the grid from `from` at or after ev_us; UINT64_MAX when
@@ -469,7 +479,7 @@ static void run_until(replay_t *r, uint64_t t_us)
 	while (r->next_tick_us <= t_us) {
 		uint64_t at = r->next_tick_us;
 
-		if (r->skip) {
+		if (r->skip && (r->rx_deferred == 0U)) {
 			at = first_tick_at(at, squeal_app_next_event_us(), t_us);
 			if (at == UINT64_MAX) {
 				r->idle_tick_us = r->next_tick_us +
@@ -484,12 +494,50 @@ static void run_until(replay_t *r, uint64_t t_us)
 	}
 }
 
-/* Before the firmware sees anything again (a frame, a gap, the end): the
- * last tick skipped, so its clock and tick are where every tick leaves them. */
+/* Before the firmware sees anything again (a frame, a gap, the end): its
+ * clock and tick go where running the last tick skipped leaves them
+ * (squeal_app_skip_to_us: that tick has nothing to do, sends nothing and
+ * changes no state). */
 static void run_idle_tick(replay_t *r)
 {
 	if (r->idle_pending) {
-		tick(r, r->idle_tick_us);
+		set_time(r, r->idle_tick_us);
+		squeal_app_skip_to_us(r->idle_tick_us);
+		r->idle_pending = false;
+	}
+}
+
+/*
+ * Skipping, a frame the controller took waits there for the next tick's
+ * poll, which takes it in before it ticks: a poll at the frame's own time
+ * would only take it in (the ticks up to that time have run or are skipped,
+ * the next is later), sends nothing and changes no state, and the monitors
+ * stamp a frame with their own clock at the latest, which moves only when
+ * they tick, so the frames get the times a poll per frame gives them. The
+ * next tick is due (run_until), as after such a poll. Not while a corner is
+ * in FAULT: a frame taken in changes its inputs' faults at once, and the
+ * time in FAULT is counted by those (account_corners). Before a jump of the
+ * clock (a gap not simulated) they are taken in at their time, as stepping
+ * does.
+ */
+static bool fault_time_by_input(const replay_t *r)
+{
+	uint32_t k;
+
+	for (k = 0U; k < r->n_corners; k++) {
+		if (msg_squeal_state_slot(r->corner[k]->state) == MSG_SQUEAL_STATE_SLOT_FAULT) {
+			return true;
+		}
+	}
+	return false;
+}
+
+static void take_deferred(replay_t *r)
+{
+	if (r->rx_deferred > 0U) {
+		(void)squeal_app_poll();
+		after_poll(r);
+		r->rx_deferred = 0U;
 	}
 }
 
@@ -522,6 +570,10 @@ static void start(replay_t *r, const held_t *h, const replay_args_t *a)
 		return;
 	}
 	m = squeal_app_monitor();
+	for (r->n_corners = 0U; (r->n_corners < squeal_app_corner_count()) &&
+	     (r->n_corners < CALIB_MAX_CORNERS); r->n_corners++) {
+		r->corner[r->n_corners] = squeal_app_corner(r->n_corners);
+	}
 	if (a->iface_out != NULL) {
 		(void)snprintf(r->iface[0], sizeof(r->iface[0]), "%s", a->iface_out);
 		(void)snprintf(r->iface[1], sizeof(r->iface[1]), "%s", a->iface_out);
@@ -570,12 +622,12 @@ static bool carries_id(const input_rx_cfg_t *cfg, const hal_can_frame_t *f)
 }
 
 /* Does the frame have the identifier of an input of any corner? */
-static bool is_input_frame(const hal_can_frame_t *f)
+static bool is_input_frame(const replay_t *r, const hal_can_frame_t *f)
 {
 	uint32_t k;
 
-	for (k = 0U; k < squeal_app_corner_count(); k++) {
-		const monitor_t *c = squeal_app_corner(k);
+	for (k = 0U; k < r->n_corners; k++) {
+		const monitor_t *c = r->corner[k];
 
 		if (carries_id(&c->speed_rx, f) || carries_id(&c->force_rx, f)) {
 			return true;
@@ -607,7 +659,7 @@ static bool bus_of_frame(replay_t *r, const held_t *h, const hal_can_frame_t *hf
 		return true;
 	}
 	*bus = 0U;
-	if (!is_input_frame(hf)) {
+	if (!is_input_frame(r, hf)) {
 		return true;
 	}
 	if (!r->iface_has_inputs[h->iface]) {
@@ -682,8 +734,13 @@ static void give_frame(replay_t *r, const held_t *h, const replay_args_t *a)
 	r->pushed++;
 	run_idle_tick(r);
 	set_time(r, r->frame_us);
-	(void)squeal_app_poll();
-	after_poll(r);
+	if (r->skip && (r->rx_deferred < RX_DEFER_MAX) && !fault_time_by_input(r)) {
+		r->rx_deferred++;
+	} else {
+		take_deferred(r);
+		(void)squeal_app_poll();
+		after_poll(r);
+	}
 }
 
 /* A frame leaves the window, in time order: the clock goes to its time. */
@@ -716,6 +773,7 @@ static void release(replay_t *r, const held_t *h, const replay_args_t *a)
 			a->log_name, (unsigned long long)h->line_no,
 			(unsigned long long)(gap / 1000000U), (unsigned long long)(gap % 1000000U));
 		/* keep the tick grid's phase */
+		take_deferred(r);
 		run_idle_tick(r);
 		r->next_tick_us += ((t_us - r->next_tick_us) / TICK_US) * TICK_US;
 		set_time(r, t_us);

@@ -3,6 +3,7 @@
  * ECU's frames; see replay_summary.h. */
 #include "replay_summary.h"
 
+#include <stddef.h>
 #include <string.h>
 
 #include "squeal_msgs.h"
@@ -94,13 +95,26 @@ void replay_summary_set_ids(replay_summary_t *rs, const rs_corner_ids_t *base)
 	}
 }
 
+_Static_assert(offsetof(rs_corner_t, cell_us) + sizeof(((rs_corner_t *)NULL)->cell_us) ==
+	       sizeof(rs_corner_t), "the cells are a corner's last member (replay_summary_init)");
+
 void replay_summary_init(replay_summary_t *rs, json_writer_t *w)
 {
 	static const rs_corner_ids_t dbc = {
 		MSG_SQUEAL_STATUS_ID, MSG_SQUEAL_DETAIL_ID, MSG_SQUEAL_DETAIL2_ID
 	};
 
-	memset(rs, 0, sizeof(*rs));
+	unsigned k;
+
+	for (k = 0U; k < RS_CORNERS_MAX; k++) {
+		rs_corner_t *c = &rs->corner[k];
+
+		if (c->cells_used) {
+			memset(c->cell_us, 0, sizeof(c->cell_us));
+		}
+		memset(c, 0, offsetof(rs_corner_t, cell_us));
+	}
+	rs->finished = false;
 	rs->w = w;
 	sigs.state = sig_find(MSG_SQUEAL_STATUS_ID, "SquealState");
 	sigs.warning = sig_find(MSG_SQUEAL_STATUS_ID, "WarningLevel");
@@ -162,6 +176,7 @@ static void account(rs_corner_t *c, uint64_t t_us)
 		/* raw V0_mps is 0.01 m/s, raw Force_N 0.5 N */
 		c->cell_us[c->state][bin_of(c->v0_raw, (int32_t)RS_V0_BIN_CMPS, RS_V0_BINS)]
 			  [bin_of(c->force_raw, (int32_t)(2U * RS_FORCE_BIN_N), RS_FORCE_BINS)] += dt;
+		c->cells_used = true;
 	}
 	c->last_us = t_us;
 }

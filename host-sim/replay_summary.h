@@ -79,7 +79,8 @@ typedef struct {
 	rs_episode_t ep;
 	uint64_t episodes;
 	uint64_t state_us[RS_N_STATES];
-	uint64_t cell_us[RS_N_STATES][RS_V0_BINS][RS_FORCE_BINS];
+	bool cells_used;           /* a cell below was written          */
+	uint64_t cell_us[RS_N_STATES][RS_V0_BINS][RS_FORCE_BINS]; /* last: see init */
 } rs_corner_t;
 
 typedef struct {
@@ -97,7 +98,9 @@ void rs_json_state_times(json_writer_t *w, const char *key, const uint64_t us[RS
 extern const char *const rs_corner_names[RS_CORNERS_MAX];
 
 /* Starts with the DBC's identifiers and opens the document's "episodes"
- * array (the caller has begun the top-level object). */
+ * array (the caller has begun the top-level object). rs is zero the first
+ * time (static storage): the cells, most of rs, are cleared only where a
+ * previous use wrote them, so a short replay touches few of its pages. */
 void replay_summary_init(replay_summary_t *rs, json_writer_t *w);
 /* Corner k (0..3) listens to base + k * RS_CORNER_ID_STEP. */
 void replay_summary_set_ids(replay_summary_t *rs, const rs_corner_ids_t *base);

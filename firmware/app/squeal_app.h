@@ -32,6 +32,14 @@ uint64_t squeal_app_poll(void);
  * The ECU keeps polling every tick; this is for virtual time. */
 uint64_t squeal_app_next_event_us(void);
 
+/* Virtual time: the ticks up to and including t_us are skipped ones (t_us
+ * is before squeal_app_next_event_us()). Leaves the clocks where running
+ * the last of them would: the next tick after t_us, and each monitor's
+ * clock at t_us (a frame then taken gets t_us as its receive time at the
+ * latest, as after that tick). Changes nothing else: those ticks change
+ * nothing else. A t_us before the last tick run changes nothing. */
+void squeal_app_skip_to_us(uint64_t t_us);
+
 /* init, then poll + hal_idle_until() until *stop becomes true (never, on the
  * ECU). Returns the init status. */
 int squeal_main(volatile const bool *stop);

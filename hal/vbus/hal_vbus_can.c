@@ -15,14 +15,17 @@ typedef struct {
 	bool filter_set;
 	uint32_t filter_count;
 	hal_can_filter_t filters[HAL_CAN_MAX_FILTERS];
-	hal_can_frame_t rx[HAL_VBUS_RX_LEN];
 	uint32_t rx_head;
 	uint32_t rx_count;
-	hal_can_frame_t tx[HAL_VBUS_TX_LEN];
 	uint32_t tx_head;
 	uint32_t tx_count;
 	hal_vbus_sink_t sink;
 	hal_vbus_stats_t stats;
+	/* the queues' frames last: a reset empties a queue by its count and
+	 * never writes its frames (only those within the count are read), so
+	 * a process that queues few frames touches few of their pages */
+	hal_can_frame_t rx[HAL_VBUS_RX_LEN];
+	hal_can_frame_t tx[HAL_VBUS_TX_LEN];
 } vbus_t;
 
 static vbus_t buses[HAL_CAN_BUSES];
@@ -33,8 +36,8 @@ void hal_vbus_can_reset(void)
 {
 	uint32_t b;
 
-	(void)memset(buses, 0, sizeof(buses));
 	for (b = 0U; b < HAL_CAN_BUSES; b++) {
+		(void)memset(&buses[b], 0, offsetof(vbus_t, rx));
 		buses[b].status.state = HAL_CAN_STATE_ERROR_ACTIVE;
 		buses[b].status.mode = HAL_CAN_MODE_NORMAL;
 	}

@@ -9,10 +9,14 @@
  *   - the next tick after a frame was taken;
  *   - a drive (inputs, a silence that makes them stale, inputs again), run
  *     every 1 ms: each tick before the reported time sends nothing and
- *     leaves every monitor as it was (but its clock), and most ticks are such.
+ *     leaves every monitor as it was (but its clock), and most ticks are such;
+ *   - the same drive with those ticks skipped (squeal_app_skip_to_us, as
+ *     replay does): after every tick, run or skipped, each monitor's memory
+ *     and the frames sent are those of the drive run every 1 ms.
  */
 #include <setjmp.h>
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -139,12 +143,84 @@ static void test_ticks_before_the_event_change_nothing(void **state)
 	assert_true(idle * 10U >= ticks * 7U);
 }
 
+#define DRIVE_TICKS 1500U
+
+/* FNV-1a over every corner's monitor: the state after one tick. */
+static uint64_t monitors_hash(void)
+{
+	uint64_t h = 14695981039346656037ULL;
+	uint32_t k;
+
+	for (k = 0U; k < squeal_app_corner_count(); k++) {
+		const uint8_t *p = (const uint8_t *)squeal_app_corner(k);
+		size_t i;
+
+		for (i = 0U; i < sizeof(monitor_t); i++) {
+			h = (h ^ p[i]) * 1099511628211ULL;
+		}
+	}
+	return h;
+}
+
+/* The drive of test_ticks_before_the_event_change_nothing, each tick run
+ * (skip false) or, before the reported event, skipped; the state and the
+ * frames sent so far after each tick. */
+static void drive(bool skip, uint64_t hash[DRIVE_TICKS], uint32_t sent[DRIVE_TICKS],
+		  uint32_t *skipped)
+{
+	uint32_t i;
+
+	start();
+	(void)squeal_app_poll();
+	*skipped = 0U;
+	for (i = 0U; i < DRIVE_TICKS; i++) {
+		const uint64_t ev = squeal_app_next_event_us();
+		const uint64_t now = hal_time_us() + TICK_US;
+		const bool frame = input_at(now);
+
+		if (frame) {
+			assert_int_equal(test_send_pair(&snd, SPEED_RAW, FORCE_RAW, now), SQ_OK);
+		}
+		if (skip && !frame && (now < ev)) {
+			test_hal_set_time_us(now);
+			squeal_app_skip_to_us(now);
+			(*skipped)++;
+		} else {
+			tick();
+		}
+		hash[i] = monitors_hash();
+		sent[i] = test_hal_tx_count();
+	}
+}
+
+static void test_skipped_ticks_leave_what_running_them_leaves(void **state)
+{
+	static uint64_t hash[2][DRIVE_TICKS];
+	static uint32_t sent[2][DRIVE_TICKS];
+	uint32_t skipped[2];
+	uint32_t i;
+
+	(void)state;
+	drive(false, hash[0], sent[0], &skipped[0]);
+	drive(true, hash[1], sent[1], &skipped[1]);
+	for (i = 0U; i < DRIVE_TICKS; i++) {
+		assert_int_equal(hash[1][i], hash[0][i]);
+		assert_int_equal(sent[1][i], sent[0][i]);
+	}
+	assert_int_equal(skipped[0], 0U);
+	assert_true(skipped[1] * 10U >= DRIVE_TICKS * 7U);
+	/* a time before the last tick run changes nothing */
+	squeal_app_skip_to_us(hal_time_us() - 5U * TICK_US);
+	assert_int_equal(monitors_hash(), hash[0][DRIVE_TICKS - 1U]);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_deadlines_by_hand),
 		cmocka_unit_test(test_a_frame_makes_the_next_tick_due),
 		cmocka_unit_test(test_ticks_before_the_event_change_nothing),
+		cmocka_unit_test(test_skipped_ticks_leave_what_running_them_leaves),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
