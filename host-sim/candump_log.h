@@ -4,7 +4,7 @@
  * one line at a time, with fixed buffers and no heap.
  *
  * Grammar of one frame line (what candump writes, and what its readers such
- * as canplayer accept; shared/style.md "The candump log format"):
+ * as canplayer accept; the candump -L format of can-utils):
  *
  *   (SECONDS.FRACTION) IFACE FRAME [T|R]
  *

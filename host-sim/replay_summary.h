@@ -15,7 +15,7 @@
  *     fixed grid (RS_V0_BINS x RS_FORCE_BINS), for the fleet heat map.
  *
  * Corner k's messages are the base identifiers + k * RS_CORNER_ID_STEP
- * (issue 11's default: FL keeps 0x300.., FR 0x310.., RL 0x320.., RR 0x330..);
+ * (the default layout: FL keeps 0x300.., FR 0x310.., RL 0x320.., RR 0x330..);
  * replay_summary_set_corner() sets other identifiers.
  *
  * Time accounting: a corner's time starts at its first SquealStatus; the time

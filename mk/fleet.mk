@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Drives (issue 13): fleet analysis on Dask and the live view.
+# Drives: fleet analysis on Dask and the live view.
 #   tools/fleet.py            replay --summary-json over many logs (Dask)
 #   tools/gen_fleet_logs.py   a generated test fleet, a few logs broken
 #   tools/live_view.py        the operating point live over the map

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-# Offline replay of candump logs and the decoder (issue 4):
+# Offline replay of candump logs and the decoder:
 #   host-sim/candump_log.c   candump -L parser/writer and streaming reader
 #   host-sim/cmd_replay.c    squeal-sim replay LOG|-   (virtual time, hal/vbus;
 #                            program build/<v>/squeal-replay)
@@ -11,7 +11,7 @@
 #                                   two interfaces, names and reasons
 #   tests/host-sim/bench_cmd_replay.sh    make bench: replay vs python-can+canmatrix,
 #                                   with and without frame output
-#   host-sim/replay_summary.c, json_writer.c   replay --summary-json (issue 13)
+#   host-sim/replay_summary.c, json_writer.c   replay --summary-json
 #   build/test/tests/host-sim/test_json_writer     cmocka: the JSON writer's output and misuse
 #   tests/host-sim/test_replay_summary.py  the JSON vs Python's json + canmatrix
 REPLAY_SIM_SRCS := host-sim/candump_log.c host-sim/cmd_decode.c host-sim/decode_inputs.c
@@ -54,7 +54,7 @@ TEST_PROGS += tests/host-sim/test_cmd_replay_order.py
 tests/host-sim/bench_cmd_replay.sh: build/host/squeal-sim
 BENCH_PROGS += tests/host-sim/bench_cmd_replay.sh
 
-# replay --summary-json (issue 13): the summary module alone on four-corner
+# replay --summary-json: the summary module alone on four-corner
 # frame streams (summary_driver), and the JSON of real replays, both checked
 # with Python's json module and an independent recomputation from the frames
 # decoded by canmatrix.

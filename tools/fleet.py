@@ -413,7 +413,7 @@ def border_note(setups, calib_path, shown):
         parts.append("%s: %s limit, a = %g s/m, D = %g, w0 = %g rad/s, m = %g kg, dmu = %g"
                      % (name, c.criterion, p["slope"], p["damping"], p["omega0"], p["mass"],
                         p["delta_mu"]))
-    return ("Borders: Hopf border and stability limit from the closed forms of shared/model.md "
+    return ("Borders: Hopf border and stability limit from the closed forms of docs/model.md "
             "(scipy, tools/plots/plotlib.py) for each corner's brake%s: %s." %
             (" (from %s)" % calib_path if calib_path else " (the paper's)", "; ".join(parts)))
 
