@@ -10,7 +10,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define CRC16_CCITT_POLY  0x1021U
 #define CRC16_CCITT_INIT  0xFFFFU
 #define CRC16_CCITT_CHECK 0x29B1U /* crc16_ccitt("123456789", 9) */
 
