@@ -64,6 +64,18 @@ def cpu_s(argv):
     return ru.ru_utime + ru.ru_stime
 
 
+def paired(cmd_a, cmd_b, runs):
+    """runs pairs of A then B: A's and B's CPU seconds, and B/A pair by pair."""
+    t_a, t_b, ratio = [], [], []
+    for _ in range(runs):
+        a = cpu_s(cmd_a)
+        b = cpu_s(cmd_b)
+        t_a.append(a)
+        t_b.append(b)
+        ratio.append(b / a if a > 0 else float("inf"))
+    return t_a, t_b, ratio
+
+
 def fresh(path, *sources):
     return os.path.exists(path) and all(os.path.getmtime(path) >= os.path.getmtime(s) for s in sources)
 
@@ -139,20 +151,8 @@ def main():
         rep_small = [REPLAY, small] + (["--calib", cal] if cal else [])
         py = [PY, os.path.join(ROOT, "tests", "support", "pydecode.py"), small] + \
             (["--dbc", dbc] if dbc else [])
-        r_a, r_l, q_l = [], [], []
-        for _ in range(RUNS):
-            a = cpu_s(rep)
-            b = cpu_s(l2a)
-            r_a.append(a)
-            r_l.append(b)
-            q_l.append(b / a if a > 0 else float("inf"))
-        r_s, r_p, q_p = [], [], []
-        for _ in range(PY_RUNS):
-            a = cpu_s(rep_small)
-            b = cpu_s(py)
-            r_s.append(a)
-            r_p.append(b)
-            q_p.append(b / a if a > 0 else float("inf"))
+        r_a, r_l, q_l = paired(rep, l2a, RUNS)
+        r_s, r_p, q_p = paired(rep_small, py, PY_RUNS)
         med = statistics.median
         print("%-8s %8d frames: replay %.3f s, log2asc %.3f s: replay %.2fx log2asc's speed "
               "(%d pairs; %.2f M frames/s)" % (name, n, med(r_a), med(r_l), med(q_l), RUNS,
