@@ -15,7 +15,12 @@
  * the range before the step), each reason's name, the step against the
  * previous value (a refused value still becomes the previous one), and
  * that a second "not available" value (na_raw2) is refused as `na` and
- * never used, by the input stage and by the monitor recording it.
+ * never used, by the input stage and by the monitor recording it; the
+ * range's upper end is plausible (max set to 200 km/h: raw 26767 taken,
+ * 26768 = 200.01 km/h refused; the fixture's 300 km/h is raw 36767, beyond
+ * the 15-bit signal); an input with exact_dlc (the legacy DiscSpeed,
+ * squeal.dbc: 4 bytes) takes only frames of exactly min_dlc bytes, a
+ * longer one is `dlc` like a shorter one.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -27,6 +32,7 @@
 
 #include <cmocka.h>
 
+#include "calib_map.h"
 #include "calib_text.h"
 #include "map_fixture.h"
 #include "input_rx.h"
@@ -41,6 +47,7 @@
 #define RAW_100_KPH 16767U  /* 100 km/h */
 #define RAW_1_KPH 6867U     /* 1 km/h: inside the range */
 #define RAW_MIN 6667U       /* -1 km/h */
+#define RAW_MAX_200 26767U  /* 200 km/h: (200 + 67.67) / 0.01 */
 #define RAW_STEP 2000U      /* 20 km/h */
 
 static calib_t cal;
@@ -219,6 +226,96 @@ static void test_na_raw2_is_refused(void **state)
 	assert_true((monitor_fault_bits(&m) & MSG_FAULT_SPEED_IMPLAUSIBLE) != 0U);
 }
 
+/* The range's upper end is plausible: with max = 200 km/h a car at
+ * exactly 200 km/h is used, one raw step more (200.01 km/h) is refused as
+ * `range`. */
+static void test_range_max_is_taken(void **state)
+{
+	calib_input_t *in;
+	input_rx_cfg_t cfg;
+	input_rx_state_t st;
+	hal_can_frame_t f;
+	input_rx_result_t r;
+
+	(void)state;
+	load();
+	in = &cal.inputs[input_named("WS_FL")];
+	in->max = (calib_dec_t){ 200, 0 };
+	assert_int_equal(calib_validate(&cal), SQ_OK);
+	cfg = prepared(in);
+	assert_true(cfg.raw_max == RAW_MAX_200);
+	input_rx_state_init(&st);
+	f = ws_fl(RAW_MAX_200, 0U);
+	r = input_rx_judge(&cfg, &st, &f);
+	assert_int_equal(r.reason, INPUT_RX_OK);
+	assert_true(r.value == (int64_t)RAW_MAX_200);
+	/* a step of 1 from the previous value: only the range refuses it */
+	f = ws_fl(RAW_MAX_200 + 1U, 0U);
+	assert_int_equal(judge(&cfg, &st, &f), INPUT_RX_RANGE);
+	/* the lower end likewise, from a fresh state (no step check) */
+	input_rx_state_init(&st);
+	f = ws_fl(RAW_MIN, 0U);
+	assert_int_equal(judge(&cfg, &st, &f), INPUT_RX_OK);
+}
+
+/* exact_dlc: the legacy speed input (DiscSpeed, id 272, 16|16@1+ in a
+ * 4-byte frame, docs/calib-input-map.md: "the DLC must equal min_dlc")
+ * takes a 4-byte frame only; 3 or 5..8 bytes are `dlc`, the value never
+ * used. Without E2E, so that only the length decides. */
+static void test_exact_dlc_refuses_longer_frames(void **state)
+{
+	calib_t leg;
+	calib_corner_t c;
+	calib_input_t sp;
+	calib_input_t fo;
+	input_geom_t g;
+	input_rx_cfg_t cfg;
+	input_rx_state_t st;
+	hal_can_frame_t f;
+	input_rx_result_t r;
+	uint8_t dlc;
+
+	(void)state;
+	calib_default(&leg);
+	leg.e2e_check_inputs = 0U;
+	assert_int_equal(calib_corner_view(&leg, 0U, &c, &sp, &fo), SQ_OK);
+	assert_true((sp.flags & CALIB_IN_DLC_EXACT) != 0U);
+	assert_int_equal(sp.min_dlc, 4U);
+	g = calib_corner_geom(&c);
+	assert_int_equal(input_rx_setup(&sp, &g, &cfg), SQ_OK);
+	input_rx_state_init(&st);
+	memset(&f, 0, sizeof(f));
+	f.id = 272U;
+	f.data[2] = 0xE8U; /* raw 1000 = 10 rad/s */
+	f.data[3] = 0x03U;
+	f.dlc = 4U;
+	r = input_rx_judge(&cfg, &st, &f);
+	assert_int_equal(r.reason, INPUT_RX_OK);
+	assert_true(r.value == 1000);
+	for (dlc = 5U; dlc <= 8U; dlc++) {
+		f.dlc = dlc;
+		assert_int_equal(judge(&cfg, &st, &f), INPUT_RX_DLC);
+	}
+	f.dlc = 3U;
+	assert_int_equal(judge(&cfg, &st, &f), INPUT_RX_DLC);
+
+	/* a map input with exact_dlc: WS_FL needs bytes 0..1 (Motorola 7|15,
+	 * qualifier bit 8), so min_dlc 2: 2 bytes taken, 3 and 8 refused */
+	load();
+	cal.inputs[input_named("WS_FL")].flags |= CALIB_IN_DLC_EXACT;
+	cal.inputs[input_named("WS_FL")].min_dlc = 2U;
+	assert_int_equal(calib_validate(&cal), SQ_OK);
+	cfg = prepared(&cal.inputs[input_named("WS_FL")]);
+	input_rx_state_init(&st);
+	f = ws_fl(RAW_100_KPH, 0U);
+	f.dlc = 2U;
+	assert_int_equal(judge(&cfg, &st, &f), INPUT_RX_OK);
+	f.dlc = 3U;
+	assert_int_equal(judge(&cfg, &st, &f), INPUT_RX_DLC);
+	f.dlc = 8U;
+	assert_int_equal(judge(&cfg, &st, &f), INPUT_RX_DLC);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -226,6 +323,8 @@ int main(void)
 		cmocka_unit_test(test_checks_in_order),
 		cmocka_unit_test(test_protection_before_availability),
 		cmocka_unit_test(test_na_raw2_is_refused),
+		cmocka_unit_test(test_range_max_is_taken),
+		cmocka_unit_test(test_exact_dlc_refuses_longer_frames),
 	};
 
 #if defined(SQUEAL_NUMERIC_FIXED)

@@ -13,7 +13,10 @@
  *   - SquealDiag's 16-bit counters saturate at 65535, and 65535 itself is
  *     sent as 65535 (mon-12);
  *   - a BISTABLE basin ratio exactly at rho_warn is an ADVISORY, one ppm
- *     below it a WARNING (mon-13).
+ *     below it a WARNING (mon-13);
+ *   - the transmit queue holds MONITOR_TX_QUEUE_LEN (8) frames: the ninth,
+ *     with nothing sent, is dropped and counted, never written over the
+ *     oldest (mon-11).
  * Expected values are hand-derived from the DBC scaling and the calibration.
  */
 #include <setjmp.h>
@@ -280,10 +283,53 @@ static void test_diag_counters_saturate_at_16_bits(void **state)
 	assert_int_equal(rx_overruns_sent(4000000000U), 65535U);
 }
 
+/* A transmit queue nobody drains (the bus is gone): the default periods
+ * (SquealStatus 10 ms, SquealDetail and SquealDetail2 100 ms, SquealDiag
+ * 1 s, all due in the first step) queue 0x300, 0x301, 0x303, 0x302 at T0,
+ * then 0x300 at T0 + 10, 20, 30, 40 ms: 8 frames, the queue's length. The
+ * ninth (0x300 at T0 + 50 ms) is dropped and counted; the eight queued stay
+ * as they were, the oldest first. */
+static void test_tx_queue_holds_eight(void **state)
+{
+	static monitor_t m;
+	static const uint16_t want_id[MONITOR_TX_QUEUE_LEN] = {
+		0x300U, 0x301U, 0x303U, 0x302U, 0x300U, 0x300U, 0x300U, 0x300U
+	};
+	static const uint64_t want_ms[MONITOR_TX_QUEUE_LEN] = { 0U, 0U, 0U, 0U, 10U, 20U, 30U, 40U };
+	calib_t cal;
+	hal_can_frame_t f;
+	uint32_t n = 0U;
+
+	(void)state;
+	calib_default(&cal);
+	assert_int_equal(monitor_init(&m, &cal, false, 0U, T0_US), SQ_OK);
+	for (uint64_t ms = 0U; ms < 50U; ms++) {
+		monitor_step(&m, T0_US + ms * 1000U);
+	}
+	assert_int_equal(m.count.tx_overflow, 0U);
+	monitor_step(&m, T0_US + 50000U);
+	assert_int_equal(m.count.tx_overflow, 1U);
+	while ((n <= MONITOR_TX_QUEUE_LEN) && (monitor_peek_tx(&m, &f) == SQ_OK)) {
+		assert_true(n < MONITOR_TX_QUEUE_LEN);
+		assert_int_equal(f.id, want_id[n]);
+		assert_true(f.timestamp_us == T0_US + want_ms[n] * 1000U);
+		monitor_tx_done(&m, SQ_OK);
+		n++;
+	}
+	assert_int_equal(n, MONITOR_TX_QUEUE_LEN);
+	assert_int_equal(m.count.tx_frames, MONITOR_TX_QUEUE_LEN);
+	/* emptied, it takes the next frame again */
+	monitor_step(&m, T0_US + 60000U);
+	assert_int_equal(monitor_peek_tx(&m, &f), SQ_OK);
+	assert_int_equal(f.id, 0x300U);
+	assert_int_equal(m.count.tx_overflow, 1U);
+}
+
 SQ_CMOCKA_MAIN(
 	cmocka_unit_test(test_stale_in_first_tick_after_timeout),
 	cmocka_unit_test(test_outage_restarts_e2e),
 	cmocka_unit_test(test_minimum_speed_and_force_inclusive),
 	cmocka_unit_test(test_hopf_force_rounded_to_nearest),
 	cmocka_unit_test(test_diag_counters_saturate_at_16_bits),
-	cmocka_unit_test(test_rho_warn_threshold_exclusive))
+	cmocka_unit_test(test_rho_warn_threshold_exclusive),
+	cmocka_unit_test(test_tx_queue_holds_eight))
