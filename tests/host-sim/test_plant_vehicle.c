@@ -8,6 +8,10 @@
  *   omega = vehicle / 0.3; FL pressure p = N / (2000 mm^2 * 0.8);
  *   FR torque total T = N * 2 faces * mu(v0) * r_p / 0.5 share with
  *   mu(v0) = 0.3 + 0.2 exp(-v0).
+ * A value beyond the signal is clamped to its top raw value, one below it
+ * when that is the input's "not available" code (a decoder must never read
+ * a real, if saturated, speed as "not available"); an alive counter
+ * (protection = counter) counts 0 .. counter_modulus - 1 and wraps there.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -140,8 +144,66 @@ static void test_pack(void **state)
 	assert_int_equal(sat, 1);
 }
 
+/* 200 m/s (720 km/h at 0.01: raw 72000) is beyond WS_FL's 16 bits: with
+ * na_raw 0xFFFF the sender stops at 0xFFFE, so the frame never says "not
+ * available"; a na_raw elsewhere (0x8000) leaves the top at 0xFFFF. */
+static void test_clamp_stays_clear_of_not_available(void **state)
+{
+	plant_vframe_t fr[CALIB_MAX_INPUTS];
+	e2e_p01_tx_t tx = { 0 };
+	hal_can_frame_t f;
+	uint64_t sat = 0;
+
+	(void)state;
+	load();
+	cal.inputs[0].flags |= CALIB_IN_NA;
+	cal.inputs[0].na_raw = 0xFFFFU;
+	assert_int_equal(plant_vehicle_frames(&cal, fr), 3);
+	plant_vehicle_pack(&cal, &fr[0], &tx, 200.0, 0.0, &f, &sat);
+	assert_int_equal(f.data[0] | (f.data[1] << 8), 0xFFFE);
+	assert_int_equal(sat, 1);
+	/* 100 m/s = 36000 raw: in range, untouched */
+	plant_vehicle_pack(&cal, &fr[0], &tx, 100.0, 0.0, &f, &sat);
+	assert_int_equal(f.data[0] | (f.data[1] << 8), 36000);
+	assert_int_equal(sat, 1);
+	cal.inputs[0].na_raw = 0x8000U;
+	plant_vehicle_pack(&cal, &fr[0], &tx, 200.0, 0.0, &f, &sat);
+	assert_int_equal(f.data[0] | (f.data[1] << 8), 0xFFFF);
+	assert_int_equal(sat, 2);
+}
+
+/* P_FL (0x130, alone in its frame) with an alive counter of 4 bits at bit
+ * 16 that wraps at 10: frame k carries k mod 10, 0..9, 0..9, 0.. */
+static void test_alive_counter_wraps_at_its_modulus(void **state)
+{
+	plant_vframe_t fr[CALIB_MAX_INPUTS];
+	e2e_p01_tx_t tx = { 0 };
+	hal_can_frame_t f;
+	uint64_t sat = 0;
+	calib_input_t *in;
+
+	(void)state;
+	load();
+	in = &cal.inputs[2];
+	in->protection = (uint8_t)CALIB_PROT_COUNTER;
+	in->counter = (can_signal_t){ 16U, 4U, (uint8_t)CAN_SIGNAL_INTEL, 0U };
+	in->counter_modulus = 10U;
+	assert_int_equal(plant_vehicle_frames(&cal, fr), 3);
+	assert_int_equal(fr[1].id, 0x130);
+	assert_int_equal(fr[1].prot, 2);
+	for (uint32_t k = 0U; k < 35U; k++) {
+		plant_vehicle_pack(&cal, &fr[1], &tx, 10.0, 14400.0, &f, &sat);
+		assert_int_equal(f.data[2] & 0x0FU, k % 10U);
+		/* the value beside it as without a counter: 90 bar, raw 1000 */
+		assert_int_equal(f.data[0] | (f.data[1] << 8), 1000);
+	}
+	assert_int_equal(sat, 0);
+}
+
 SQ_CMOCKA_MAIN(
 	cmocka_unit_test(test_frames_of_the_map),
 	cmocka_unit_test(test_physical_in_each_unit),
 	cmocka_unit_test(test_physical_in_the_other_units),
-	cmocka_unit_test(test_pack))
+	cmocka_unit_test(test_pack),
+	cmocka_unit_test(test_clamp_stays_clear_of_not_available),
+	cmocka_unit_test(test_alive_counter_wraps_at_its_modulus))
