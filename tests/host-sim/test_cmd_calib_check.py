@@ -14,7 +14,8 @@ FL):
     refused by calib-check, ecu, plant and classify with exit 1 and the one
     line FILE:LINE: reason at the max line.
 Also: the fixture layouts of tests/firmware/monitor/fixtures check ok with their counts,
---help exits 0, a missing file is one line and exit 1, bad usage exit 2.
+--help exits 0, a missing file is one line and exit 1, bad usage exit 2
+(no FILE, or two: it checks one file per run).
 Prints "RESULT: N passed, M failed". Run from the repository root.
 """
 import os
@@ -115,6 +116,10 @@ def main():
                "%s calib-check missing file: rc %d err %r" % (build, rc, err))
         rc, out, err = run([sim, "calib-check"])
         result(rc == 2, "%s calib-check without FILE: rc %d" % (build, rc))
+        # one file per run: a second one is bad usage, not checked silently
+        rc, out, err = run([sim, "calib-check", good, bad])
+        result(rc == 2 and out == "" and err.startswith("squeal-sim calib-check: "),
+               "%s calib-check with two FILEs: rc %d out %r err %r" % (build, rc, out, err))
 
         # every command taking --calib: the same one line, exit 1
         cmds = {

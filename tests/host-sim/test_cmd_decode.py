@@ -12,6 +12,9 @@ every E2E status:
   - --csv: the header, every signal's cell equal to the value encoded, the
     counter and E2E columns (no counter and no values for a bad_dlc frame),
     the raw payload;
+  - the counter wraps from 14 to 0 as P01's does (mod 15: 14 -> 0 is ok,
+    not a lost frame); WarningLevel 3 is "critical"; a DiscSpeed frame
+    longer than its 4 bytes is bad_dlc like a shorter one (no values);
   - --bus NAME takes one interface's frames; bad usage and a missing log
     are one line each with their exit codes.
 Both sanitizer builds. Prints "RESULT: N passed, M failed".
@@ -134,6 +137,33 @@ def test_csv(sim, tag, db, log):
     check(not bad, "%s: every cell as encoded (%s)" % (tag, bad[:4]))
 
 
+def test_wrap_level_and_length(sim, tag, db):
+    """Counters 13, 14, 0, 1 (mod 15: every step +1), WarningLevel 3, and a
+    DiscSpeed of 4 (its DLC), 5 and 8 bytes."""
+    st = db.frame_by_name("SquealStatus")
+    ds = db.frame_by_name("DiscSpeed")
+    st_data = encode(st, dict(STATUS, WarningLevel=3))
+    ds_data = encode(ds, {"DiscSpeed_radps": Decimal("12.34")})
+    lines = ["(0000000003.%06d) can0 300#%s" % (10000 * k, protect(st, st_data, ctr).hex().upper())
+             for k, ctr in enumerate((13, 14, 0, 1))]
+    long5 = protect(ds, ds_data, 1) + b"\x00"
+    long8 = protect(ds, ds_data, 2) + bytes(4)
+    lines += ["(0000000004.000000) can0 110#%s" % protect(ds, ds_data, 0).hex().upper(),
+              "(0000000004.010000) can0 110#%s" % long5.hex().upper(),
+              "(0000000004.020000) can0 110#%s" % long8.hex().upper()]
+    rc, out, err = run(sim, ["decode", "-"], stdin="\n".join(lines) + "\n")
+    status = STATUS_TEXT.replace("warning=warning", "warning=critical")
+    want = ["3.%06d %s ctr=%d e2e=%s" % (10000 * k, status, ctr, e2e)
+            for k, (ctr, e2e) in enumerate(((13, "initial"), (14, "ok"), (0, "ok"), (1, "ok")))]
+    want += ["4.000000 DiscSpeed DiscSpeed_radps=12.34 ctr=0 e2e=initial",
+             "4.010000 DiscSpeed bad_dlc [5] " + long5.hex().upper(),
+             "4.020000 DiscSpeed bad_dlc [8] " + long8.hex().upper()]
+    got = out.splitlines()
+    check(rc == 0 and err == "" and got == want,
+          "%s: 14 -> 0 ok, warning=critical, a 5- and 8-byte DiscSpeed bad_dlc (%r)" %
+          (tag, [g for g, w in zip(got, want) if g != w] or got[len(want):]))
+
+
 def test_bus_and_usage(sim, tag, log):
     two = log + "(0000000003.000000) can1 123#AA\n(0000000003.010000) can1 123#BB\n"
     rc, out, _ = run(sim, ["decode", "--bus", "can1", "-"], stdin=two)
@@ -156,6 +186,7 @@ def main():
         tag = os.path.basename(os.path.dirname(sim))
         test_text(sim, tag, log)
         test_csv(sim, tag, db, log)
+        test_wrap_level_and_length(sim, tag, db)
         test_bus_and_usage(sim, tag, log)
     R.finish()
 

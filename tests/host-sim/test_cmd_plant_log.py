@@ -4,7 +4,9 @@
 error paths, checked from outside: frames decoded with canmatrix from the
 DBC, E2E with the bitwise CRC-8 of tests/support/dbc_common.py, expected
 values from the scenario definitions (hand-derived: v = 30 - 6 (t - 0.5) m/s,
-DiscSpeed = v / r_w, 0.01 rad/s per bit).
+DiscSpeed = v / r_w, 0.01 rad/s per bit; PadForce 0.5 N per bit, at most
+raw 65534, the DBC's 32767 N: a force there is sent as it is, one beyond it
+is clamped and counted as saturated).
 
 usage: test_plant_log.py [SQUEAL_SIM]   prints "RESULT: N passed, M failed"
 """
@@ -82,6 +84,20 @@ def main():
     c.check(sp == [1000] * 10 and fo == [8001] * 10,
             "point: v0 1.2 m/s -> 10.00 rad/s at r_p 0.12; 4000.5 N -> raw 8001")
     c.check(all(" can7 " in line for line in _.splitlines()), "point: --iface names the log column")
+
+    # --- the force's top: 32767 N is raw 65534 (0.5 N per bit), the DBC's
+    # largest value, sent as it is; 32767.25 N rounds to 65535 (the "not
+    # available" code) and is clamped to 65534 and counted as saturated ----
+    for force, sat in (("32767", 0), ("32767.25", 10)):
+        p = run("plant", "--log", os.devnull, "--scenario", "point", "--v0", "1.2",
+                "--force", force, "--duration", "0.1")
+        line = [x for x in p.stderr.splitlines() if x.lstrip().startswith("PadForce ")]
+        c.check(len(line) == 1 and line[0].endswith("made 10, sent 10, dropped 0, corrupted 0, "
+                                                     "frozen 0, send errors 0, saturated %d" % sat),
+                "point --force %s: PadForce saturated %d times of 10 (%s)" % (force, sat, line))
+        fr, _ = frames_of("--scenario", "point", "--v0", "1.2", "--force", force, "--duration", "0.1")
+        fo = [dec.decode(f)["PadForce_N"] for f in fr if f.id == ID_FORCE]
+        c.check(fo == [65534] * 10, "point --force %s: PadForce raw 65534 (%s)" % (force, fo[:2]))
 
     # --- faults ------------------------------------------------------------
     args = ["--scenario", "point", "--v0", "3", "--force", "9000", "--duration", "20"]
