@@ -16,7 +16,7 @@
  *     below it a WARNING (mon-13);
  *   - the transmit queue holds MONITOR_TX_QUEUE_LEN (8) frames: the ninth,
  *     with nothing sent, is dropped and counted, never written over the
- *     oldest (mon-11).
+ *     oldest.
  * Expected values are hand-derived from the DBC scaling and the calibration.
  */
 #include <setjmp.h>
