@@ -7,7 +7,8 @@
  * (rate checked before any state is touched; restart aborts the mailboxes),
  * the error state from CAN_ESR (passive is not bus-off) and the error
  * frames' class from its LEC, the silent-loopback self-test, and the
- * contract handler for programming errors. Expected values come from RM0090 and hal.h, never from the driver.
+ * contract handler for programming errors. Expected values come from
+ * RM0090 and hal.h, never from the driver.
  */
 #include <setjmp.h>
 #include <stdarg.h>
