@@ -17,10 +17,17 @@ build/test/tests/hal/stm32f4/test_$(1): tests/hal/stm32f4/test_$(1).c hal/stm32f
 		tests/support/regsim/f4/regsim_f4.c $(2) -lcmocka
 endef
 REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest systick
-$(foreach m,$(filter-out selftest clock,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
+$(foreach m,$(filter-out selftest clock systick,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
 $(eval $(call regsim_f4_test,selftest,tests/support/test_contract.c))
 # the clock rates it sets live in the F4/F103 common part
 $(eval $(call regsim_f4_test,clock,hal/stm32f4/chip_common.c hal/stm32f4/hse_meter.c))
+
+# systick.c included by its test, which sets the millisecond count near
+# its 32-bit wrap
+build/test/tests/hal/stm32f4/test_systick: tests/hal/stm32f4/test_systick.c hal/stm32f4/systick.c $(REGSIM_F4_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $@ tests/hal/stm32f4/test_systick.c \
+		tests/support/regsim/f4/regsim_f4.c -lcmocka
 
 # the HSE meter alone on a timer in an array (the test's crystal answers
 # the capture waits)
