@@ -17,10 +17,17 @@ build/test/tests/hal/stm32f4/test_$(1): tests/hal/stm32f4/test_$(1).c hal/stm32f
 		tests/support/regsim/f4/regsim_f4.c $(2) -lcmocka
 endef
 REGSIM_F4_MODULES := clock iwdg can_pins platform_faults selftest systick
-$(foreach m,$(filter-out selftest clock,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
+$(foreach m,$(filter-out selftest clock systick,$(REGSIM_F4_MODULES)),$(eval $(call regsim_f4_test,$(m))))
 $(eval $(call regsim_f4_test,selftest,tests/support/test_contract.c))
 # the clock rates it sets live in the F4/F103 common part
 $(eval $(call regsim_f4_test,clock,hal/stm32f4/chip_common.c hal/stm32f4/hse_meter.c))
+
+# systick.c included by its test, which sets the millisecond count near
+# its 32-bit wrap
+build/test/tests/hal/stm32f4/test_systick: tests/hal/stm32f4/test_systick.c hal/stm32f4/systick.c $(REGSIM_F4_DEPS)
+	@mkdir -p $(@D)
+	$(CC) $(REGSIM_CFLAGS) -Itests/support/regsim/f4 -o $@ tests/hal/stm32f4/test_systick.c \
+		tests/support/regsim/f4/regsim_f4.c -lcmocka
 
 # the HSE meter alone on a timer in an array (the test's crystal answers
 # the capture waits)
@@ -61,12 +68,15 @@ build/test/tests/hal/stm32f4/test_flash: tests/hal/stm32f4/test_flash.c build/te
 TEST_PROGS += build/test/tests/hal/stm32f4/test_flash
 
 # -DBXCAN_SIM: bxcan.c's register accessors go to the test (bus 1 must
-# answer SQ_ENODEV without touching one)
+# answer SQ_ENODEV without touching one); the calibration slots from the
+# link as on the target (linker/stm32f103xb.ld: two slots of 2 KiB) in the
+# test's flash array, no PIE so that their addresses fit in 32 bits
 build/test/tests/hal/stm32f103/test_chip_f1: tests/hal/stm32f103/test_chip_f1.c hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/chip_common.c \
 		hal/stm32f4/bxcan.c hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c hal/stm32f4/can_queue.c \
 		tests/support/regsim/f103/chip.h hal/stm32f103/stm32f103xb/chip.h
 	@mkdir -p $(@D)
-	$(CC) $(REGSIM_CFLAGS) -DBXCAN_SIM -Itests/support/regsim/f103 -o $@ tests/hal/stm32f103/test_chip_f1.c \
+	$(CC) $(REGSIM_CFLAGS) -DBXCAN_SIM -Itests/support/regsim/f103 -fno-pie -no-pie -o $@ tests/hal/stm32f103/test_chip_f1.c \
 		hal/stm32f103/chip_f1.c hal/stm32f4/iwdg.c hal/stm32f4/chip_common.c hal/stm32f4/bxcan.c \
-		hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c hal/stm32f4/can_queue.c -lcmocka
+		hal/stm32f4/bxcan_timing.c hal/common/hal_can_common.c hal/stm32f4/can_queue.c -lcmocka \
+		-Wl,--defsym,__calib_start=regsim_f1_flash_mem,--defsym,__calib_slot_size=2048
 TEST_PROGS += build/test/tests/hal/stm32f103/test_chip_f1

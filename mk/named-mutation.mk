@@ -64,3 +64,16 @@ $(foreach v,$(HAL_VBUS_TEST_VARIANTS),$(eval $(call hal_vbus_test_rules,$(v),tes
 TEST_PROGS += $(foreach v,$(HAL_VBUS_TEST_VARIANTS),build/$(v)/tests/hal/vbus/test_hal_vbus_can_rx)
 #   tests/tools/test_dbc_tolerant_empty.py  a DBC file whose messages all go is refused
 TEST_PROGS += tests/tools/test_dbc_tolerant_empty.py
+# ---- hal
+#   build/test/tests/hal/linux/test_hal_linux_calib_verify  a read-back that differs is SQ_EIO (write() wrapped)
+#   build/test/tests/hal/linux/test_hal_linux_idle_deadline  the watchdog's exact deadline (hal_time_us wrapped)
+#   build/test/tests/hal/linux/test_hal_linux_can_open  name length and socket errors (socket() wrapped)
+HAL_LINUX_WRAPPED := test_hal_linux_calib_verify:write test_hal_linux_idle_deadline:hal_time_us \
+	test_hal_linux_can_open:socket
+define hal_linux_wrapped_test
+build/test/tests/hal/linux/$(1): build/test/app/tests/hal/linux/$(1).o build/test/app/tests/support/test_contract.o build/test/libhal_linux.a
+	@mkdir -p $$(@D)
+	$$(CC) $$(OPT_test) -Wl,--wrap=$(2) -o $$@ $$^ -lcmocka
+TEST_PROGS += build/test/tests/hal/linux/$(1)
+endef
+$(foreach t,$(HAL_LINUX_WRAPPED),$(eval $(call hal_linux_wrapped_test,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))))))

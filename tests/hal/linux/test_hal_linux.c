@@ -3,9 +3,10 @@
  * hal/linux without a CAN bus, on the build host itself: the "kernel
  * without CAN" message (when this host's kernel really has none, through
  * hal_linux.c's error text and fault bits), the closed-socket contract. The
- * CAN socket itself is tested on vcan in the guest (selftest_hal_linux.c);
- * time, idle and calibration file: test_hal_linux_time.c,
- * test_hal_linux_idle.c, test_hal_linux_calib.c.
+ * CAN socket itself is tested on vcan in the guest (selftest_hal_linux.c),
+ * the open's name check and socket errors on a wrapped socket() in
+ * test_hal_linux_can_open.c; time, idle and calibration file:
+ * test_hal_linux_time.c, test_hal_linux_idle.c, test_hal_linux_calib.c.
  */
 #include <errno.h>
 #include <setjmp.h>

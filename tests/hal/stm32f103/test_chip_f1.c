@@ -9,7 +9,17 @@
  *   - IWDG reload for the fastest F103 LSI (60 kHz, datasheet), DBGMCU_CR
  *     DBG_IWDG_STOP (bit 8);
  *   - single bus: every CAN call on bus 1 answers SQ_ENODEV and touches no
- *     register; bus 2 is a programming error.
+ *     register; bus 2 is a programming error;
+ *   - calibration flash (RM0008 3.3.3, PM0075 2.3-2.4): the two slots of
+ *     two 1 KiB pages (the link's __calib_slot_size, 2048, as in
+ *     linker/stm32f103xb.ld) are erased page by page, FLASH_AR = the page's
+ *     address, the slot's first page first; slot 2 does not exist. Flash
+ *     is programmed in half-words at even addresses (FLASH_CR.PG): an odd
+ *     address is refused, an odd length's last byte goes with an 0xFF
+ *     above it, the byte after it left erased. The unlock sequence is
+ *     chip_common.c's (tests/hal/stm32f4/test_chip_common.c): here FLASH_CR
+ *     is left unlocked before each call, and the test's wait on FLASH_SR
+ *     performs the page erase FLASH_CR.STRT asks for.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -30,9 +40,40 @@
 #include "stm32_time.h"
 
 uint32_t regsim_rcc[64], regsim_afio[8], regsim_gpiob[8], regsim_flash[8], regsim_iwdg[4], regsim_dbgmcu[4];
-const uint8_t __calib_start[1];
-const uint8_t __calib_slot_size[1];
+/* the two calibration slots: the link puts __calib_start here
+ * (--defsym), with no PIE so that their addresses fit in 32 bits */
+uint8_t regsim_f1_flash_mem[2U * 2048U] __attribute__((aligned(4)));
 static uint32_t can_accesses;
+
+#define F1_FLASH_SR regsim_flash[0x0CU / 4U]
+#define F1_FLASH_CR regsim_flash[0x10U / 4U]
+#define F1_FLASH_AR regsim_flash[0x14U / 4U]
+#define F1_CR_PG (1U << 0)
+#define F1_CR_PER (1U << 1)
+#define F1_CR_STRT (1U << 6)
+#define F1_CR_LOCK (1U << 7)
+static uint32_t erased_at[8]; /* FLASH_AR of each page erase */
+static uint32_t n_erased;
+
+static uint32_t flash_addr(uint32_t off)
+{
+	return (uint32_t)(uintptr_t)regsim_f1_flash_mem + off;
+}
+
+/* A page erase (PER, then STRT) runs while the code waits for BSY: the
+ * 1 KiB page at FLASH_AR becomes 0xFF, STRT clears. */
+static void flash_page_erase(void)
+{
+	const uint32_t off = F1_FLASH_AR - flash_addr(0U);
+
+	if (n_erased < 8U) {
+		erased_at[n_erased] = F1_FLASH_AR;
+	}
+	n_erased++;
+	assert_true(off < sizeof(regsim_f1_flash_mem) && off % 1024U == 0U);
+	memset(&regsim_f1_flash_mem[off], 0xFF, 1024U);
+	F1_FLASH_CR &= ~F1_CR_STRT;
+}
 
 /* ---- what the files under test need --------------------------------------- */
 
@@ -44,6 +85,14 @@ void stm32_time_early_init(uint32_t core_hz)
 int stm32_wait_reg(volatile const uint32_t *reg, uint32_t mask, uint32_t value, uint32_t timeout_us)
 {
 	(void)timeout_us;
+	if (reg == &F1_FLASH_SR) {
+		/* FLASH_SR's flags are write-1-to-clear and this flash raises
+		 * none: what the code wrote there is cleared */
+		F1_FLASH_SR = 0U;
+		if ((F1_FLASH_CR & (F1_CR_PER | F1_CR_STRT)) == (F1_CR_PER | F1_CR_STRT)) {
+			flash_page_erase();
+		}
+	}
 	return ((*reg & mask) == value) ? SQ_OK : SQ_EAGAIN;
 }
 
@@ -117,6 +166,9 @@ static int setup(void **state)
 	memset(regsim_gpiob, 0, sizeof(regsim_gpiob));
 	memset(regsim_iwdg, 0, sizeof(regsim_iwdg));
 	memset(regsim_dbgmcu, 0, sizeof(regsim_dbgmcu));
+	memset(regsim_flash, 0, sizeof(regsim_flash));
+	memset(regsim_f1_flash_mem, 0x00, sizeof(regsim_f1_flash_mem)); /* old data */
+	n_erased = 0U;
 	can_accesses = 0U;
 	return 0;
 }
@@ -193,8 +245,67 @@ static void test_bus1_is_enodev(void **state)
 	expect_assert_failure(hal_can_send(2U, &f));
 }
 
+/* Slot 0 is pages 0 and 1 of the slots, slot 1 pages 2 and 3, each slot's
+ * first page first; slot 2 would be the flash after them: refused, nothing
+ * erased. */
+static void test_flash_erase_slot_pages(void **state)
+{
+	(void)state;
+	assert_int_equal(chip_flash_erase_slot(1U), SQ_OK);
+	assert_int_equal(n_erased, 2U);
+	assert_int_equal(erased_at[0], flash_addr(2048U));
+	assert_int_equal(erased_at[1], flash_addr(3072U));
+	assert_int_equal(regsim_f1_flash_mem[2048], 0xFFU);
+	assert_int_equal(regsim_f1_flash_mem[4095], 0xFFU);
+	assert_int_equal(regsim_f1_flash_mem[2047], 0x00U); /* slot 0 untouched */
+	assert_int_equal(F1_FLASH_CR, F1_CR_LOCK);           /* locked again */
+	F1_FLASH_CR = 0U;
+	assert_int_equal(chip_flash_erase_slot(0U), SQ_OK);
+	assert_int_equal(n_erased, 4U);
+	assert_int_equal(erased_at[2], flash_addr(0U));
+	assert_int_equal(erased_at[3], flash_addr(1024U));
+	F1_FLASH_CR = 0U;
+	assert_int_equal(chip_flash_erase_slot(2U), SQ_EINVAL);
+	assert_int_equal(n_erased, 4U);
+	assert_int_equal(F1_FLASH_CR, 0U); /* not even unlocked */
+}
+
+/* Half-words, little-endian: 5 bytes are 0x2211, 0x4433 and 0xFF55 (the
+ * odd last byte with an erased byte above it); byte 5 stays erased. */
+static void test_flash_program_half_words(void **state)
+{
+	static const uint8_t data[5] = { 0x11, 0x22, 0x33, 0x44, 0x55 };
+	static const uint8_t want[8] = { 0x11, 0x22, 0x33, 0x44, 0x55, 0xFF, 0xFF, 0xFF };
+
+	(void)state;
+	memset(regsim_f1_flash_mem, 0xFF, sizeof(regsim_f1_flash_mem)); /* erased */
+	assert_int_equal(chip_flash_program(flash_addr(16U), data, sizeof(data)), SQ_OK);
+	assert_memory_equal(&regsim_f1_flash_mem[16], want, sizeof(want));
+	assert_int_equal(regsim_f1_flash_mem[15], 0xFFU);
+	assert_int_equal(F1_FLASH_CR, F1_CR_LOCK);
+}
+
+/* A half-word starts at an even address (PM0075 2.3.3): an odd one is
+ * refused before anything is written. */
+static void test_flash_program_odd_address_refused(void **state)
+{
+	static const uint8_t data[2] = { 0x12, 0x34 };
+
+	(void)state;
+	memset(regsim_f1_flash_mem, 0xFF, sizeof(regsim_f1_flash_mem));
+	assert_int_equal(chip_flash_program(flash_addr(17U), data, sizeof(data)), SQ_EINVAL);
+	assert_int_equal(regsim_f1_flash_mem[16], 0xFFU);
+	assert_int_equal(regsim_f1_flash_mem[17], 0xFFU);
+	assert_int_equal(regsim_f1_flash_mem[18], 0xFFU);
+	assert_int_equal(F1_FLASH_CR, 0U); /* not even unlocked */
+	assert_int_equal(chip_flash_program(flash_addr(16U), NULL, 2U), SQ_EINVAL);
+}
+
 SQ_CMOCKA_MAIN(
 	cmocka_unit_test_setup(test_afio_swj_cfg_masked, setup),
 	cmocka_unit_test_setup(test_can_pins_bus1_untouched, setup),
 	cmocka_unit_test_setup(test_iwdg_fastest_lsi_and_debug_freeze, setup),
-	cmocka_unit_test_setup(test_bus1_is_enodev, setup))
+	cmocka_unit_test_setup(test_bus1_is_enodev, setup),
+	cmocka_unit_test_setup(test_flash_erase_slot_pages, setup),
+	cmocka_unit_test_setup(test_flash_program_half_words, setup),
+	cmocka_unit_test_setup(test_flash_program_odd_address_refused, setup))

@@ -517,20 +517,42 @@ bool cortex_sim_irq_round(void)
 	return any;
 }
 
-void sim_error_frame(uint8_t bus)
+void sim_error_code(uint8_t bus, uint32_t lec)
 {
 	ctl_t *k = &ctl[bus];
 
 	if (!running(bus)) {
 		return;
 	}
-	k->esr = (k->esr & ~CAN_ESR_LEC_MSK) | (3U << CAN_ESR_LEC_SHIFT); /* form error */
+	k->esr = (k->esr & ~CAN_ESR_LEC_MSK) | ((lec & 7U) << CAN_ESR_LEC_SHIFT);
 	k->esr += 1U << CAN_ESR_REC_SHIFT;
 	k->msr |= CAN_MSR_ERRI;
 	if ((k->btr & CAN_BTR_SILM) == 0U) {
 		wire_sim_dominant(bus); /* its error flag */
 	}
 	cortex_sim_irqs();
+}
+
+void sim_error_frame(uint8_t bus)
+{
+	sim_error_code(bus, 3U); /* acknowledgment error */
+}
+
+void sim_error_counters(uint8_t bus, uint8_t tec, uint8_t rec)
+{
+	ctl_t *k = &ctl[bus];
+	uint32_t flags = 0U;
+
+	if (tec >= 96U || rec >= 96U) {
+		flags |= CAN_ESR_EWGF;
+	}
+	if (tec > 127U || rec > 127U) {
+		flags |= CAN_ESR_EPVF;
+	}
+	k->esr = (k->esr & CAN_ESR_LEC_MSK) | flags | ((uint32_t)tec << CAN_ESR_TEC_SHIFT) |
+		 ((uint32_t)rec << CAN_ESR_REC_SHIFT);
+	k->msr |= CAN_MSR_ERRI;
+	cortex_sim_run();
 }
 
 bool sim_inject(uint8_t bus, const hal_can_frame_t *f)

@@ -36,8 +36,16 @@ uint32_t sim_wire_count(uint8_t bus);
  * ACKs and error flags (silent mode must leave this at 0). */
 uint32_t sim_dominant_count(uint8_t bus);
 
+/* An error with last error code lec (CAN_ESR.LEC, RM0090 32.9.2: 1 stuff,
+ * 2 form, 3 acknowledgment, 4 bit recessive, 5 bit dominant, 6 CRC), REC
+ * + 1, the status-change interrupt pending; sim_error_frame: lec 3. */
+void sim_error_code(uint8_t bus, uint32_t lec);
 void sim_error_frame(uint8_t bus);
 bool sim_bus_off(uint8_t bus, bool on); /* true: not bus-off */
+/* The error counters as the bus left them, flags as CAN_ESR sets them
+ * (RM0090 32.9.2): EWGF at TEC or REC >= 96, EPVF above 127; BOFF only by
+ * sim_bus_off. The status-change interrupt pending. */
+void sim_error_counters(uint8_t bus, uint8_t tec, uint8_t rec);
 void sim_block_tx(uint8_t bus, bool blocked);
 /* The controller ignores initialisation requests (no clock, QEMU). */
 void sim_controller_dead(uint8_t bus, bool dead);

@@ -5,8 +5,10 @@
  * filters, silent mode for listen-only (nothing dominant on the wire), bus
  * separation, CAN2 needing CAN1's clock, the exact bit-rate check
  * (rate checked before any state is touched; restart aborts the mailboxes),
- * the silent-loopback self-test, and the contract handler for programming
- * errors. Expected values come from RM0090 and hal.h, never from the driver.
+ * the error state from CAN_ESR (passive is not bus-off) and the error
+ * frames' class from its LEC, the silent-loopback self-test, and the
+ * contract handler for programming errors. Expected values come from
+ * RM0090 and hal.h, never from the driver.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -393,6 +395,66 @@ static void test_bus_off_and_error_frames_per_bus(void **state)
 	assert_int_equal(st.error_frames, 0U);
 }
 
+/* The state from CAN_ESR (RM0090 32.9.2): EWGF at a counter >= 96 is
+ * warning, EPVF above 127 passive, and only BOFF (TEC beyond 255) is
+ * bus-off: an error-passive node still sends (its frames are ACKed), and a
+ * bus-off count there would report a fault that did not happen. */
+static void test_error_passive_is_not_bus_off(void **state)
+{
+	hal_can_status_t st;
+	hal_can_frame_t f = std_frame(0x2U, 0U);
+
+	(void)state;
+	sim_error_counters(0U, 96U, 0U);
+	assert_int_equal(hal_can_get_status(0U, &st), SQ_OK);
+	assert_int_equal(st.state, HAL_CAN_STATE_ERROR_WARNING);
+	assert_int_equal(st.tx_error_count, 96U);
+	sim_error_counters(0U, 128U, 5U);
+	assert_int_equal(hal_can_get_status(0U, &st), SQ_OK);
+	assert_int_equal(st.state, HAL_CAN_STATE_ERROR_PASSIVE);
+	assert_int_equal(st.tx_error_count, 128U);
+	assert_int_equal(st.rx_error_count, 5U);
+	assert_int_equal(st.bus_off_count, 0U);
+	assert_int_equal(hal_can_send(0U, &f), SQ_OK);
+	sim_error_counters(0U, 0U, 200U); /* a receive-side passive node */
+	assert_int_equal(hal_can_get_status(0U, &st), SQ_OK);
+	assert_int_equal(st.state, HAL_CAN_STATE_ERROR_PASSIVE);
+	assert_int_equal(st.bus_off_count, 0U);
+	sim_error_counters(0U, 0U, 0U);
+	assert_int_equal(hal_can_get_status(0U, &st), SQ_OK);
+	assert_int_equal(st.state, HAL_CAN_STATE_ERROR_ACTIVE);
+	assert_int_equal(st.bus_off_count, 0U);
+}
+
+/* Each error the controller saw is handed on as an error frame whose id is
+ * SocketCAN's error class (linux/can/error.h): CAN_ESR.LEC 3, an
+ * acknowledgment error, is 0x20 (CAN_ERR_ACK: nobody acknowledged, e.g. the
+ * ECU alone on the bus); the other codes (stuff 1, form 2, bit 4 and 5, CRC
+ * 6) are protocol violations, 0x08 (CAN_ERR_PROT); data[6] = TEC and
+ * data[7] = REC as SocketCAN puts them. */
+static void test_error_frame_class_from_lec(void **state)
+{
+	static const struct {
+		uint32_t lec;
+		uint32_t id;
+	} cases[] = { { 3U, 0x20U }, { 1U, 0x08U }, { 2U, 0x08U }, { 4U, 0x08U },
+		      { 5U, 0x08U }, { 6U, 0x08U } };
+	hal_can_frame_t got;
+	uint32_t i;
+
+	(void)state;
+	for (i = 0U; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		sim_error_code(0U, cases[i].lec);
+		assert_int_equal(hal_can_receive(0U, &got), SQ_OK);
+		assert_int_equal(got.flags, HAL_CAN_FLAG_ERR);
+		assert_int_equal(got.id, cases[i].id);
+		assert_int_equal(got.dlc, 8U);
+		assert_int_equal(got.data[6], 0U);
+		assert_int_equal(got.data[7], i + 1U); /* REC: one per error */
+		assert_int_equal(hal_can_receive(0U, &got), SQ_EAGAIN);
+	}
+}
+
 /* CAN2 alone: the driver must clock CAN1 too (its filters live there). The
  * second half shows the simulation would notice: without CAN1's clock
  * CAN2 receives nothing. */
@@ -479,6 +541,8 @@ SQ_CMOCKA_MAIN(
 	cmocka_unit_test_setup(test_rate_change_aborts_and_restarts, setup_both),
 	cmocka_unit_test_setup(test_tx_queue_full_and_drain_in_order, setup_both),
 	cmocka_unit_test_setup(test_bus_off_and_error_frames_per_bus, setup_both),
+	cmocka_unit_test_setup(test_error_passive_is_not_bus_off, setup_both),
+	cmocka_unit_test_setup(test_error_frame_class_from_lec, setup_both),
 	cmocka_unit_test(test_can2_needs_can1_clock),
 	cmocka_unit_test(test_selftest_loopback),
 	cmocka_unit_test(test_selftest_dead_controller),

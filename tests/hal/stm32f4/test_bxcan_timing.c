@@ -103,6 +103,27 @@ static void test_rejects_inexact_and_bad(void **state)
 	assert_int_equal(btr, 0x12345678U); /* untouched on failure */
 }
 
+/* The largest prescaler, BRP field 0x3FF = 1024 clocks per quantum
+ * (RM0090 32.9.2: BRP[9:0], tq = (BRP+1) tPCLK), is usable: 1 kbit/s at
+ * 25.6 MHz is 25600 = 2^10 * 25 clocks per bit, which 8..25 quanta divide
+ * at 8, 10, 16, 20 and 25 quanta into prescalers 3200, 2560, 1600, 1280
+ * and 1024: only 25 quanta of 1024 fit; BS1 + BS2 = 24 with BS1 <= 16 and
+ * BS2 <= 8 leaves 1 + 16 + 8 (sample point 68 %). One clock more per
+ * quantum is beyond the field: 1 kbit/s at 25.625 MHz (25625 = 5^4 * 41
+ * clocks, divisible by 25 only: prescaler 1025) has no timing. */
+static void test_largest_prescaler_1024(void **state)
+{
+	uint32_t btr = 0x12345678U;
+
+	(void)state;
+	expect_timing(25600000U, 1000U, 1024U, 16U, 8U);
+	assert_int_equal(bxcan_bit_timing(25600000U, 1000U, &btr), SQ_OK);
+	assert_int_equal(btr, 0x007F03FFU); /* TS2 7, TS1 15, BRP 1023 */
+	btr = 0x12345678U;
+	assert_int_equal(bxcan_bit_timing(25625000U, 1000U, &btr), SQ_EINVAL);
+	assert_int_equal(btr, 0x12345678U);
+}
+
 SQ_CMOCKA_MAIN(
 	cmocka_unit_test(test_500k_at_42mhz),
 	cmocka_unit_test(test_250k_at_42mhz),
@@ -110,4 +131,5 @@ SQ_CMOCKA_MAIN(
 	cmocka_unit_test(test_1m_at_42mhz),
 	cmocka_unit_test(test_500k_on_hsi),
 	cmocka_unit_test(test_500k_at_36mhz),
-	cmocka_unit_test(test_rejects_inexact_and_bad))
+	cmocka_unit_test(test_rejects_inexact_and_bad),
+	cmocka_unit_test(test_largest_prescaler_1024))

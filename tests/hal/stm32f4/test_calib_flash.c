@@ -55,16 +55,21 @@ int chip_flash_erase_slot(uint32_t slot)
 	return SQ_OK;
 }
 
+/* Worn cells: bits set here stay 1 (erased) whatever is programmed, and
+ * the program still reports success (a driver that does not read back). */
+static uint8_t stuck[2U * SLOT];
+
 int chip_flash_program(uint32_t addr, const uint8_t *data, uint32_t len)
 {
 	uint8_t *p = (uint8_t *)(uintptr_t)addr;
+	const size_t at = (size_t)(p - calib_flash_sim);
 	uint32_t i;
 
 	for (i = 0; i < len; i++) {
 		if (!spend()) {
 			return SQ_EIO;
 		}
-		p[i] &= data[i]; /* NOR: bits only go from 1 to 0 */
+		p[i] &= (uint8_t)(data[i] | stuck[at + i]); /* NOR: bits only go from 1 to 0 */
 	}
 	return SQ_OK;
 }
@@ -96,6 +101,7 @@ static int setup(void **state)
 {
 	(void)state;
 	memset(calib_flash_sim, 0x00, sizeof(calib_flash_sim)); /* garbage, not erased */
+	memset(stuck, 0x00, sizeof(stuck));
 	budget = -1;
 	faults = 0U;
 	watchdog_running = false;
@@ -302,6 +308,43 @@ static void test_short_block_pads_and_bad_args(void **state)
 	assert_int_equal(hal_calib_read(big, sizeof(big)), SQ_EINVAL);
 }
 
+/* A slot that reads back as a valid block, but not the one written, is a
+ * failed write. The first write to empty slots is seq 1; with the 8-byte
+ * payload below its CRC-32 over (seq, len, payload) is 0x384E0880, and with
+ * seq 3 it is 0xBFEE2DE3 = 0x384E0880 | 0x87A02563 (zlib.crc32, and
+ * crc32_ref here). Worn cells that stay 1 at bit 1 of the seq's first byte
+ * and at the bits 0x87A02563 of the CRC therefore turn the written block
+ * into a valid block with seq 3: its magic, length and CRC check, only its
+ * sequence number says it is not what was written. hal_calib_write must
+ * report SQ_EIO with the storage fault (the slot cannot be trusted to
+ * order the next write), not success. */
+static void test_valid_read_back_with_another_seq_is_eio(void **state)
+{
+	static const uint8_t payload[8] = { 0x73, 0x0E, 0x00, 0x00, 0x5A, 0x5A, 0x5A, 0x5A };
+	uint8_t meta[8];
+	uint32_t crc1;
+	uint32_t crc3;
+
+	(void)state;
+	put32(&meta[0], 1U);
+	put32(&meta[4], 8U);
+	crc1 = ~crc32_ref(payload, 8U, crc32_ref(meta, 8U, 0xFFFFFFFFU));
+	put32(&meta[0], 3U);
+	crc3 = ~crc32_ref(payload, 8U, crc32_ref(meta, 8U, 0xFFFFFFFFU));
+	assert_int_equal(crc1, 0x384E0880U);
+	assert_int_equal(crc3, 0xBFEE2DE3U);
+	stuck[4] = 0x02U;  /* seq 1 reads as 3 */
+	put32(&stuck[12], 0x87A02563U); /* and the CRC as seq 3's */
+
+	assert_int_equal(hal_calib_write(payload, sizeof(payload)), SQ_EIO);
+	assert_int_equal(faults & HAL_FAULT_CALIB_STORAGE, HAL_FAULT_CALIB_STORAGE);
+	/* what slot 0 holds: magic, seq 3, len 8, seq 3's CRC, the payload */
+	assert_int_equal(calib_flash_sim[4], 3U);
+	assert_int_equal(calib_flash_sim[12], 0xE3U);
+	assert_int_equal(calib_flash_sim[15], 0xBFU);
+	assert_memory_equal(&calib_flash_sim[16], payload, sizeof(payload));
+}
+
 /* an erase stalls the CPU longer than a watchdog period, so a
  * write is refused once the IWDG runs: SQ_EAGAIN, flash untouched (no
  * erase, no byte programmed), no storage fault; the stored block stays. */
@@ -347,4 +390,5 @@ SQ_CMOCKA_MAIN(
 	cmocka_unit_test_setup(test_sequence_wraps, setup),
 	cmocka_unit_test_setup(test_short_block_pads_and_bad_args, setup),
 	cmocka_unit_test_setup(test_failed_erase_reports_storage_fault, setup),
+	cmocka_unit_test_setup(test_valid_read_back_with_another_seq_is_eio, setup),
 	cmocka_unit_test_setup(test_write_refused_while_watchdog_runs, setup))

@@ -80,6 +80,13 @@ static void test_iwdg_fastest_lsi_and_debug_freeze(void **state)
 	assert_true((regsim_dbgmcu[2] & (1U << 12)) != 0U); /* DBG_IWDG_STOP */
 	assert_int_equal(regsim_iwdg[0], 0xAAAAU);            /* last key: reload */
 	assert_true(stm32_watchdog_running());
+	/* a reload of exactly 4096 counts (RLR 0xFFF, the 12-bit field's
+	 * largest) is used, not the next prescaler: 5577 ms at 47 kHz are
+	 * 262119 LSI periods, / 64 = 4095.6, rounded up 4096 (PR 4, /64);
+	 * /32 would need 8192 */
+	assert_int_equal(hal_watchdog_start(5577U), SQ_OK);
+	assert_int_equal(IWDG_PR, 4U);
+	assert_int_equal(IWDG_RLR, 0xFFFU);
 	/* 30 s cannot be reached at 47 kHz (4096 * 256 / 47 kHz = 22.3 s) */
 	assert_int_equal(hal_watchdog_start(30000U), SQ_EINVAL);
 	assert_int_equal(hal_watchdog_start(0U), SQ_EINVAL);

@@ -9,7 +9,10 @@
  * key 0xC5ACCE55): at 168 MHz one millisecond is 168000 ticks, hal_time_us
  * = ms * 1000 + (167999 - CVR) / 168. The tests run in order: the module's
  * state (the millisecond count, the last reading) carries from one to the
- * next as on the chip.
+ * next as on the chip. systick.c is included here, not linked: the last
+ * test sets its millisecond count 2 ms before the 32-bit wrap (49.7 days
+ * of ticks, 7 s of calls under the sanitizers) to see the time go on past
+ * it.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -25,6 +28,8 @@
 #include "hal.h"
 #include "sq_status.h"
 #include "stm32_time.h"
+
+#include "../../../hal/stm32f4/systick.c"
 
 uint32_t regsim_syst[3], regsim_scb_icsr, regsim_scb_shpr3, regsim_demcr, regsim_dwt[3];
 
@@ -213,6 +218,25 @@ static void test_a_stopped_systick_still_ends_the_wait(void **state)
 	assert_int_equal(stm32_wait_reg(&flag, 3U, 0U, 1U), SQ_EAGAIN);
 }
 
+/* After 2^32 ms (49.7 days) the 32-bit count wraps to 0, and the 64-bit
+ * time goes on: 4294967296 ms is 4294967296000 us. */
+static void test_time_goes_on_past_the_32_bit_millisecond_wrap(void **state)
+{
+	(void)state;
+	tick_ms = 0xFFFFFFFEU;
+	cvr_steady(cvr_at_us(10U));
+	assert_int_equal(hal_time_us(), 4294967294010ULL);
+	SysTick_Handler();
+	assert_int_equal(stm32_uptime_ms(), 0xFFFFFFFFU);
+	assert_int_equal(hal_time_us(), 4294967295010ULL);
+	SysTick_Handler();
+	assert_int_equal(stm32_uptime_ms(), 0U);
+	assert_int_equal(hal_time_us(), 4294967296010ULL);
+	SysTick_Handler();
+	cvr_steady(cvr_at_us(20U));
+	assert_int_equal(hal_time_us(), 4294967297020ULL);
+}
+
 SQ_CMOCKA_MAIN(
 	cmocka_unit_test(test_early_free_running_and_zero_before_start),
 	cmocka_unit_test(test_start_programs_systick_and_dwt),
@@ -220,4 +244,5 @@ SQ_CMOCKA_MAIN(
 	cmocka_unit_test(test_a_wrap_not_yet_served_counts_the_millisecond),
 	cmocka_unit_test(test_cycles_from_dwt_or_from_systick),
 	cmocka_unit_test(test_timeout_counts_ticks_across_the_reload),
-	cmocka_unit_test(test_a_stopped_systick_still_ends_the_wait))
+	cmocka_unit_test(test_a_stopped_systick_still_ends_the_wait),
+	cmocka_unit_test(test_time_goes_on_past_the_32_bit_millisecond_wrap))

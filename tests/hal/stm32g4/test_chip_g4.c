@@ -10,7 +10,8 @@
  * formulas and tables worked by hand: f_VCO = 24 MHz / M * N = 340 MHz,
  * SYSCLK = f_VCO / R = 170 MHz; 4 wait states for 136..170 MHz in boost
  * mode; BOR_LEV codes; RCC_CSR flags; 2 KiB pages with DBANK 1 (bank 2
- * from 0x08040000), 4 KiB with DBANK 0. The chip part has no numeric-build
+ * from 0x08040000), 4 KiB with DBANK 0, pages 0..127 in a bank either
+ * way. The chip part has no numeric-build
  * dependence, so one build covers both.
  */
 #include <setjmp.h>
@@ -42,6 +43,7 @@ uint32_t regsim_rcc[64], regsim_pwr[40], regsim_flash[16], regsim_tim17[32], reg
 	regsim_gpiob[16], regsim_keyr_log[8], regsim_keyr_n;
 uint32_t regsim_iwdg[4], regsim_dbgmcu[4];
 uint8_t regsim_flash_mem[8192] __attribute__((aligned(8)));
+uint32_t regsim_flash_mem_at = 0x7E000U;
 /* the linker symbols of the calibration slots (chip_g4.c) */
 extern const uint8_t __calib_start[];
 
@@ -161,7 +163,7 @@ uint8_t regsim_flash_load8(uint32_t addr)
 
 	assert_true(off < sizeof(regsim_flash_mem));
 	if (ecc_broken[off / 8U]) {
-		const uint32_t in_flash = 0x7E000U + (off & ~7U);
+		const uint32_t in_flash = regsim_flash_mem_at + (off & ~7U);
 		const bool dual_bank = (FLASH_OPTR & (1U << 22)) != 0U;
 
 		FLASH_ECCR = (1U << 31) | (dual_bank ? ((1U << 21) | (in_flash - 0x40000U)) : in_flash);
@@ -188,11 +190,14 @@ static void flash_erase(void)
 		erased[n_erased][1] = pnb;
 		n_erased++;
 	}
-	assert_true(off >= 0x7E000U && off + page_bytes <= 0x80000U); /* calibration only */
-	power_spend(true, off - 0x7E000U, page_bytes);
-	memset(&regsim_flash_mem[off - 0x7E000U], 0xFF, page_bytes);
-	memset(&ecc_broken[(off - 0x7E000U) / 8U], 0, page_bytes / 8U);
-	memcpy(&shadow[off - 0x7E000U], &regsim_flash_mem[off - 0x7E000U], page_bytes);
+	/* calibration only, inside the 512 KiB */
+	assert_true(off >= regsim_flash_mem_at && off + page_bytes <= regsim_flash_mem_at + sizeof(regsim_flash_mem));
+	assert_true(off + page_bytes <= 0x80000U);
+	off -= regsim_flash_mem_at;
+	power_spend(true, off, page_bytes);
+	memset(&regsim_flash_mem[off], 0xFF, page_bytes);
+	memset(&ecc_broken[off / 8U], 0, page_bytes / 8U);
+	memcpy(&shadow[off], &regsim_flash_mem[off], page_bytes);
 	flash_cr &= ~(1U << 16);
 }
 
@@ -237,6 +242,7 @@ static int setup(void **state)
 	memset(regsim_gpioa, 0, sizeof(regsim_gpioa));
 	memset(regsim_gpiob, 0, sizeof(regsim_gpiob));
 	memset(regsim_flash_mem, 0x00, sizeof(regsim_flash_mem)); /* "old data" */
+	regsim_flash_mem_at = 0x7E000U;
 	RCC_CFGR = 5U;                 /* reset: SW = SWS = HSI16 */
 	PWR_CR1 = 1U << 9;             /* reset: range 1 */
 	PWR_CR5 = 1U << 8;             /* reset: R1MODE 1 (normal) */
@@ -429,6 +435,64 @@ static void test_erase_single_bank(void **state)
 	assert_int_equal(regsim_flash_mem[4096], 0x00U);
 }
 
+/* The slots one page further up (DBANK 0: 4 KiB pages 0..127 of the one
+ * bank, 512 KiB): slot 0 is page 127, the flash's last; slot 1 would be
+ * page 128, beyond the flash: refused, nothing erased. */
+static void test_erase_single_bank_last_page(void **state)
+{
+	(void)state;
+	FLASH_OPTR &= ~(1U << 22);
+	regsim_flash_mem_at = 0x7F000U;
+	assert_int_equal(chip_flash_erase_slot(0U), SQ_OK);
+	assert_int_equal(n_erased, 1U);
+	assert_int_equal(erased[0][0], 0U);
+	assert_int_equal(erased[0][1], 127U);
+	assert_int_equal(regsim_flash_mem[4095], 0xFFU);
+	assert_int_equal(chip_flash_erase_slot(1U), SQ_EINVAL);
+	assert_int_equal(n_erased, 1U);
+	assert_int_equal(regsim_flash_mem[4096], 0x00U);
+}
+
+/* DBANK 1 with slot 1 starting exactly at bank 2 (0x08040000): bank 2's
+ * pages 0 and 1 (BKER 1); slot 0 the last two pages of bank 1, 126 and
+ * 127 (BKER 0). */
+static void test_erase_dual_bank_at_bank2_start(void **state)
+{
+	(void)state;
+	regsim_flash_mem_at = 0x3F000U;
+	assert_int_equal(chip_flash_erase_slot(1U), SQ_OK);
+	assert_int_equal(n_erased, 2U);
+	assert_int_equal(erased[0][0], 1U);
+	assert_int_equal(erased[0][1], 0U);
+	assert_int_equal(erased[1][0], 1U);
+	assert_int_equal(erased[1][1], 1U);
+	assert_int_equal(chip_flash_erase_slot(0U), SQ_OK);
+	assert_int_equal(n_erased, 4U);
+	assert_int_equal(erased[2][0], 0U);
+	assert_int_equal(erased[2][1], 126U);
+	assert_int_equal(erased[3][0], 0U);
+	assert_int_equal(erased[3][1], 127U);
+	assert_int_equal(regsim_flash_mem[0], 0xFFU);
+	assert_int_equal(regsim_flash_mem[8191], 0xFFU);
+}
+
+/* DBANK 1 with slot 0 across the banks (bank 1's page 127, bank 2's page
+ * 0): bank 1 has pages 0..127 only, so no page number of one bank erases
+ * it: refused, nothing erased; slot 1 is bank 2's pages 1 and 2. */
+static void test_erase_dual_bank_slot_across_banks_refused(void **state)
+{
+	(void)state;
+	regsim_flash_mem_at = 0x3F800U;
+	assert_int_equal(chip_flash_erase_slot(0U), SQ_EINVAL);
+	assert_int_equal(n_erased, 0U);
+	assert_int_equal(regsim_flash_mem[0], 0x00U);
+	assert_int_equal(chip_flash_erase_slot(1U), SQ_OK);
+	assert_int_equal(n_erased, 2U);
+	assert_int_equal(erased[0][0], 1U);
+	assert_int_equal(erased[0][1], 1U);
+	assert_int_equal(erased[1][1], 2U);
+}
+
 /* 64-bit double words, little-endian, the tail padded with 0xFF; the
  * address must be double-word aligned; locked afterwards. */
 static void test_program_double_words(void **state)
@@ -610,6 +674,9 @@ int main(void)
 		cmocka_unit_test_setup(test_reset_cause_decode, setup),
 		cmocka_unit_test_setup(test_erase_dual_bank, setup),
 		cmocka_unit_test_setup(test_erase_single_bank, setup),
+		cmocka_unit_test_setup(test_erase_single_bank_last_page, setup),
+		cmocka_unit_test_setup(test_erase_dual_bank_at_bank2_start, setup),
+		cmocka_unit_test_setup(test_erase_dual_bank_slot_across_banks_refused, setup),
 		cmocka_unit_test_setup(test_program_double_words, setup),
 		cmocka_unit_test_setup(test_can_pins, setup),
 		cmocka_unit_test_setup(test_nmi_flash_ecc_claims_calibration_only, setup),

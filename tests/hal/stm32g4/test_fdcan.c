@@ -5,7 +5,7 @@
  * the words it leaves in the controller, checked against values derived
  * by hand from RM0440 chapter 44 (register and element layouts written out
  * here as numbers, not taken from fdcan_regs.h): initialisation, bit
- * timing written, filter elements, the TX element layout, bus monitoring
+ * timing written, the nominal rate's range, filter elements, the TX element layout, bus monitoring
  * (no ACK, no error flag; the other instance on the same wire gets no ACK),
  * the internal loopback self-test, bus-off recovery, FIFO message lost,
  * error states, protocol exceptions, a controller that never acknowledges
@@ -126,6 +126,23 @@ static void test_other_clocks_and_inexact_rate(void **state)
 	assert_int_equal(hal_can_set_bitrate(1U, 333U), SQ_EINVAL);
 	assert_int_equal(sim_reg(1U, R_NBTP), (20U << 25) | (1U << 16) | (147U << 8) | 20U);
 	assert_int_equal(sim_reg(1U, R_CCCR) & CCCR_INIT, 0U); /* still running */
+}
+
+/* hal_can_set_bitrate takes 1..1000 kbit/s, refused beyond before the
+ * rate is turned into bit/s: 536871412 kbit/s times 1000 is 536871412000 =
+ * 125 * 2^32 + 500000, which a 32-bit product would take for the
+ * 500 kbit/s the bus runs at. Refused (SQ_EINVAL), the bus left running
+ * with its timing. */
+static void test_rate_beyond_1000_kbps_refused(void **state)
+{
+	(void)state;
+	start_both();
+	assert_int_equal(hal_can_set_bitrate(0U, 536871412U), SQ_EINVAL);
+	assert_int_equal(hal_can_set_bitrate(0U, 1001U), SQ_EINVAL);
+	assert_int_equal(hal_can_set_bitrate(0U, 0U), SQ_EINVAL);
+	assert_int_equal(sim_reg(0U, R_NBTP), (20U << 25) | (1U << 16) | (147U << 8) | 20U);
+	assert_int_equal(sim_reg(0U, R_CCCR) & CCCR_INIT, 0U);
+	assert_int_equal(hal_can_set_bitrate(0U, 1000U), SQ_OK);
 }
 
 /* Filter elements' words (RM0440 standard/extended filter elements). */
@@ -352,6 +369,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test_setup(test_init_registers, setup),
 		cmocka_unit_test_setup(test_other_clocks_and_inexact_rate, setup),
+		cmocka_unit_test_setup(test_rate_beyond_1000_kbps_refused, setup),
 		cmocka_unit_test_setup(test_filter_elements, setup),
 		cmocka_unit_test_setup(test_tx_element_layout, setup),
 		cmocka_unit_test_setup(test_rx_fifo_lost, setup),

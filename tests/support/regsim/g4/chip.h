@@ -46,9 +46,12 @@ extern uint32_t regsim_iwdg[4];
 #define FLASH_KEYR regsim_keyr_log[(regsim_keyr_n++) & 7U]
 #define FLASH_CR (*regsim_flash_cr())
 #define FLASH_SR (*regsim_flash_sr())
-/* 512 KiB of flash would be a large array: the test's flash starts 504 KiB
- * below its last 8 KiB (the calibration), which are all it holds. */
-#define CHIP_FLASH_BASE ((uint32_t)(uintptr_t)regsim_flash_mem - 0x7E000U)
+/* 512 KiB of flash would be a large array: the test's 8 KiB (the two
+ * calibration slots, which are all it holds) sit regsim_flash_mem_at bytes
+ * from the flash's start, 0x7E000 (its last 8 KiB) unless a test moves
+ * them. */
+extern uint32_t regsim_flash_mem_at;
+#define CHIP_FLASH_BASE ((uint32_t)(uintptr_t)regsim_flash_mem - regsim_flash_mem_at)
 #define CHIP_FLASH_BANK2 (CHIP_FLASH_BASE + 0x40000U)
 /* chip_flash_read's loads: the test's flash, where a double word a power
  * cut interrupted has an ECC double error and its read raises the "NMI"
