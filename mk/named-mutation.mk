@@ -64,3 +64,6 @@ $(foreach v,$(HAL_VBUS_TEST_VARIANTS),$(eval $(call hal_vbus_test_rules,$(v),tes
 TEST_PROGS += $(foreach v,$(HAL_VBUS_TEST_VARIANTS),build/$(v)/tests/hal/vbus/test_hal_vbus_can_rx)
 #   tests/tools/test_dbc_tolerant_empty.py  a DBC file whose messages all go is refused
 TEST_PROGS += tests/tools/test_dbc_tolerant_empty.py
+# ---- tools
+#   tests/tools/test_vehicle_calib_limits.py  the period, P02 list, P01 counter step and efficiency bounds
+TEST_PROGS += tests/tools/test_vehicle_calib_limits.py
