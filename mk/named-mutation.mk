@@ -67,3 +67,9 @@ TEST_PROGS += tests/tools/test_dbc_tolerant_empty.py
 # ---- tools
 #   tests/tools/test_vehicle_calib_limits.py  the period, P02 list, P01 counter step and efficiency bounds
 TEST_PROGS += tests/tools/test_vehicle_calib_limits.py
+#   tests/tools/test_fit_friction_checks.py  too few speeds, a negative speed, a not identified, the upper bounds
+TEST_PROGS += tests/tools/test_fit_friction_checks.py
+#   tests/tools/test_fit_modal_checks.py  D = 1, D not identified, a zero magnitude, uneven sampling
+TEST_PROGS += tests/tools/test_fit_modal_checks.py
+#   tests/tools/test_calibfit_parts.py  a row's field count, the 95 % quantiles, a file or stdout
+TEST_PROGS += tests/tools/test_calibfit_parts.py
