@@ -73,3 +73,7 @@ TEST_PROGS += tests/tools/test_fit_friction_checks.py
 TEST_PROGS += tests/tools/test_fit_modal_checks.py
 #   tests/tools/test_calibfit_parts.py  a row's field count, the 95 % quantiles, a file or stdout
 TEST_PROGS += tests/tools/test_calibfit_parts.py
+#   tests/tools/test_live_view_frames.py  the state names, the trail's need of both values, the 10 s window
+TEST_PROGS += tests/tools/test_live_view_frames.py
+#   tests/tools/test_gen_fleet_logs_layout.py  drive n in car n mod 8, the broken kinds, --broken < --count
+TEST_PROGS += tests/tools/test_gen_fleet_logs_layout.py
