@@ -77,3 +77,13 @@ TEST_PROGS += tests/tools/test_calibfit_parts.py
 TEST_PROGS += tests/tools/test_live_view_frames.py
 #   tests/tools/test_gen_fleet_logs_layout.py  drive n in car n mod 8, the broken kinds, --broken < --count
 TEST_PROGS += tests/tools/test_gen_fleet_logs_layout.py
+#   tests/tools/plots/test_plotlib_classify.py  a point's class by the closed forms, the Hopf border itself
+TEST_PROGS += tests/tools/plots/test_plotlib_classify.py
+#   tests/tools/plots/test_plot_map_counts.py  the disagreeing points and the legend's entry for them
+TEST_PROGS += tests/tools/plots/test_plot_map_counts.py
+#   tests/tools/plots/test_plot_calib_bands_borders.py  g(s), ln N_H, ln N_S, the 5/50/95 % borders
+TEST_PROGS += tests/tools/plots/test_plot_calib_bands_borders.py
+#   tests/tools/plots/test_plot_drive_read.py  the decode table's point (inputs, then the monitor's), state names
+TEST_PROGS += tests/tools/plots/test_plot_drive_read.py
+#   tests/tools/plots/test_plot_phase_points.py  steady sliding, the sample rows, the bistable starts
+TEST_PROGS += tests/tools/plots/test_plot_phase_points.py
