@@ -5,7 +5,8 @@ called directly, no firmware check): a message period of 1000 ms is taken
 and 1001 ms refused ("outside 1..1000"); P02's E2E_DataIDList must hold 16
 bytes, a value 256 among 16 is refused; P01's counter counts modulo 15, so
 an input on one page of five (pages take turns, 3 counts per frame seen)
-may step by at most 14, not 15 (an unpaged one by 3); a pressure's --efficiency must lie in (0, 1]: 1 taken, 1.01 refused.
+may step by at most 14, not 15 (an unpaged one by 3); a pressure's
+--efficiency must lie in (0, 1]: 1 taken, 1.01, 0 and -0.5 refused.
 
 prints "RESULT: N passed, M failed"
 """

@@ -27,7 +27,8 @@ echo "$*" >> "%s"
 case "$*" in
   *--truth*) echo "truth=bistable ln_q=-0.156 s=3 cycle_x=2.0 r=0.5 amplitude_m=5e-05" ;;
   *--cycle*) printf 'kind,t_s,x_m,v_mps,mode\ncycle,0,1e-05,0,slip\ncycle,1e-05,0,0.1,slip\n' ;;
-  *) printf 'kind,t_s,x_m,v_mps,mode\nsample,0,1e-05,0,slip\nswitch,5e-06,2e-05,1.0,stick\nsample,1e-05,2e-05,1.0,stick\nsample,0.03,1.5e-05,0.5,slip\n' ;;
+  *) printf 'kind,t_s,x_m,v_mps,mode\nsample,0,1e-05,0,slip\nswitch,5e-06,2e-05,1.0,stick\n'
+     printf 'sample,1e-05,2e-05,1.0,stick\nsample,0.03,1.5e-05,0.5,slip\n' ;;
 esac
 """
 
