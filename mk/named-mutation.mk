@@ -77,3 +77,27 @@ build/test/tests/hal/linux/$(1): build/test/app/tests/hal/linux/$(1).o build/tes
 TEST_PROGS += build/test/tests/hal/linux/$(1)
 endef
 $(foreach t,$(HAL_LINUX_WRAPPED),$(eval $(call hal_linux_wrapped_test,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))))))
+
+# ---- tools
+#   tests/tools/test_vehicle_calib_limits.py  the period, P02 list, P01 counter step and efficiency bounds
+TEST_PROGS += tests/tools/test_vehicle_calib_limits.py
+#   tests/tools/test_fit_friction_checks.py  too few speeds, a negative speed, a not identified, the upper bounds
+TEST_PROGS += tests/tools/test_fit_friction_checks.py
+#   tests/tools/test_fit_modal_checks.py  D = 1, D not identified, a zero magnitude, uneven sampling
+TEST_PROGS += tests/tools/test_fit_modal_checks.py
+#   tests/tools/test_calibfit_parts.py  a row's field count, the 95 % quantiles, a file or stdout
+TEST_PROGS += tests/tools/test_calibfit_parts.py
+#   tests/tools/test_live_view_frames.py  the state names, the trail's need of both values, the 10 s window
+TEST_PROGS += tests/tools/test_live_view_frames.py
+#   tests/tools/test_gen_fleet_logs_layout.py  drive n in car n mod 8, the broken kinds, --broken < --count
+TEST_PROGS += tests/tools/test_gen_fleet_logs_layout.py
+#   tests/tools/plots/test_plotlib_classify.py  a point's class by the closed forms, the Hopf border itself
+TEST_PROGS += tests/tools/plots/test_plotlib_classify.py
+#   tests/tools/plots/test_plot_map_counts.py  the disagreeing points and the legend's entry for them
+TEST_PROGS += tests/tools/plots/test_plot_map_counts.py
+#   tests/tools/plots/test_plot_calib_bands_borders.py  g(s), ln N_H, ln N_S, the 5/50/95 % borders
+TEST_PROGS += tests/tools/plots/test_plot_calib_bands_borders.py
+#   tests/tools/plots/test_plot_drive_read.py  the decode table's point (inputs, then the monitor's), state names
+TEST_PROGS += tests/tools/plots/test_plot_drive_read.py
+#   tests/tools/plots/test_plot_phase_points.py  steady sliding, the sample rows, the bistable starts
+TEST_PROGS += tests/tools/plots/test_plot_phase_points.py

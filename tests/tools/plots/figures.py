@@ -25,15 +25,17 @@ import plotlib  # noqa: E402
 from checks import Checks  # noqa: E402,F401  (the tests' counter)
 
 
-def draw(script, argv):
+def draw(script, argv, write=True):
     """(exit status, stdout, [(name, Figure, paths)]) of tools/plots/SCRIPT.py
-    run with argv; SystemExit's message is the status when it is text."""
+    run with argv; SystemExit's message is the status when it is text.
+    write=False keeps the Figures but writes no file (paths empty): for the
+    tests that read only what was drawn, without the time of rendering."""
     mod = importlib.import_module(script)
     saved = []
     real = plotlib.save
 
     def keep(fig, out_dir, name):
-        paths = real(fig, out_dir, name)
+        paths = real(fig, out_dir, name) if write else []
         saved.append((name, fig, list(paths)))  # the caller may extend its list
         return paths
 
