@@ -8,7 +8,7 @@
     terminal (a pty) "fleet: D/T logs, S s left" after each task, and the
     line cleared at the end;
   - `fleet.py --dir nosuch`: one line "fleet: nosuch: no such folder" on
-    stderr, exit 1;
+    stderr, exit 1; --workers 0 or no log: refused with the rule, exit 2;
   - outcome(): a document's verdict: exit status 0 with one malformed line
     is partial (with the first bad line), a failed or never started replay
     is failed with its error;
@@ -104,6 +104,19 @@ def test_no_such_folder():
           "--dir nosuch: one line, exit 1 (%d %r)" % (p.returncode, p.stderr))
 
 
+def test_refusals():
+    for argv, what in ((["x.log", "--workers", "0"], "--workers 0"), ([], "no LOG and no --dir")):
+        try:
+            p = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "fleet.py")] + argv,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True,
+                               timeout=10)
+        except subprocess.TimeoutExpired:
+            check(False, "%s: refused at once (it ran on for 10 s)" % what)
+            continue
+        check(p.returncode == 2 and "--workers >= 1" in p.stderr and p.stdout == "",
+              "%s: refused with the rule, exit 2 (%d %r)" % (what, p.returncode, p.stderr[-120:]))
+
+
 def doc(status=0, started=True, malformed=0, error="", bad=None):
     return {"exit_status": status, "started": started, "error": error, "first_malformed": bad,
             "lines": {"total": 10, "malformed": malformed}}
@@ -164,5 +177,6 @@ with tempfile.TemporaryDirectory() as tmpdir:
     test_outcome()
     test_batch_fallback(tmpdir)
 test_no_such_folder()
+test_refusals()
 print("RESULT: %d passed, %d failed" % (COUNTS[True], COUNTS[False]))
 sys.exit(0 if COUNTS[False] == 0 else 1)
