@@ -886,12 +886,20 @@ void candump_pending_frame(candump_pending_t *p)
 	}
 }
 
+void candump_no_frames_text(char *buf, size_t len, const char *log_name, uint64_t lines)
+{
+	(void)snprintf(buf, len, "%s: no CAN frame in %llu line%s", log_name,
+		       (unsigned long long)lines, (lines == 1U) ? "" : "s");
+}
+
 bool candump_pending_no_frames(candump_pending_t *p, uint64_t lines)
 {
+	char text[CANDUMP_NO_FRAMES_TEXT_MAX];
+
 	if (p->frames_seen) {
 		return false;
 	}
-	(void)fprintf(p->out, "%s: no CAN frame in %llu line%s\n", p->log_name,
-		      (unsigned long long)lines, (lines == 1U) ? "" : "s");
+	candump_no_frames_text(text, sizeof(text), p->log_name, lines);
+	(void)fprintf(p->out, "%s\n", text);
 	return true;
 }

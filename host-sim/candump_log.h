@@ -206,5 +206,9 @@ void candump_pending_frame(candump_pending_t *p);
 /* After the log of `lines` lines: the one line for a log without a frame
  * ("LOG: no CAN frame in N lines"); true then. */
 bool candump_pending_no_frames(candump_pending_t *p, uint64_t lines);
+/* That line's text (without the newline), cut to len - 1 bytes; a log
+ * name of a path's length (4096) fits CANDUMP_NO_FRAMES_TEXT_MAX. */
+#define CANDUMP_NO_FRAMES_TEXT_MAX 4160U
+void candump_no_frames_text(char *buf, size_t len, const char *log_name, uint64_t lines);
 
 #endif /* CANDUMP_LOG_H */

@@ -104,6 +104,8 @@
 #define SEGMENT_POINTS_MAX 64U /* rebase points kept for the JSON (memory stays constant) */
 #define N_STATES MSG_SQUEAL_STATE_SLOTS /* stable, bistable, unstable, not sliding, fault */
 #define N_LEVELS 4U
+#define REPLAY_LOGS_MAX 4096U /* LOG words of one --each run */
+#define REPLAY_ERROR_MAX 4352U /* a log's failure: a path (4096) and its message */
 
 static const char *const level_names[N_LEVELS] = {
 	"none", "advisory", "warning", "critical"
@@ -122,6 +124,9 @@ typedef struct {
 	bool no_output;           /* --no-output: no frame lines, only counts */
 	bool quiet;               /* --quiet: no line per message, the summary only */
 	bool step_every_ms;       /* --step-every-ms: run every tick, skip none */
+	bool each;                /* --each: every LOG on its own, one document each */
+	const char *logs[REPLAY_LOGS_MAX]; /* the LOG words */
+	size_t n_logs;
 } replay_args_t;
 
 /* Where a new segment began: the log line, how far the log's time went
@@ -249,6 +254,11 @@ typedef struct {
 	size_t out_len;
 	bool no_output;
 	replay_summary_t *summary; /* NULL without --summary-json */
+	/* what the document says of a failure and of the first bad line */
+	char error[REPLAY_ERROR_MAX];
+	uint64_t first_bad_line;   /* 0: none */
+	size_t first_bad_column;   /* 0: the whole line */
+	candump_err_t first_bad_err;
 } replay_t;
 
 static int replay_parse(int argc, char **argv, replay_args_t *a)
@@ -288,6 +298,12 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 		CLI_OPT_FLAG("step-every-ms", 0, &a->step_every_ms,
 			     "run every 1 ms tick, also those that change nothing\n"
 			     "(the same output, slower: for comparison)"),
+		CLI_OPT_FLAG("each", 0, &a->each,
+			     "replay every LOG on its own, from a reset ECU, as one\n"
+			     "run per log would (many short logs in one process);\n"
+			     "the summaries go to --summary-json one document per\n"
+			     "line, each with the log's exit_status and error;\n"
+			     "needs --summary-json and --no-output"),
 	};
 	const cli_spec_t spec = {
 		.cmd = "replay",
@@ -295,7 +311,9 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 		.synopsis = "squeal-sim replay LOG|- [--calib FILE] [--bus NAME]\n"
 			    "         [--iface-out NAME] [--tail-ms MS] [--max-gap S] [--rss]\n"
 			    "         [--summary-json FILE|-] [--no-output] [--quiet]\n"
-			    "         [--step-every-ms]",
+			    "         [--step-every-ms]\n"
+			    "       squeal-sim replay --each LOG... --summary-json FILE|- --no-output\n"
+			    "         [the options above]",
 		.description = "Feeds a candump -L log (a file, or - for stdin) through the firmware in\n"
 			       "virtual time taken from the log's timestamps, offline. Writes every frame\n"
 			       "the ECU sends as a candump -L log on stdout, and a summary on stderr:\n"
@@ -307,19 +325,27 @@ static int replay_parse(int argc, char **argv, replay_args_t *a)
 			       "to where it left is a logger restart: a new segment, re-based.",
 		.closing = "CAN FD frames (##) reach the firmware as FD frames; CAN XL frames are\ncounted as unsupported.\n"
 			   "Exit status: 0 done (also with malformed lines), 1 input/calibration\n"
-			   "error or no CAN frame in the log, 2 bad usage.",
+			   "error or no CAN frame in the log (with --each: in any of the logs),\n"
+			   "2 bad usage.",
 		.min_pos = 1U,
-		.max_pos = 1U,
+		.max_pos = REPLAY_LOGS_MAX,
 	};
 	cli_result_t r;
 
 	a->tail_us = 0U;
 	a->max_gap_us = 3600ULL * 1000000ULL;
-	r = cli_parse(&spec, argc, argv, &a->log_name, NULL);
+	r = cli_parse(&spec, argc, argv, a->logs, &a->n_logs);
 	if (r != CLI_OK) {
 		return (int)r;
 	}
+	a->log_name = a->logs[0];
+	if ((a->n_logs > 1U) && !a->each) {
+		return (int)cli_usage_error(&spec, "one LOG (several with --each, each replayed on its own)");
+	}
 	a->no_output = a->no_output || a->quiet;
+	if (a->each && ((a->summary_json == NULL) || !a->no_output)) {
+		return (int)cli_usage_error(&spec, "--each needs --summary-json FILE|- and --no-output");
+	}
 	if ((a->summary_json != NULL) && (strcmp(a->summary_json, "-") == 0) && !a->no_output) {
 		return (int)cli_usage_error(&spec, "--summary-json - shares stdout with the frames: add --no-output");
 	}
@@ -1463,11 +1489,24 @@ static void json_inputs_by_corner(json_writer_t *w, const replay_t *r)
 	json_end_array(w);
 }
 
+/* --each: the log's exit status and the message of its failure ("" for
+ * none), as the run of that log alone gives them (its exit status and last
+ * message on stderr). */
+static void json_outcome(json_writer_t *w, const replay_t *r, int status)
+{
+	json_key(w, "exit_status");
+	json_i64(w, status);
+	json_kv_string(w, "error", r->error);
+}
+
 /* Everything after the episodes: the caller began the object with "log"
  * and the episodes (replay_summary_init); this closes it. */
-static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_t *a)
+static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_t *a, int status)
 {
-	const monitor_t *m = squeal_app_monitor();
+	/* a log without frames never started the firmware: its counters are
+	 * the zeros of an ECU that did not run (with --each, not the last log's) */
+	static const monitor_t not_started;
+	const monitor_t *m = r->started ? squeal_app_monitor() : &not_started;
 	const input_counters_t *sp = &m->speed.count;
 	const input_counters_t *fo = &m->force.count;
 	uint64_t changes = 0U;
@@ -1580,44 +1619,111 @@ static void summary_json(json_writer_t *w, const replay_t *r, const replay_args_
 		json_key(w, "peak_rss_kb");
 		json_i64(w, vm_hwm_kb());
 	}
+	json_key(w, "first_malformed");
+	if (r->first_bad_line == 0U) {
+		json_null(w);
+	} else {
+		json_begin_object(w);
+		json_kv_u64(w, "line", r->first_bad_line);
+		json_kv_u64(w, "column", r->first_bad_column);
+		json_kv_string(w, "error", candump_strerror(r->first_bad_err));
+		json_end_object(w);
+	}
+	if (a->each) {
+		json_outcome(w, r, status);
+	}
 	json_end_object(w);
 }
 
-/* Opens --summary-json's file and starts the document; NULL on error. */
-static FILE *summary_json_open(json_writer_t *w, replay_summary_t *rs, const replay_args_t *a)
-{
-	FILE *f = (strcmp(a->summary_json, "-") == 0) ? stdout : fopen(a->summary_json, "w");
+/* --summary-json's file (- : stdout), opened when the first document is
+ * due (so a log that cannot be opened leaves no file behind); NULL when it
+ * cannot be written, said so once. */
+static FILE *json_file;
+static bool json_file_failed;
 
-	if (f == NULL) {
-		fprintf(stderr, "squeal-sim replay: cannot write %s: %s\n", a->summary_json,
-			strerror(errno));
-		return NULL;
+static FILE *summary_json_file(const replay_args_t *a)
+{
+	if ((json_file == NULL) && !json_file_failed) {
+		json_file = (strcmp(a->summary_json, "-") == 0) ? stdout : fopen(a->summary_json, "w");
+		if (json_file == NULL) {
+			json_file_failed = true;
+			fprintf(stderr, "squeal-sim replay: cannot write %s: %s\n", a->summary_json,
+				strerror(errno));
+		}
 	}
+	return json_file;
+}
+
+/* The summary file could not be written whole: said once. */
+static void summary_json_failed(const replay_args_t *a)
+{
+	if (!json_file_failed) {
+		json_file_failed = true;
+		fprintf(stderr, "squeal-sim replay: error writing %s\n", a->summary_json);
+	}
+}
+
+/* 0, or -1 (said so) when the file could not be written whole. */
+static int summary_json_close(FILE *f, const replay_args_t *a)
+{
+	int rc = (fflush(f) != 0) ? -1 : 0;
+
+	if ((f != stdout) && (fclose(f) != 0)) {
+		rc = -1;
+	}
+	if ((rc != 0) || json_file_failed) {
+		summary_json_failed(a);
+		rc = -1;
+	}
+	return rc;
+}
+
+/* The document's first members, on f. */
+static void summary_doc_head(json_writer_t *w, FILE *f, const replay_args_t *a)
+{
 	json_writer_init(w, f);
 	json_begin_object(w);
 	json_kv_string(w, "format", "squeal-replay-summary");
 	json_kv_u64(w, "version", 1U);
 	json_kv_string(w, "log", a->log_name);
-	replay_summary_init(rs, w);
-	return f;
 }
 
-/* Ends the document; 0, or -1 when it could not be written whole. */
-static int summary_json_close(json_writer_t *w, FILE *f, const replay_t *r, const replay_args_t *a)
+/* Starts a log's document on f: the episodes follow as they happen. */
+static void summary_doc_begin(json_writer_t *w, FILE *f, replay_summary_t *rs, const replay_args_t *a)
 {
-	int rc = 0;
+	summary_doc_head(w, f, a);
+	replay_summary_init(rs, w);
+}
 
-	summary_json(w, r, a);
-	if (!json_writer_done(w) || (fflush(f) != 0)) {
-		rc = -1;
+/* Ends a log's document with the rest of the summary (and its line: the
+ * writer ends a document with a newline) and writes it out, before the
+ * text summary and before the next log (a later crash keeps it); false
+ * (said so) when it could not be written whole. */
+static bool summary_doc_end(json_writer_t *w, const replay_t *r, const replay_args_t *a, int status)
+{
+	summary_json(w, r, a, status);
+	if (!json_writer_done(w) || (fflush(w->out) != 0)) {
+		summary_json_failed(a);
+		return false;
 	}
-	if ((f != stdout) && (fclose(f) != 0)) {
-		rc = -1;
+	return true;
+}
+
+/* A log --each could not open: a document of what is known. */
+static bool summary_doc_unopened(FILE *f, const replay_t *r, const replay_args_t *a)
+{
+	json_writer_t w;
+
+	summary_doc_head(&w, f, a);
+	json_key(&w, "started");
+	json_bool(&w, false);
+	json_outcome(&w, r, 1);
+	json_end_object(&w);
+	if (!json_writer_done(&w) || (fflush(f) != 0)) {
+		summary_json_failed(a);
+		return false;
 	}
-	if (rc != 0) {
-		fprintf(stderr, "squeal-sim replay: error writing %s\n", a->summary_json);
-	}
-	return rc;
+	return true;
 }
 
 /* ---- main ------------------------------------------------------------------------ */
@@ -1641,10 +1747,16 @@ static int load_calib(replay_t *r, const char *path)
 	return 0;
 }
 
-/* A malformed log line (column 0: the whole line), unless --quiet. */
-static void report_line(candump_pending_t *p, const replay_args_t *a, uint64_t line_no,
-			candump_err_t err, size_t column)
+/* A malformed log line (column 0: the whole line) on stderr unless --quiet;
+ * the first is kept for the document. */
+static void report_line(replay_t *r, candump_pending_t *p, const replay_args_t *a,
+			uint64_t line_no, candump_err_t err, size_t column)
 {
+	if (r->first_bad_line == 0U) {
+		r->first_bad_line = line_no;
+		r->first_bad_column = column;
+		r->first_bad_err = err;
+	}
 	if (a->quiet) {
 		return;
 	}
@@ -1657,74 +1769,42 @@ static void report_line(candump_pending_t *p, const replay_args_t *a, uint64_t l
 	}
 }
 
+/* A failure of the log: on stderr, and kept for the --each document. */
+static void fail(replay_t *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void fail(replay_t *r, const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	(void)vsnprintf(r->error, sizeof(r->error), fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "%s\n", r->error);
+}
+
 /* The reorder window's frames (7 MB): outside replay_t, which is cleared
  * at start, so that only the part a log fills is ever touched. */
 static held_t window_fifo[REORDER_FRAMES];
 static held_t window_heap[REORDER_FRAMES];
 
-int cmd_replay(int argc, char **argv)
+/* One log's state: large, so static; cleared (as far as used) per log. */
+static candump_reader_t reader; /* 270 kB */
+static replay_t rp;
+static replay_summary_t rs;     /* 820 kB of occupancy cells */
+static candump_pending_t pending;
+
+/* Reads the log through the firmware; the exit status of the line loop's
+ * errors is left in r (read_error). */
+static int read_log(replay_t *r, FILE *in, const replay_args_t *a)
 {
-	static candump_reader_t reader; /* 270 kB: not on the stack */
-	static char outbuf[1U << 16];
-	static replay_t r;
-	static replay_summary_t rs; /* 820 kB of occupancy cells: not on the stack */
-	static candump_pending_t pending;
-	json_writer_t jw;
-	FILE *json_f = NULL;
-	int json_rc = 0;
-	replay_args_t a;
 	candump_frame_t f;
 	const char *line;
 	size_t len;
 	bool too_long;
-	FILE *in;
-	int rc;
+	int rc = 0;
 
-	memset(&a, 0, sizeof(a));
-	memset(&r, 0, sizeof(r));
-	r.fifo = window_fifo;
-	r.held = window_heap;
-	rc = replay_parse(argc, argv, &a);
-	if (rc != CLI_OK) {
-		return cli_exit_status((cli_result_t)rc);
-	}
-	if (strcmp(a.log_name, "-") == 0) {
-		in = stdin;
-		a.log_name = "<stdin>";
-	} else {
-		in = fopen(a.log_name, "rb");
-		if (in == NULL) {
-			fprintf(stderr, "squeal-sim replay: cannot open %s: %s\n", a.log_name,
-				strerror(errno));
-			return 1;
-		}
-	}
-	(void)setvbuf(stdout, outbuf, _IOFBF, sizeof(outbuf));
-	hal_vbus_reset();
-	if ((a.calib_path != NULL) && (load_calib(&r, a.calib_path) != 0)) {
-		if (in != stdin) {
-			(void)fclose(in);
-		}
-		return 1;
-	}
-	if ((a.input_iface == NULL) && (r.names.input_iface[0] != '\0')) {
-		a.input_iface = r.names.input_iface;
-	}
-	r.no_output = a.no_output;
-	r.skip = !a.step_every_ms;
-	if (a.summary_json != NULL) {
-		json_f = summary_json_open(&jw, &rs, &a);
-		if (json_f == NULL) {
-			if (in != stdin) {
-				(void)fclose(in);
-			}
-			return 1;
-		}
-		r.summary = &rs;
-	}
 	candump_reader_init(&reader, in);
-	candump_pending_init(&pending, stderr, a.log_name);
-	while (!r.init_failed) {
+	while (!r->init_failed) {
 		candump_err_t err = CANDUMP_OK;
 		size_t col = 0U;
 
@@ -1732,71 +1812,170 @@ int cmd_replay(int argc, char **argv)
 		if (rc <= 0) {
 			break;
 		}
-		r.lines++;
+		r->lines++;
 		if (too_long) {
-			r.malformed++;
-			report_line(&pending, &a, reader.line_no, CANDUMP_ERR_TOO_LONG, 0U);
+			r->malformed++;
+			report_line(r, &pending, a, reader.line_no, CANDUMP_ERR_TOO_LONG, 0U);
 			continue;
 		}
 		switch (candump_parse_line(line, len, &f, &err, &col)) {
 		case CANDUMP_LINE_FRAME:
-			r.frames++;
+			r->frames++;
 			candump_pending_frame(&pending);
-			on_frame(&r, &f, &a, reader.line_no);
+			on_frame(r, &f, a, reader.line_no);
 			break;
 		case CANDUMP_LINE_BLANK:
-			r.blanks++;
+			r->blanks++;
 			break;
 		case CANDUMP_LINE_COMMENT:
-			r.comments++;
+			r->comments++;
 			break;
 		case CANDUMP_LINE_DROPCOUNT:
-			r.dropcount_lines++;
-			r.dropped += f.dropped;
+			r->dropcount_lines++;
+			r->dropped += f.dropped;
 			break;
 		default:
-			r.malformed++;
-			report_line(&pending, &a, reader.line_no, err, col + 1U);
+			r->malformed++;
+			report_line(r, &pending, a, reader.line_no, err, col + 1U);
 			break;
 		}
 	}
-	if (rc < 0) {
-		fprintf(stderr, "squeal-sim replay: %s: read error\n", a.log_name);
+	return (rc < 0) ? -1 : 0;
+}
+
+/*
+ * Replays the log name from a reset ECU, its document to --summary-json's
+ * file. Returns the exit status a run of this log alone gives, or -1 when
+ * no later log can be replayed either (the summary file cannot be written,
+ * the calibration cannot be loaded).
+ */
+static int replay_log(const replay_args_t *args, const char *name)
+{
+	replay_t *const r = &rp;
+	replay_args_t a = *args;
+	FILE *json_f = NULL;
+	json_writer_t jw;
+	bool json_ok = true;
+	bool no_frames = false;
+	int status = 0;
+	int read_rc;
+	FILE *in;
+
+	memset(r, 0, sizeof(*r));
+	r->fifo = window_fifo;
+	r->held = window_heap;
+	a.log_name = name;
+	if (strcmp(a.log_name, "-") == 0) {
+		in = stdin;
+		a.log_name = "<stdin>";
+	} else {
+		in = fopen(a.log_name, "rb");
+		if (in == NULL) {
+			fail(r, "squeal-sim replay: cannot open %s: %s", a.log_name, strerror(errno));
+			if (a.each) {
+				json_f = summary_json_file(&a);
+				if ((json_f == NULL) || !summary_doc_unopened(json_f, r, &a)) {
+					return -1;
+				}
+			}
+			return 1;
+		}
+	}
+	hal_vbus_reset();
+	if ((a.calib_path != NULL) && (load_calib(r, a.calib_path) != 0)) {
+		if (in != stdin) {
+			(void)fclose(in);
+		}
+		return -1;
+	}
+	if ((a.input_iface == NULL) && (r->names.input_iface[0] != '\0')) {
+		a.input_iface = r->names.input_iface;
+	}
+	r->no_output = a.no_output;
+	r->skip = !a.step_every_ms;
+	if (a.summary_json != NULL) {
+		json_f = summary_json_file(&a);
+		if (json_f == NULL) {
+			if (in != stdin) {
+				(void)fclose(in);
+			}
+			return -1;
+		}
+		summary_doc_begin(&jw, json_f, &rs, &a);
+		r->summary = &rs;
+	}
+	candump_pending_init(&pending, stderr, a.log_name);
+	read_rc = read_log(r, in, &a);
+	if (read_rc < 0) {
+		fail(r, "squeal-sim replay: %s: read error", a.log_name);
+		status = 1;
 	}
 	if (in != stdin) {
 		(void)fclose(in);
 	}
-	if (!r.init_failed) {
-		end_of_log(&r, &a);
+	if (!r->init_failed) {
+		end_of_log(r, &a);
 	}
-	if (r.init_failed) {
-		fprintf(stderr, "squeal-sim replay: %s: the firmware refused the calibration (firmware_init error %d)\n",
-			a.calib_path, squeal_app_init_status());
+	if (r->init_failed) {
+		fail(r, "squeal-sim replay: %s: the firmware refused the calibration (firmware_init error %d)",
+		     a.calib_path, squeal_app_init_status());
 		if (json_f != NULL) {
-			(void)summary_json_close(&jw, json_f, &r, &a);
+			json_ok = summary_doc_end(&jw, r, &a, 1);
 		}
-		return 1;
+		return json_ok ? 1 : -1;
 	}
-	if (r.started) {
+	if (r->started) {
 		/* the tick that takes the last frame in, then the tail */
-		const uint64_t end_us = r.next_tick_us + a.tail_us;
+		const uint64_t end_us = r->next_tick_us + a.tail_us;
 
-		run_until(&r, end_us);
-		run_idle_tick(&r);
-		set_time(&r, end_us);
+		run_until(r, end_us);
+		run_idle_tick(r);
+		set_time(r, end_us);
+	}
+	out_flush(r);
+	if ((fflush(stdout) != 0) || r->out_error) {
+		fail(r, "squeal-sim replay: error writing the output");
+		status = 1;
+	} else if ((read_rc == 0) && candump_pending_no_frames(&pending, r->lines)) {
+		candump_no_frames_text(r->error, sizeof(r->error), a.log_name, r->lines);
+		no_frames = true;
+		status = 1;
 	}
 	if (json_f != NULL) {
-		json_rc = summary_json_close(&jw, json_f, &r, &a);
+		json_ok = summary_doc_end(&jw, r, &a, status);
 	}
-	out_flush(&r);
-	if ((fflush(stdout) != 0) || r.out_error) {
-		fprintf(stderr, "squeal-sim replay: error writing the output\n");
-		summary(&r, &a);
-		return 1;
+	if (!no_frames) {
+		summary(r, &a);
 	}
-	if ((rc >= 0) && candump_pending_no_frames(&pending, r.lines)) {
-		return 1;
+	return json_ok ? status : -1;
+}
+
+int cmd_replay(int argc, char **argv)
+{
+	static char outbuf[1U << 16];
+	static replay_args_t a; /* the LOG words: 32 kB */
+	int worst = 0;
+	size_t i;
+	int rc;
+
+	memset(&a, 0, sizeof(a));
+	rc = replay_parse(argc, argv, &a);
+	if (rc != CLI_OK) {
+		return cli_exit_status((cli_result_t)rc);
 	}
-	summary(&r, &a);
-	return ((rc < 0) || (json_rc != 0)) ? 1 : 0;
+	(void)setvbuf(stdout, outbuf, _IOFBF, sizeof(outbuf));
+	for (i = 0U; i < a.n_logs; i++) {
+		rc = replay_log(&a, a.logs[i]);
+		if (rc < 0) {
+			worst = 1;
+			break; /* said so: no later log can be replayed */
+		}
+		if (rc > worst) {
+			worst = rc;
+		}
+	}
+	if ((json_file != NULL) && (summary_json_close(json_file, &a) != 0)) {
+		worst = 1;
+	}
+	return worst;
 }

@@ -74,6 +74,12 @@ TEST_PROGS += tests/host-sim/test_replay_summary.py build/test/tests/host-sim/te
 tests/host-sim/test_replay_skip.py: build/host/squeal-sim build/host-fixed/squeal-sim
 TEST_PROGS += tests/host-sim/test_replay_skip.py
 
+# replay --each LOG...: every log as a run of its own (documents, stderr,
+# exit status), broken logs between, both builds and their sanitizer builds.
+tests/host-sim/test_cmd_replay_each.py: build/host/squeal-sim build/host-fixed/squeal-sim \
+		build/test/squeal-sim build/test-fixed/squeal-sim
+TEST_PROGS += tests/host-sim/test_cmd_replay_each.py
+
 # squeal_app_next_event_us(): the deadlines by hand, and every tick before
 # the reported time changes nothing (cmocka, both numeric builds, ASan+UBSan)
 $(foreach v,$(MONITOR_TEST_VARIANTS),$(eval $(call monitor_test_rules,$(v),tests/firmware/app/test_squeal_app_next_event)))

@@ -5,10 +5,12 @@
 usage: fleet.py (LOG... | --dir DIR) [--calib FILE] [--scheduler ADDRESS]
                 [-o REPORT_DIR] [--workers N] [--sim PATH] [--timeout S]
 
-Each log is replayed by `squeal-sim replay LOG --no-output --summary-json -`
-(the JSON document the C side defines, host-sim/replay_summary.h). Tasks are
-sized by work, the bytes of their logs: several short logs make one task, so
-that a task's cost is the replays' and not the scheduler's; a log longer
+Each task replays its logs with one `squeal-sim replay --each LOG...
+--no-output --summary-json -` (every log from a reset ECU, as a run of its
+own; one JSON document per log, as the C side defines it in
+host-sim/replay_summary.h). Tasks are sized by work, the bytes of their
+logs: several short logs make one task, so that a task's cost is the
+replays' and not the scheduler's or a process start per log; a log longer
 than a task's share is a task of its own. On a terminal, a progress line
 (logs done / total, time left) is kept up to date on stderr.
 Without --scheduler a LocalCluster of --workers processes (default: the
@@ -64,51 +66,63 @@ def replay_command(sim):
     return [sim, "replay"]
 
 
-def replay_one(log, sim, calib, timeout_s):
-    """Replay one log; always returns a dict, never raises."""
-    t0 = time.monotonic()
-    res = {"log": log, "status": "ok", "reason": "", "summary": None, "seconds": 0.0}
-    cmd = replay_command(sim) + [log, "--no-output", "--summary-json", "-"]
-    if calib:
-        cmd += ["--calib", calib]
-    try:
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                           timeout=timeout_s)
-    except subprocess.TimeoutExpired:
-        res.update(status="failed", reason="replay took longer than %g s" % timeout_s)
-        return res
-    except OSError as e:
-        res.update(status="failed", reason="cannot run %s: %s" % (sim, e.strerror))
-        return res
-    finally:
-        res["seconds"] = time.monotonic() - t0
-    err = p.stderr.decode("utf-8", "replace").splitlines()
-    problems = [ln for ln in err if ln.startswith("squeal-sim") or
-                (":" in ln and not ln.startswith(" ") and not ln.startswith("replay summary"))]
-    try:
-        doc = json.loads(p.stdout.decode("utf-8"))
-    except ValueError:
-        doc = None
-    if p.returncode != 0 or doc is None:
-        why = problems[-1] if problems else "exit status %d" % p.returncode
-        res.update(status="failed", reason=why if doc is None else "%s (exit %d)" % (why, p.returncode))
-        res["summary"] = doc
-        return res
-    res["summary"] = doc
-    first = next((ln for ln in problems if not ln.startswith("squeal-sim")), "")
-    if not doc.get("started"):
-        res.update(status="failed", reason="no CAN frames (%d lines, %d malformed%s)"
-                   % (doc["lines"]["total"], doc["lines"]["malformed"],
-                      "; first: " + first if first else ""))
+def outcome(log, doc):
+    """The result of one log from its --each document; never raises."""
+    res = {"log": log, "status": "ok", "reason": "", "summary": doc}
+    bad = doc.get("first_malformed")
+    first = ""
+    if bad:
+        first = "%s:%d: %s%s" % (log, bad["line"], bad["error"],
+                                 " (column %d)" % bad["column"] if bad["column"] else "")
+    if doc.get("exit_status", 1) != 0 or not doc.get("started"):
+        why = doc.get("error") or "exit status %s" % doc.get("exit_status")
+        res.update(status="failed", reason=why + ("; first malformed line: " + first if first else ""))
     elif doc["lines"]["malformed"] > 0:
         res.update(status="partial", reason="%d malformed lines skipped (first: %s)"
                    % (doc["lines"]["malformed"], first))
     return res
 
 
+def replay_each(logs, sim, calib, timeout_s):
+    """One `replay --each` process for the logs: ({log: document} of the
+    logs it finished, why it stopped before the others)."""
+    cmd = (replay_command(sim) + ["--each"] + logs +
+           ["--no-output", "--quiet", "--summary-json", "-"])
+    if calib:
+        cmd += ["--calib", calib]
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           timeout=timeout_s * len(logs))
+        out, err, why = p.stdout, p.stderr, "exit status %d" % p.returncode
+    except subprocess.TimeoutExpired as e:
+        out, err, why = e.stdout or b"", e.stderr or b"", "replay took longer than %g s" % timeout_s
+    except OSError as e:
+        return {}, "cannot run %s: %s" % (sim, e.strerror)
+    docs = {}
+    for log, line in zip(logs, out.decode("utf-8", "replace").splitlines()):
+        try:
+            docs[log] = json.loads(line)  # one line per log, in their order
+        except ValueError:
+            break  # cut short by a crash or the time-out
+    last = [ln for ln in err.decode("utf-8", "replace").splitlines() if ln.startswith("squeal-sim")]
+    return docs, (last[-1] if last else why)
+
+
 def replay_batch(logs, sim, calib, timeout_s):
-    """One task: replay_one of each log, in order."""
-    return [replay_one(log, sim, calib, timeout_s) for log in logs]
+    """One task: its logs in one replay process (a process start per log
+    would cost more than the replay of a short log). Logs that process did
+    not finish (it crashed or took too long) are replayed one by one, so
+    that only the log at fault is failed; always returns a result per log."""
+    docs, why = replay_each(logs, sim, calib, timeout_s)
+    out = []
+    for log in logs:
+        if log not in docs and len(logs) > 1:
+            docs.update(replay_each([log], sim, calib, timeout_s)[0])
+        if log in docs:
+            out.append(outcome(log, docs[log]))
+        else:
+            out.append({"log": log, "status": "failed", "reason": why, "summary": None})
+    return out
 
 
 # ---- running it ------------------------------------------------------------
@@ -197,7 +211,7 @@ def run_tasks(logs, args):
             try:
                 results.extend(fut.result())
             except Exception as e:  # a worker died: still listed logs
-                results.extend({"log": log, "status": "failed", "summary": None, "seconds": 0.0,
+                results.extend({"log": log, "status": "failed", "summary": None,
                                 "reason": "task failed: %s" % (str(e) or type(e).__name__)}
                                for log in batch)
             progress.update(batch)

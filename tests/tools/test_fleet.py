@@ -126,14 +126,13 @@ FAKE_SIM = """#!/usr/bin/python3
 import json, subprocess, sys
 p = subprocess.run([%r] + sys.argv[1:], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
 sys.stderr.buffer.write(p.stderr)
-try:
-    d = json.loads(p.stdout)
-except ValueError:
-    sys.stdout.buffer.write(p.stdout)
-    sys.exit(p.returncode)
-d["episodes"] += [dict(e, corner="RR") for e in d["episodes"] if e["corner"] == "FL"]
-d["corners"] += [dict(c, corner="RR") for c in d["corners"] if c["corner"] == "FL"]
-json.dump(d, sys.stdout)
+for line in p.stdout.decode().splitlines():  # one document per log (--each)
+    d = json.loads(line)
+    d["episodes"] = d.get("episodes", [])
+    d["episodes"] += [dict(e, corner="RR") for e in d["episodes"] if e["corner"] == "FL"]
+    d["corners"] = d.get("corners", [])
+    d["corners"] += [dict(c, corner="RR") for c in d["corners"] if c["corner"] == "FL"]
+    print(json.dumps(d))
 sys.exit(p.returncode)
 """
 

@@ -33,7 +33,7 @@ R = Results()
 
 def replayed(logdir):
     logs = sorted(glob.glob(os.path.join(logdir, "**", "*.log"), recursive=True))
-    return [fleet.replay_one(log, SIM, None, 120) for log in logs]
+    return fleet.replay_batch(logs, SIM, None, 120)
 
 
 def main():

@@ -8,7 +8,14 @@
     terminal (a pty) "fleet: D/T logs, S s left" after each task, and the
     line cleared at the end;
   - `fleet.py --dir nosuch`: one line "fleet: nosuch: no such folder" on
-    stderr, exit 1.
+    stderr, exit 1; --workers 0 or no log: refused with the rule, exit 2;
+  - outcome(): a document's verdict: exit status 0 with one malformed line
+    is partial (with the first bad line), a failed or never started replay
+    is failed with its error;
+  - replay_batch(): a task's logs in one `replay --each`; when that process
+    crashes or hangs on one log (a stand-in squeal-sim that kills itself or
+    sleeps there), every other log still gets its result from a replay of
+    its own, and only that log fails, with the reason.
 Prints "RESULT: N passed, M failed"."""
 import io
 import os
@@ -97,9 +104,79 @@ def test_no_such_folder():
           "--dir nosuch: one line, exit 1 (%d %r)" % (p.returncode, p.stderr))
 
 
+def test_refusals():
+    for argv, what in ((["x.log", "--workers", "0"], "--workers 0"), ([], "no LOG and no --dir")):
+        try:
+            p = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "fleet.py")] + argv,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True,
+                               timeout=10)
+        except subprocess.TimeoutExpired:
+            check(False, "%s: refused at once (it ran on for 10 s)" % what)
+            continue
+        check(p.returncode == 2 and "--workers >= 1" in p.stderr and p.stdout == "",
+              "%s: refused with the rule, exit 2 (%d %r)" % (what, p.returncode, p.stderr[-120:]))
+
+
+def doc(status=0, started=True, malformed=0, error="", bad=None):
+    return {"exit_status": status, "started": started, "error": error, "first_malformed": bad,
+            "lines": {"total": 10, "malformed": malformed}}
+
+
+def test_outcome():
+    bad = {"line": 7, "column": 3, "error": "bad identifier"}
+    r = fleet.outcome("a.log", doc(malformed=1, bad=bad))
+    check(r["status"] == "partial" and r["reason"] == "1 malformed lines skipped (first: a.log:7: bad "
+          "identifier (column 3))", "one malformed line: partial, with the line (%r)" % r)
+    r = fleet.outcome("a.log", doc())
+    check(r["status"] == "ok" and r["reason"] == "", "no malformed line: ok (%r)" % r)
+    r = fleet.outcome("b.log", doc(1, False, 1, "b.log: no CAN frame in 1 line",
+                                   {"line": 1, "column": 0, "error": "not a candump -L line"}))
+    check(r["status"] == "failed" and r["reason"] == "b.log: no CAN frame in 1 line; first malformed "
+          "line: b.log:1: not a candump -L line", "no frame: failed, with its error (%r)" % r)
+    r = fleet.outcome("c.log", doc(1, True, 0, "squeal-sim replay: c.log: read error"))
+    check(r["status"] == "failed" and r["reason"] == "squeal-sim replay: c.log: read error",
+          "a failed replay: failed, with its error (%r)" % r)
+
+
+STAND_IN = """#!/usr/bin/python3
+# squeal-sim replay --each, but the process dies (crash.log) or hangs
+# (slow.log) when it reaches those logs
+import json, os, signal, sys, time
+logs = [a for a in sys.argv[2:] if a.endswith(".log")]
+for log in logs:
+    if log.endswith("crash.log"):
+        sys.stdout.flush()
+        os.kill(os.getpid(), signal.SIGSEGV)
+    if log.endswith("slow.log"):
+        sys.stdout.flush()
+        time.sleep(30)
+    print(json.dumps({"log": log, "exit_status": 0, "error": "", "started": True,
+                      "first_malformed": None, "lines": {"total": 1, "malformed": 0}}))
+"""
+
+
+def test_batch_fallback(tmp):
+    sim = os.path.join(tmp, "stand-in-sim")
+    with open(sim, "w") as f:
+        f.write(STAND_IN)
+    os.chmod(sim, 0o755)
+    for bad in ("crash.log", "slow.log"):
+        logs = [os.path.join(tmp, n) for n in ("a.log", "b.log", bad, "c.log", "d.log")]
+        res = fleet.replay_batch(logs, sim, None, 1.0)
+        check([r["log"] for r in res] == logs, "%s: a result per log, in order" % bad)
+        ok = [r["status"] for r in res]
+        check(ok == ["ok", "ok", "failed", "ok", "ok"], "%s: only that log fails (%r)" % (bad, ok))
+        why = res[2]["reason"]
+        want = "exit status -11" if bad == "crash.log" else "replay took longer than 1 s"
+        check(why == want, "%s: the reason %r (%r)" % (bad, want, why))
+
+
 with tempfile.TemporaryDirectory() as tmpdir:
     test_batches(tmpdir)
     test_progress(tmpdir)
+    test_outcome()
+    test_batch_fallback(tmpdir)
 test_no_such_folder()
+test_refusals()
 print("RESULT: %d passed, %d failed" % (COUNTS[True], COUNTS[False]))
 sys.exit(0 if COUNTS[False] == 0 else 1)
