@@ -127,7 +127,7 @@ def replay_batch(logs, sim, calib, timeout_s):
 
 # ---- running it ------------------------------------------------------------
 
-TASKS_PER_WORKER = 8  # tasks of about equal work: the last ones balance the workers
+TASKS_PER_WORKER = 4  # tasks of about equal work: few (each costs a process start and a round trip), enough that the last ones balance the workers
 
 
 def log_bytes(path):
