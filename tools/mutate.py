@@ -24,10 +24,14 @@ not pass/fail and are left out. A C test tests/P/NAME.c is the programs of
 TEST_PROGS built from it (build/test/tests/P/NAME, build/test-fixed/...); a
 .py or .sh test in TEST_PROGS is run after `make <test>` has built what it
 depends on. A mutant is killed when a test fails, takes more than 4 times
-its unmutated time (at least 10 s: it hangs) or does not build (counted
-apart); it survives otherwise. The unmutated tree's tests run first (the
-baseline; kept in build/mutate/baseline.json while the sources are
-unchanged). Mutants argued equivalent in docs/mutation.md (its table
+its unmutated time (at least 10 s; 300 s for a test never timed: it hangs)
+or does not build (counted apart); it survives otherwise. The unmutated
+tree's baseline is run for the tests that killed a mutant, after the
+mutants, once per sources (build/mutate/baseline.json): a kill counts only
+when that test passes unmutated, else there is no score. A test that a
+mutant passes needs no baseline, so the slow tests that kill nothing do not
+run twice. Test times (the order and the time-outs) are kept in
+build/mutate/test_times.json from every passing run. Mutants argued equivalent in docs/mutation.md (its table
 "Equivalent mutants") are left out of the score's denominator.
 
   tools/mutate.py                 all mutants; report in build/mutate/report.txt
@@ -66,6 +70,7 @@ LOGDIR = os.path.join(ROOT, "build", "mutate")
 REPORT = os.path.join(LOGDIR, "report.txt")
 RESULTS = os.path.join(LOGDIR, "results.json")
 BASELINE = os.path.join(LOGDIR, "baseline.json")
+TIMES = os.path.join(LOGDIR, "test_times.json")
 EQUIV_DOC = os.path.join(ROOT, "docs", "mutation.md")
 # what the harness reads itself, no test of a mutated module: a change here
 # keeps the baseline
@@ -75,6 +80,11 @@ MUTANTS = os.path.join(ROOT, "tools", "mutants.txt")
 # TIMEOUT_MIN_S) has met a mutant that makes it hang: killed.
 TIMEOUT_FACTOR = 4
 TIMEOUT_MIN_S = 10
+# A test never timed yet: its place in the order is a guess by kind, and a
+# mutant that makes it hang is stopped after UNKNOWN_LIMIT_S.
+UNKNOWN_C_S = 1.0
+UNKNOWN_SCRIPT_S = 10.0
+UNKNOWN_LIMIT_S = 300
 NOT_PASS_FAIL = ("fuzz", "bench")
 ENV = dict(os.environ, PYTHONDONTWRITEBYTECODE="1", CI="", MAKEFLAGS="")
 
@@ -290,22 +300,65 @@ def score_table(results, before, equivalent=frozenset()):
     return lines
 
 
-def baseline_times(fingerprint, needed, trees, tty, fresh):
-    """{program: seconds} of the unmutated tree's tests, or None when one
-    fails. Kept in build/mutate/baseline.json with the sources'
-    fingerprint: while the sources are unchanged the tests are not run
-    again (their builds are checked by make all the same)."""
-    cache = {}
-    if os.path.exists(BASELINE) and not fresh:
-        with open(BASELINE, encoding="utf-8") as f:
-            doc = json.load(f)
-        if doc.get("fingerprint") == fingerprint:
-            cache = doc.get("secs", {})
-    todo = [p for _, p in needed if p not in cache]
+class TestTimes:
+    """How long each test takes on the unmutated tree, as far as known:
+    build/mutate/test_times.json, kept across runs and source changes (an
+    estimate for the order and the time-outs, updated by every passing
+    run), and which tests passed on the unmutated tree of these sources
+    (build/mutate/baseline.json, with the sources' fingerprint)."""
+
+    def __init__(self, fingerprint, fresh):
+        self.fingerprint = fingerprint
+        self.secs = {}
+        self.passed = {}
+        self.lock = threading.Lock()
+        if os.path.exists(TIMES):
+            with open(TIMES, encoding="utf-8") as f:
+                self.secs = json.load(f)
+        if os.path.exists(BASELINE) and not fresh:
+            with open(BASELINE, encoding="utf-8") as f:
+                doc = json.load(f)
+            if doc.get("fingerprint") == fingerprint:
+                self.passed = doc.get("secs", {})
+        self.secs.update(self.passed)
+
+    def estimate(self, prog):
+        """Seconds: the last known time, else a guess by kind (a C
+        program is quick, a script may start other programs)."""
+        if prog in self.secs:
+            return self.secs[prog]
+        return UNKNOWN_C_S if prog.startswith("build/") else UNKNOWN_SCRIPT_S
+
+    def limit(self, prog):
+        """The time-out of a test on a mutant (None: no known time)."""
+        if prog not in self.secs:
+            return UNKNOWN_LIMIT_S
+        return max(TIMEOUT_MIN_S, TIMEOUT_FACTOR * self.secs[prog])
+
+    def ran(self, prog, secs):
+        with self.lock:
+            self.secs[prog] = round(secs, 2)
+
+    def save(self):
+        with self.lock:
+            with open(TIMES, "w", encoding="utf-8") as f:
+                json.dump(self.secs, f, indent=0, sort_keys=True)
+            with open(BASELINE, "w", encoding="utf-8") as f:
+                json.dump({"fingerprint": self.fingerprint, "secs": self.passed}, f, indent=0, sort_keys=True)
+
+
+def confirm_killers(results, times, trees, tty):
+    """The baseline, for the tests that matter: every test that killed a
+    mutant must pass on the unmutated tree (else its kills say nothing),
+    run once per sources; a test that only passed needs no baseline, and a
+    slow test that kills nothing is never run unmutated. Returns the tests
+    that fail there, and the mutants a time-out killed with a limit below
+    TIMEOUT_FACTOR times the test's unmutated time (to be run again)."""
+    killers = sorted({r["by"].split(" ")[0] for r in results
+                      if r["how"] == "KILLED" and not r["by"].startswith("(")} - set(times.passed))
     failing = []
-    lock = threading.Lock()
     work = queue.Queue()
-    for p in todo:
+    for p in killers:
         work.put(p)
 
     def worker(tree):
@@ -315,27 +368,28 @@ def baseline_times(fingerprint, needed, trees, tty, fresh):
             except queue.Empty:
                 return
             ok, secs, why = run_one(tree, prog, None)
-            with lock:
-                cache[prog] = secs
-                if not ok:
+            with times.lock:
+                if ok:
+                    times.passed[prog] = round(secs, 2)
+                    times.secs[prog] = round(secs, 2)
+                else:
                     failing.append("%s (%s)" % (prog, why))
                 if tty:
-                    sys.stderr.write("\r\033[Kbaseline: ran %d/%d %s" % (len(todo) - work.qsize(), len(todo), prog))
-
+                    sys.stderr.write("\r\033[Kbaseline: the unmutated tree passes %d/%d tests that killed a mutant"
+                                     % (len(killers) - work.qsize(), len(killers)))
     threads = [threading.Thread(target=worker, args=(t,)) for t in trees]
     for t in threads:
         t.start()
     for t in threads:
         t.join()
-    if failing:
-        print("\nbaseline: fails on the unmutated tree, no score:\n  " + "\n  ".join(sorted(failing)))
-        return None
-    with open(BASELINE, "w", encoding="utf-8") as f:
-        json.dump({"fingerprint": fingerprint, "secs": cache}, f, indent=0)
-    return cache
+    if tty and killers:
+        sys.stderr.write("\r\033[K")
+    again = [r["id"] for r in results if r["by"].endswith(" (timeout)")
+             and r.get("limit", 0) < TIMEOUT_FACTOR * times.passed.get(r["by"].split(" ")[0], 0)]
+    return failing, again
 
 
-def run_mutant(tree, m, how_map, tests, base_s, make_jobs):
+def run_mutant(tree, m, how_map, tests, times, make_jobs):
     """Apply one mutant in a scratch tree, build and run its tests (in the
     given order, stop at the first failure), put the file back."""
     t0 = time.time()
@@ -346,6 +400,7 @@ def run_mutant(tree, m, how_map, tests, base_s, make_jobs):
     with open(path, "w", encoding="utf-8") as f:
         f.write(orig.replace(m["old"], m["new"], 1))
     how, by = "SURVIVED", ""
+    limit = 0
     # a Python tool builds nothing: its tests run at once (the baseline
     # built what they need)
     python = m["file"].endswith(".py")
@@ -359,9 +414,11 @@ def run_mutant(tree, m, how_map, tests, base_s, make_jobs):
                 how, by = "KILLED", "(does not build)"
                 break
             for _, prog in group:
-                limit = max(TIMEOUT_MIN_S, TIMEOUT_FACTOR * base_s[prog])
-                ok, _, why = run_one(tree, prog, limit)
-                if not ok:
+                limit = times.limit(prog)
+                ok, secs, why = run_one(tree, prog, limit)
+                if ok:
+                    times.ran(prog, secs)  # a pass: the test's own time
+                else:
                     how, by = "KILLED", prog + (" (timeout)" if why == "timeout" else "")
                     break
     finally:
@@ -370,7 +427,8 @@ def run_mutant(tree, m, how_map, tests, base_s, make_jobs):
         now = time.time()
         os.utime(path, (now, now))
     return dict(id=m["id"], file=m["file"], old=m["old"], new=m["new"], how=how, by=by,
-                map=how_map, secs=round(time.time() - t0, 1))
+                map=how_map, secs=round(time.time() - t0, 1),
+                limit=limit if by.endswith(" (timeout)") else 0)
 
 
 def summary(results, before, timing):
@@ -507,11 +565,10 @@ def main(argv):
                 os.cpu_count() or 1) != 0:
             print("baseline build failed in %s" % tree)
             return 1
-    base_s = baseline_times(fingerprint, needed, trees, tty, args.fresh_baseline)
-    if base_s is None:
-        return 1
+    times = TestTimes(fingerprint, args.fresh_baseline)
     if tty:
-        sys.stderr.write("\r\033[Kbaseline: %d tests pass (%s)\n" % (len(needed), fmt_s(time.time() - start)))
+        sys.stderr.write("\r\033[Kbuilt (%s); the unmutated tree runs the tests that kill a mutant at the end\n"
+                         % fmt_s(time.time() - start))
 
     before = {}
     if os.path.exists(args.before):
@@ -523,13 +580,14 @@ def main(argv):
             previous = {r["id"]: r for r in json.load(f)}
     order = {}
     for m in mutants:
-        tests = sorted(plan[m["file"]][1], key=lambda t: base_s[t[1]])
+        tests = sorted(plan[m["file"]][1], key=lambda t: (times.estimate(t[1]), t[1]))
         # the test that killed it last time first: most mutants die there again
         killer = previous.get(m["id"], {}).get("by", "").split(" ")[0]
         tests.sort(key=lambda t: t[1] != killer)
         order[m["id"]] = tests
     # the longest first, so that the workers end together
-    expect = {m["id"]: sum(base_s[p] for _, p in order[m["id"]][:1 if previous.get(m["id"], {}).get("how") == "KILLED" else None])
+    expect = {m["id"]: sum(times.estimate(p) for _, p in
+                           order[m["id"]][:1 if previous.get(m["id"], {}).get("how") == "KILLED" else None])
               for m in mutants}
     work = queue.Queue()
     for m in sorted(mutants, key=lambda m: expect[m["id"]] if args.cheap_first else -expect[m["id"]]):
@@ -549,7 +607,7 @@ def main(argv):
             with lock:
                 busy[tree] = m["id"]
                 prog_bar.show(len(results), count["killed"], count["survived"], " ".join(sorted(busy.values())))
-            r = run_mutant(tree, m, plan[m["file"]][0], order[m["id"]], base_s, make_jobs)
+            r = run_mutant(tree, m, plan[m["file"]][0], order[m["id"]], times, make_jobs)
             with lock:
                 del busy[tree]
                 results[m["id"]] = r
@@ -584,9 +642,25 @@ def main(argv):
     prog_bar.clear()
     results = [results[m["id"]] for m in mutants if m["id"] in results]
     killed = count["killed"]
-    # leave the scratch builds matching the sources again
+    # leave the scratch builds matching the sources again: the baseline of
+    # the killing tests runs there
     for tree in trees:
         make(tree, targets, os.path.join(LOGDIR, "restore-build.log"), os.cpu_count() or 1)
+    failing, again = confirm_killers(results, times, trees, tty)
+    if again and not failing:
+        # killed by a time-out shorter than the test's own time allows: again
+        by_id = {m["id"]: m for m in mutants}
+        for mid in again:
+            r = run_mutant(trees[0], by_id[mid], plan[by_id[mid]["file"]][0], order[mid], times, make_jobs)
+            results = [r if x["id"] == mid else x for x in results]
+            say("%-8s %-10s again, the time-out from the test's unmutated time" % (r["how"], mid))
+        make(trees[0], targets, os.path.join(LOGDIR, "restore-build.log"), os.cpu_count() or 1)
+        failing, _ = confirm_killers(results, times, trees, tty)
+    times.save()
+    save_results(previous, results)
+    if failing:
+        print("baseline: fails on the unmutated tree, no score:\n  " + "\n  ".join(sorted(failing)))
+        return 1
     cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu_s = (cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime)
 
