@@ -80,11 +80,14 @@ MUTANTS = os.path.join(ROOT, "tools", "mutants.txt")
 # TIMEOUT_MIN_S) has met a mutant that makes it hang: killed.
 TIMEOUT_FACTOR = 4
 TIMEOUT_MIN_S = 10
-# A test never timed yet: its place in the order is a guess by kind, and a
-# mutant that makes it hang is stopped after UNKNOWN_LIMIT_S.
+# A test never timed yet: its place in the order is a guess by kind; it is
+# first run for PROBE_S (cut off there, it runs in full after the mutant's
+# other tests), and a mutant that makes it hang is stopped after
+# UNKNOWN_LIMIT_S.
 UNKNOWN_C_S = 1.0
 UNKNOWN_SCRIPT_S = 10.0
 UNKNOWN_LIMIT_S = 300
+PROBE_S = 3
 NOT_PASS_FAIL = ("fuzz", "bench")
 ENV = dict(os.environ, PYTHONDONTWRITEBYTECODE="1", CI="", MAKEFLAGS="")
 
@@ -329,6 +332,9 @@ class TestTimes:
             return self.secs[prog]
         return UNKNOWN_C_S if prog.startswith("build/") else UNKNOWN_SCRIPT_S
 
+    def known(self, prog):
+        return prog in self.secs
+
     def limit(self, prog):
         """The time-out of a test on a mutant (None: no known time)."""
         if prog not in self.secs:
@@ -413,11 +419,26 @@ def run_mutant(tree, m, how_map, tests, times, make_jobs):
             if not python and make(tree, sorted({mk for mk, _ in group}), log, make_jobs) != 0:
                 how, by = "KILLED", "(does not build)"
                 break
+            # a test never timed first gets PROBE_S: most mutants die in a
+            # quick test, so a slow one is cut off and run in full only
+            # when no other test has killed the mutant
+            later = []
             for _, prog in group:
-                limit = times.limit(prog)
+                probe = not times.known(prog)
+                limit = PROBE_S if probe else times.limit(prog)
                 ok, secs, why = run_one(tree, prog, limit)
                 if ok:
                     times.ran(prog, secs)  # a pass: the test's own time
+                elif probe and why == "timeout":
+                    later.append(prog)
+                else:
+                    how, by = "KILLED", prog + (" (timeout)" if why == "timeout" else "")
+                    break
+            for prog in later if how != "KILLED" else ():
+                limit = times.limit(prog)
+                ok, secs, why = run_one(tree, prog, limit)
+                if ok:
+                    times.ran(prog, secs)
                 else:
                     how, by = "KILLED", prog + (" (timeout)" if why == "timeout" else "")
                     break
