@@ -314,6 +314,7 @@ class TestTimes:
         self.fingerprint = fingerprint
         self.secs = {}
         self.passed = {}
+        self.floor = {}  # cut off after this many seconds: slower than that
         self.lock = threading.Lock()
         if os.path.exists(TIMES):
             with open(TIMES, encoding="utf-8") as f:
@@ -326,11 +327,19 @@ class TestTimes:
         self.secs.update(self.passed)
 
     def estimate(self, prog):
-        """Seconds: the last known time, else a guess by kind (a C
-        program is quick, a script may start other programs)."""
+        """Seconds: the last known time, else how long it ran before it
+        was cut off, else a guess by kind (a C program is quick, a script
+        may start other programs)."""
         if prog in self.secs:
             return self.secs[prog]
+        if prog in self.floor:
+            return self.floor[prog]
         return UNKNOWN_C_S if prog.startswith("build/") else UNKNOWN_SCRIPT_S
+
+    def cut_off(self, prog, secs):
+        """prog ran secs and was stopped: it takes at least that long."""
+        with self.lock:
+            self.floor[prog] = max(self.floor.get(prog, 0.0), round(secs, 2), UNKNOWN_SCRIPT_S + 1.0)
 
     def known(self, prog):
         return prog in self.secs
@@ -430,6 +439,7 @@ def run_mutant(tree, m, how_map, tests, times, make_jobs):
                 if ok:
                     times.ran(prog, secs)  # a pass: the test's own time
                 elif probe and why == "timeout":
+                    times.cut_off(prog, secs)
                     later.append(prog)
                 else:
                     how, by = "KILLED", prog + (" (timeout)" if why == "timeout" else "")
@@ -599,16 +609,18 @@ def main(argv):
     if os.path.exists(RESULTS):
         with open(RESULTS, encoding="utf-8") as f:
             previous = {r["id"]: r for r in json.load(f)}
-    order = {}
-    for m in mutants:
+    def order_of(m):
+        """The mutant's tests, fastest first as far as known when it
+        starts (what earlier mutants learnt counts), last time's killer
+        first: most mutants die there again."""
         tests = sorted(plan[m["file"]][1], key=lambda t: (times.estimate(t[1]), t[1]))
-        # the test that killed it last time first: most mutants die there again
         killer = previous.get(m["id"], {}).get("by", "").split(" ")[0]
         tests.sort(key=lambda t: t[1] != killer)
-        order[m["id"]] = tests
+        return tests
+
     # the longest first, so that the workers end together
     expect = {m["id"]: sum(times.estimate(p) for _, p in
-                           order[m["id"]][:1 if previous.get(m["id"], {}).get("how") == "KILLED" else None])
+                           order_of(m)[:1 if previous.get(m["id"], {}).get("how") == "KILLED" else None])
               for m in mutants}
     work = queue.Queue()
     for m in sorted(mutants, key=lambda m: expect[m["id"]] if args.cheap_first else -expect[m["id"]]):
@@ -628,7 +640,7 @@ def main(argv):
             with lock:
                 busy[tree] = m["id"]
                 prog_bar.show(len(results), count["killed"], count["survived"], " ".join(sorted(busy.values())))
-            r = run_mutant(tree, m, plan[m["file"]][0], order[m["id"]], times, make_jobs)
+            r = run_mutant(tree, m, plan[m["file"]][0], order_of(m), times, make_jobs)
             with lock:
                 del busy[tree]
                 results[m["id"]] = r
@@ -672,7 +684,7 @@ def main(argv):
         # killed by a time-out shorter than the test's own time allows: again
         by_id = {m["id"]: m for m in mutants}
         for mid in again:
-            r = run_mutant(trees[0], by_id[mid], plan[by_id[mid]["file"]][0], order[mid], times, make_jobs)
+            r = run_mutant(trees[0], by_id[mid], plan[by_id[mid]["file"]][0], order_of(by_id[mid]), times, make_jobs)
             results = [r if x["id"] == mid else x for x in results]
             say("%-8s %-10s again, the time-out from the test's unmutated time" % (r["how"], mid))
         make(trees[0], targets, os.path.join(LOGDIR, "restore-build.log"), os.cpu_count() or 1)
