@@ -17,10 +17,6 @@
 # CI=true: a skip that does not match a line of tests/expected-skips.txt
 # (program | what glob | reason) is a failure: it is counted as failed, not
 # skipped, and the run fails.
-# Parallel: TEST_JOBS programs at a time (default: the CPUs), each line
-# printed as its program ends; the programs under tests/system/ (QEMU
-# guests, target images, timing on a virtual bus: they must not share the
-# machine) run one at a time after the others.
 set -u
 logdir=${TEST_LOGDIR:-build/test-logs}
 mkdir -p "$logdir"
@@ -50,24 +46,13 @@ expected_skip() {
 	return 1
 }
 
-log_of() { # the log file of a program
-	echo "$logdir/$(echo "$1" | tr '/ ' '__').log"
-}
-
-run_prog() { # program: runs it into its log, then its exit status and seconds
-	local log start rc
-	log=$(log_of "$1")
+for prog in "$@"; do
+	name=$(echo "$prog" | tr '/ ' '__')
+	log="$logdir/$name.log"
 	start=$(date +%s)
-	"$1" >"$log" 2>&1 </dev/null
+	"$prog" >"$log" 2>&1
 	rc=$?
-	echo "$rc $(( $(date +%s) - start ))" >"$log.status"
-}
-
-report_prog() { # program (ended): counts its checks and skips, prints its line
-	local prog=$1 log rc secs p f s counted line names i what bad skipnote
-	log=$(log_of "$prog")
-	read -r rc secs <"$log.status"
-	rm -f "$log.status"
+	secs=$(( $(date +%s) - start ))
 	p=0; f=0; s=0; counted=0
 	# names of the skips this program reports
 	mapfile -t names < <( {
@@ -121,37 +106,6 @@ report_prog() { # program (ended): counts its checks and skips, prints its line
 		tail -n 30 "$log" | sed 's/^/    | /'
 		failed_progs+=("$prog")
 	fi
-}
-
-jobs=${TEST_JOBS:-$(nproc 2>/dev/null || echo 1)}
-[ "$jobs" -ge 1 ] 2>/dev/null || jobs=1
-declare -A running=() # pid -> program
-alone=()
-
-start_prog() {
-	run_prog "$1" &
-	running[$!]=$1
-}
-
-finish_one() { # waits for one running program and reports it
-	local pid prog
-	wait -n -p pid
-	prog=${running[$pid]}
-	unset "running[$pid]"
-	report_prog "$prog"
-}
-
-for prog in "$@"; do
-	case $prog in
-	tests/system/*) alone+=("$prog"); continue ;;
-	esac
-	while [ "${#running[@]}" -ge "$jobs" ]; do finish_one; done
-	start_prog "$prog"
-done
-while [ "${#running[@]}" -gt 0 ]; do finish_one; done
-for prog in "${alone[@]}"; do
-	start_prog "$prog"
-	finish_one
 done
 echo
 if [ "${#skips[@]}" -gt 0 ]; then

@@ -8,7 +8,6 @@
 set -u
 cd "$(dirname "$0")/../.."
 tmp=$(mktemp -d build/run-tests-selftest.XXXXXX 2>/dev/null || { mkdir -p build; mktemp -d build/run-tests-selftest.XXXXXX; })
-tmp=$(cd "$tmp" && pwd)
 trap 'rm -rf "$tmp"' EXIT
 # shellcheck source=tests/support/checks.sh
 . tests/support/checks.sh
@@ -55,19 +54,4 @@ check "CI: an unexpected skip fails the run (exit $rc)" [ "$rc" != 0 ]
 check "CI: a row without a reason covers nothing; unnamed skip unexpected (got: $(last "$tmp/ci-bad"))" \
 	[ "$(last "$tmp/ci-bad")" = "4 passed, 2 failed, 1 skipped" ]
 check "CI: the unexpected skip is named" grep -q '^  .*/skips: widget check (no widget)' "$tmp/ci-bad"
-# TEST_JOBS: the same counts one at a time and three at a time; a program
-# under tests/system/ runs alone (it finds no other program running)
-mkdir -p "$tmp/tests/system"
-fake slow 'touch "$0.running"; sleep 1; rm -f "$0.running"; echo "RESULT: 1 passed, 0 failed"'
-fake slow2 'touch "$0.running"; sleep 1; rm -f "$0.running"; echo "RESULT: 1 passed, 0 failed"'
-printf '#!/bin/sh\nif ls %s/*.running >/dev/null 2>&1; then echo "RESULT: 0 passed, 1 failed"; exit 1; fi\necho "RESULT: 1 passed, 0 failed"\n' \
-	"$tmp" >"$tmp/tests/system/alone"
-chmod +x "$tmp/tests/system/alone"
-progs=("$tmp/skips" "$tmp/skiplines" "$tmp/unnamed" "$tmp/cmocka" "$tmp/fails" "$tmp/slow" "$tmp/slow2")
-run "$tmp/one" CI= TEST_JOBS=1 tests/run-tests.sh "${progs[@]}"
-( cd "$tmp" && env TEST_LOGDIR="$tmp/logs" EXPECTED_SKIPS="$tmp/expected" CI= TEST_JOBS=3 \
-	"$OLDPWD/tests/run-tests.sh" "${progs[@]}" tests/system/alone >"$tmp/three" 2>&1 )
-check "TEST_JOBS=1 and 3: the same counts (got: $(last "$tmp/one") / $(last "$tmp/three"))" \
-	[ "$(last "$tmp/one")" = "9 passed, 1 failed, 5 skipped" ] && [ "$(last "$tmp/three")" = "10 passed, 1 failed, 5 skipped" ]
-check "a program under tests/system/ runs when no other does" grep -q '^PASS  tests/system/alone' "$tmp/three"
 checks_done
