@@ -197,9 +197,13 @@ def copy_tree(dst, files):
             data = a.read()
         if rel not in NOT_FINGERPRINTED:
             h.update(rel.encode() + b"\0" + hashlib.sha1(data).digest())
+        mode = os.stat(src).st_mode & 0o777
+        h.update(b"%o" % mode)  # an exec bit is part of what a test runs
         if os.path.exists(out):
             with open(out, "rb") as b:
                 if b.read() == data:
+                    if os.stat(out).st_mode & 0o777 != mode:
+                        os.chmod(out, mode)
                     continue  # keep its time stamp: make need not rebuild it
         os.makedirs(os.path.dirname(out), exist_ok=True)
         shutil.copy2(src, out)
