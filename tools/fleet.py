@@ -13,10 +13,12 @@ logs: several short logs make one task, so that a task's cost is the
 replays' and not the scheduler's or a process start per log; a log longer
 than a task's share is a task of its own. On a terminal, a progress line
 (logs done / total, time left) is kept up to date on stderr.
-Without --scheduler a LocalCluster of --workers processes (default: the
-number of CPUs) runs on this machine; with --scheduler tcp://HOST:PORT the
-same tasks go to an existing cluster (`dask scheduler`, `dask worker`), whose
-workers must see the logs and squeal-sim at the same paths.
+Without --scheduler a LocalCluster runs --workers replays at a time on this
+machine (default: the number of CPUs), as worker threads of this process
+up to 4 and as worker processes of up to 4 threads beyond; with
+--scheduler tcp://HOST:PORT the same tasks go to an existing cluster
+(`dask scheduler`, `dask worker`), one replay at a time per worker thread,
+whose workers must see the logs and squeal-sim at the same paths.
 
 A log that cannot be read, is malformed or whose replay fails is listed in
 the report with its reason; it never stops the run. The report (-o, default
@@ -108,21 +110,55 @@ def replay_each(logs, sim, calib, timeout_s):
     return docs, (last[-1] if last else why)
 
 
+def add_cells(acc, summary):
+    """Adds one log's time per (v0, N) cell and state to acc ({corner:
+    {(i, j, state): seconds}}); returns the document's grid."""
+    for c in summary["corners"]:
+        into = acc.setdefault(c["corner"], {})
+        for i, j, s, sec in c["cells"]:
+            into[(i, j, s)] = into.get((i, j, s), 0.0) + float(sec)
+    return summary["cells_grid"]
+
+
+def merge_cells(acc, part):
+    """Adds one task's cells ({corner: {(i, j, state): seconds}}) to acc."""
+    for corner, cells in part.items():
+        into = acc.setdefault(corner, {})
+        for key, sec in cells.items():
+            into[key] = into.get(key, 0.0) + sec
+
+
+def report_part(summary):
+    """What the report reads of a log's document besides its cells: the
+    time in each state per corner and the episodes (the rest, a few
+    kilobytes per log, is not sent back from the worker)."""
+    return {"corners": [{"corner": c["corner"], "state_time_s": c["state_time_s"]}
+                        for c in summary["corners"]],
+            "episodes": summary["episodes"]}
+
+
 def replay_batch(logs, sim, calib, timeout_s):
     """One task: its logs in one replay process (a process start per log
     would cost more than the replay of a short log). Logs that process did
     not finish (it crashed or took too long) are replayed one by one, so
-    that only the log at fault is failed; always returns a result per log."""
+    that only the log at fault is failed. Returns {"results": a result per
+    log, in order, "cells": the logs' cells added up (add_cells), "grid"}:
+    the cells are most of a document, and adding them up here sends the
+    client a task's worth instead of a log's worth each."""
     docs, why = replay_each(logs, sim, calib, timeout_s)
-    out = []
+    out, cells, grid = [], {}, None
     for log in logs:
         if log not in docs and len(logs) > 1:
             docs.update(replay_each([log], sim, calib, timeout_s)[0])
-        if log in docs:
-            out.append(outcome(log, docs[log]))
-        else:
+        if log not in docs:
             out.append({"log": log, "status": "failed", "reason": why, "summary": None})
-    return out
+            continue
+        res = outcome(log, docs[log])
+        if res["status"] != "failed":
+            grid = add_cells(cells, res["summary"])
+            res["summary"] = report_part(res["summary"])
+        out.append(res)
+    return {"results": out, "cells": cells, "grid": grid}
 
 
 # ---- running it ------------------------------------------------------------
@@ -184,6 +220,22 @@ class Progress:
             self.stream.flush()
 
 
+THREADS_PER_PROCESS = 4  # replays one worker process runs at a time
+
+
+def local_layout(replays):
+    """(worker processes, threads each) of a LocalCluster that runs
+    `replays` replays at a time. A task's thread only waits for its replay
+    process, then reads its documents (about a tenth of a log's cost,
+    holding the interpreter), so up to THREADS_PER_PROCESS threads share
+    one process; up to that many, the workers are threads of this very
+    process, so that no result is pickled and no process but the replays
+    competes for the CPUs (on two CPUs, worker processes cost a tenth of
+    the fleet's speed)."""
+    procs = -(-replays // THREADS_PER_PROCESS)
+    return procs, -(-replays // procs)
+
+
 def run_tasks(logs, args):
     """Same code path for a LocalCluster and an existing scheduler."""
     from dask.distributed import Client, LocalCluster, as_completed
@@ -193,23 +245,30 @@ def run_tasks(logs, args):
         client = Client(args.scheduler, timeout="30s")
         where = "cluster at %s" % args.scheduler
     else:
-        cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True,
-                               host="127.0.0.1", dashboard_address=None)
+        procs, threads = local_layout(args.workers)
+        opts = {"host": "127.0.0.1"} if procs > 1 else {}
+        cluster = LocalCluster(n_workers=procs, threads_per_worker=threads, processes=procs > 1,
+                               dashboard_address=None, **opts)
         client = Client(cluster)
-        where = "LocalCluster, %d worker processes" % args.workers
+        where = "LocalCluster, %d worker process%s x %d thread%s" % (
+            procs, "" if procs == 1 else "es", threads, "" if threads == 1 else "s")
     try:
-        nworkers = len(client.scheduler_info().get("workers", {}))
+        # a replay at a time per worker thread (a task is one replay process)
+        nworkers = sum(w.get("nthreads", 1) for w in client.scheduler_info().get("workers", {}).values())
         t_submit = time.monotonic()
         tasks = batches(logs, nworkers)
         futures = client.map(replay_batch, tasks, sim=args.sim, calib=args.calib,
                              timeout_s=args.timeout, pure=False)
         task_of = {fut.key: batch for fut, batch in zip(futures, tasks)}
         progress = Progress(logs)
-        results = []
+        results, cells, grid = [], {}, None
         for fut in as_completed(futures):
             batch = task_of[fut.key]
             try:
-                results.extend(fut.result())
+                part = fut.result()
+                results.extend(part["results"])
+                merge_cells(cells, part["cells"])
+                grid = part["grid"] or grid
             except Exception as e:  # a worker died: still listed logs
                 results.extend({"log": log, "status": "failed", "summary": None,
                                 "reason": "task failed: %s" % (str(e) or type(e).__name__)}
@@ -223,7 +282,7 @@ def run_tasks(logs, args):
             cluster.close()
     timing = {"where": where, "workers": nworkers, "tasks": len(tasks), "job_s": t_done - t_submit,
               "wall_s": time.monotonic() - t_start}
-    return sorted(results, key=lambda r: r["log"]), timing
+    return sorted(results, key=lambda r: r["log"]), cells, grid, timing
 
 
 # ---- the report ------------------------------------------------------------
@@ -270,17 +329,13 @@ def write_csvs(out, results):
 
 
 def cells_of(results):
-    """{corner: {(i, j, state): seconds}} over every readable log, and the grid."""
+    """{corner: {(i, j, state): seconds}} over every readable log whose
+    summary is a whole document, and the grid."""
     grid = None
     cells = {}
     for r in results:
-        if r["status"] == "failed":
-            continue
-        grid = r["summary"]["cells_grid"]
-        for c in r["summary"]["corners"]:
-            acc = cells.setdefault(c["corner"], {})
-            for i, j, s, sec in c["cells"]:
-                acc[(i, j, s)] = acc.get((i, j, s), 0.0) + float(sec)
+        if r["status"] != "failed":
+            grid = add_cells(cells, r["summary"])
     return cells, grid
 
 
@@ -485,7 +540,7 @@ def main():
     ap.add_argument("-o", "--out", default=os.path.join(DC.ROOT, "build", "fleet-report"), metavar="REPORT_DIR",
                     help="folder the report is written to (default build/fleet-report)")
     ap.add_argument("--workers", type=int, default=os.cpu_count() or 1,
-                    help="LocalCluster worker processes (default: CPUs)")
+                    help="replays at a time on the LocalCluster (default: CPUs)")
     ap.add_argument("--sim", default=DC.SIM, help="squeal-sim (default: build/host/squeal-sim)")
     ap.add_argument("--timeout", type=float, default=600.0, help="seconds per log (default 600)")
     args = ap.parse_args()
@@ -511,7 +566,7 @@ def main():
                   file=sys.stderr)
             return 2
     try:
-        results, timing = run_tasks(logs, args)
+        results, cells, grid, timing = run_tasks(logs, args)
     except ImportError as e:
         print("fleet: Dask is missing (%s): apt-get install python3-dask python3-distributed" % e,
               file=sys.stderr)
@@ -522,7 +577,6 @@ def main():
         return 1
     os.makedirs(args.out, exist_ok=True)
     totals, n_ep = write_csvs(args.out, results)
-    cells, grid = cells_of(results)
     write_cells(args.out, cells, grid)
     shown = [c for c in DC.CORNERS if c in cells] or [min(setups, key=DC.CORNERS.index)]
     note = border_note(setups, args.calib, shown)

@@ -1,15 +1,16 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """tools/fleet.py end to end, in bounded time: 16 generated logs (5 broken
-in every way gen_fleet_logs.py knows) on a LocalCluster of 2 worker
-processes, then the same job once on a separately started `dask scheduler`
+in every way gen_fleet_logs.py knows) on a LocalCluster of 2 workers,
+then the same job once on a separately started `dask scheduler`
 + `dask worker` on 127.0.0.1 (the cluster path). Checked independently:
 
   - every broken log is listed with its reason, and the run goes on;
   - time per state per log equals replay's text summary of that log (run
     here, without Dask), the ALL rows are the sums, and each log has
     state changes + 1 episodes (the generated logs have one corner, FL);
-  - the heat map: cells.csv's time is within each corner's total, the PNG
+  - the heat map: cells.csv's time is within each corner's total and each
+    cell's is the sum of the logs' own cells (each log's --summary-json), the PNG
     has pixels in the reported-state colours of the states the fleet spent
     time in, the SVG draws both border lines; the HTML page shows it all;
   - the cluster path gives the same CSVs as the LocalCluster;
@@ -20,6 +21,7 @@ processes, then the same job once on a separately started `dask scheduler`
 Prints "RESULT: N passed, M failed, K skipped".
 """
 import csv
+import json
 import os
 import re
 import subprocess
@@ -74,6 +76,27 @@ def text_state_times(log):
     return {k: float(v) for k, v in re.findall(r"(\w+)=([\d.]+)", st)}, ch
 
 
+def ref_cells(logs):
+    """{(corner, v0_lo, force_lo, state): seconds} as cells.csv prints them,
+    added up here from each log's own --summary-json (one replay per log)."""
+    acc, grid = {}, None
+    with tempfile.TemporaryDirectory() as tmp:
+        doc = os.path.join(tmp, "s.json")
+        for log in logs:
+            subprocess.run([SIM, "replay", log, "--no-output", "--quiet", "--summary-json", doc],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=60)
+            with open(doc) as f:
+                j = json.load(f)
+            grid = j["cells_grid"]
+            for c in j["corners"]:
+                for i, k, state, sec in c["cells"]:
+                    key = (c["corner"], i, k, state)
+                    acc[key] = acc.get(key, 0.0) + sec
+    dv, dn = float(grid["v0_bin_mps"]), float(grid["force_bin_n"])
+    return {(c, "%.2f" % (i * dv), "%g" % (k * dn), s): "%.6f" % sec
+            for (c, i, k, s), sec in acc.items()}
+
+
 def check_report(logdir, out):
     probs = {r["log"]: r for r in rows(os.path.join(out, "problems.csv"))}
     broken = sorted(os.path.join(logdir, f) for f in os.listdir(logdir) if f.startswith("broken-"))
@@ -104,6 +127,10 @@ def check_report(logdir, out):
     cell_t = sum(float(c["time_s"]) for c in cells)
     grand = sum(total.values())
     R.check(0.5 * grand < cell_t <= grand + 1e-6, "cells hold %.1f s of %.1f s" % (cell_t, grand))
+    want = ref_cells(sorted({r["log"] for r in per_log}))
+    got = {(c["corner"], c["v0_lo_mps"], c["force_lo_n"], c["state"]): c["time_s"] for c in cells}
+    R.check(got == want, "cells.csv: each cell's time is the sum of the drawn logs' own cells "
+            "(%d cells; replay --summary-json of each log)" % len(want))
     # the picture: pixels in the colours of the reported states
     import matplotlib.image as mpimg
     import numpy as np

@@ -33,7 +33,8 @@ R = Results()
 
 def replayed(logdir):
     logs = sorted(glob.glob(os.path.join(logdir, "**", "*.log"), recursive=True))
-    return fleet.replay_batch(logs, SIM, None, 120)
+    batch = fleet.replay_batch(logs, SIM, None, 120)
+    return batch["results"], batch["cells"], batch["grid"]
 
 
 def main():
@@ -42,7 +43,7 @@ def main():
         subprocess.run([PY, os.path.join(ROOT, "tools", "gen_fleet_logs.py"), "--out", logdir,
                         "--count", "6", "--broken", "2", "--seed", "7"], check=True, timeout=120,
                        stdout=subprocess.DEVNULL)
-        results = replayed(logdir)
+        results, cells, grid = replayed(logdir)
         failed = [r for r in results if r["status"] == "failed"]
         drawn = [r for r in results if r["status"] != "failed"]
         # independent: replay's text summary of each drawn log
@@ -50,7 +51,6 @@ def main():
         rep = os.path.join(tmp, "rep")
         os.makedirs(rep)
         totals, _ = fleet.write_csvs(rep, results)
-        cells, grid = fleet.cells_of(results)
         title = fleet.heat_title(results)
         fig, panels = fleet.heat_figure(cells, grid, fleet.corner_setups(None), title, totals)
         R.check(title.startswith("%d logs drawn (%d failed, not drawn" % (len(drawn), len(failed)))

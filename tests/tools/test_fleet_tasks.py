@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """tools/fleet.py's tasks and progress, without Dask:
-  - batches(): every log in exactly one task; about 8 tasks per worker of
-    about equal bytes; a log larger than a task's share is a task alone;
+  - batches(): every log in exactly one task; about TASKS_PER_WORKER tasks
+    per worker of about equal bytes; a log larger than a task's share is a task alone;
     small logs share tasks; one worker or many, none empty;
   - Progress: nothing written when the stream is not a terminal; on a
     terminal (a pty) "fleet: D/T logs, S s left" after each task, and the
@@ -15,7 +15,9 @@
   - replay_batch(): a task's logs in one `replay --each`; when that process
     crashes or hangs on one log (a stand-in squeal-sim that kills itself or
     sleeps there), every other log still gets its result from a replay of
-    its own, and only that log fails, with the reason.
+    its own, and only that log fails, with the reason; the finished logs'
+    cells come back added up, and each log's summary with only its state
+    times and episodes.
 Prints "RESULT: N passed, M failed"."""
 import io
 import os
@@ -151,7 +153,10 @@ for log in logs:
         sys.stdout.flush()
         time.sleep(30)
     print(json.dumps({"log": log, "exit_status": 0, "error": "", "started": True,
-                      "first_malformed": None, "lines": {"total": 1, "malformed": 0}}))
+                      "first_malformed": None, "lines": {"total": 1, "malformed": 0},
+                      "corners": [{"corner": "FL", "state_time_s": {"stable": 1.0},
+                                   "cells": [[1, 2, "stable", 0.25]]}],
+                      "episodes": [], "cells_grid": {"v0_bins": 4}}))
 """
 
 
@@ -162,13 +167,20 @@ def test_batch_fallback(tmp):
     os.chmod(sim, 0o755)
     for bad in ("crash.log", "slow.log"):
         logs = [os.path.join(tmp, n) for n in ("a.log", "b.log", bad, "c.log", "d.log")]
-        res = fleet.replay_batch(logs, sim, None, 1.0)
+        batch = fleet.replay_batch(logs, sim, None, 1.0)
+        res = batch["results"]
         check([r["log"] for r in res] == logs, "%s: a result per log, in order" % bad)
         ok = [r["status"] for r in res]
         check(ok == ["ok", "ok", "failed", "ok", "ok"], "%s: only that log fails (%r)" % (bad, ok))
         why = res[2]["reason"]
         want = "exit status -11" if bad == "crash.log" else "replay took longer than 1 s"
         check(why == want, "%s: the reason %r (%r)" % (bad, want, why))
+        # the four logs that finished: their cells added up, 4 x 0.25 s
+        check(batch["cells"] == {"FL": {(1, 2, "stable"): 1.0}} and batch["grid"] == {"v0_bins": 4},
+              "%s: the finished logs' cells added up (%r)" % (bad, batch["cells"]))
+        check(res[0]["summary"] == {"corners": [{"corner": "FL", "state_time_s": {"stable": 1.0}}],
+                                    "episodes": []},
+              "%s: a log's summary keeps its state times and episodes, not its cells" % bad)
 
 
 with tempfile.TemporaryDirectory() as tmpdir:
