@@ -163,7 +163,12 @@ def replay_batch(logs, sim, calib, timeout_s):
 
 # ---- running it ------------------------------------------------------------
 
-TASKS_PER_WORKER = 4  # tasks of about equal work: few (each costs a process start and a round trip), enough that the last ones balance the workers
+# Guided scheduling: each task takes 1/(GUIDE x workers) of the work not yet
+# handed out, so the first tasks are large (few process starts and round
+# trips) and the last ones small (the workers finish together); no task is
+# below 1/(MIN_TASKS_PER_WORKER x workers) of the whole.
+GUIDE = 2
+MIN_TASKS_PER_WORKER = 16
 
 
 def log_bytes(path):
@@ -174,17 +179,22 @@ def log_bytes(path):
 
 
 def batches(logs, nworkers):
-    """The logs in tasks of about equal work (bytes, each log at least one
-    line's worth): about TASKS_PER_WORKER tasks per worker, the largest
-    first, so that the small ones fill the end."""
+    """The logs in tasks by work (bytes, each log at least one line's worth),
+    the largest logs first, each task its guided share of the work left
+    (GUIDE, MIN_TASKS_PER_WORKER): with equal tasks the last one would let
+    one worker run alone for up to a task's time (8 % of a fleet of 10-minute
+    drives on two workers)."""
     size = {log: max(log_bytes(log), 64) for log in logs}
-    share = sum(size.values()) / float(max(1, nworkers) * TASKS_PER_WORKER)
+    workers = float(max(1, nworkers))
+    left = float(sum(size.values()))
+    floor = left / (workers * MIN_TASKS_PER_WORKER)
     out, cur, work = [], [], 0
     for log in sorted(logs, key=lambda x: (-size[x], x)):
         cur.append(log)
         work += size[log]
-        if work >= share:
+        if work >= max(left / (GUIDE * workers), floor):
             out.append(cur)
+            left -= work
             cur, work = [], 0
     if cur:
         out.append(cur)

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
 """tools/fleet.py's tasks and progress, without Dask:
-  - batches(): every log in exactly one task; about TASKS_PER_WORKER tasks
-    per worker of about equal bytes; a log larger than a task's share is a task alone;
-    small logs share tasks; one worker or many, none empty;
+  - batches(): every log in exactly one task; guided shares of the bytes
+    left (by hand: 16 equal logs in 8 4 2 1 1 for one worker); a log
+    larger than a task's share is a task alone, and first; small logs share
+    tasks; one worker or many, none empty;
   - Progress: nothing written when the stream is not a terminal; on a
     terminal (a pty) "fleet: D/T logs, S s left" after each task, and the
     line cleared at the end;
@@ -49,21 +50,24 @@ def test_batches(tmp):
     small = [write(os.path.join(tmp, "s%03d.log" % i), 1000) for i in range(150)]
     big = write(os.path.join(tmp, "big.log"), 200000)
     logs = small + [big]
-    total = 150 * 1000 + 200000
     for workers in (1, 2, 4):
         tasks = fleet.batches(logs, workers)
         flat = [x for t in tasks for x in t]
         check(sorted(flat) == sorted(logs) and len(flat) == len(logs),
               "%d workers: every log in exactly one task" % workers)
         check(all(tasks), "%d workers: no empty task" % workers)
-        share = total / (workers * fleet.TASKS_PER_WORKER)
         check([big] in tasks, "%d workers: the large log is a task alone" % workers)
-        sizes = [sum(os.path.getsize(x) for x in t) for t in tasks if t != [big]]
-        check(all(s <= share + 1000 for s in sizes),
-              "%d workers: no task of small logs beyond its share %.0f (%r)" % (workers, share, sizes))
-        check(len(tasks) <= workers * fleet.TASKS_PER_WORKER + 1,
-              "%d workers: about %d tasks per worker (%d)" % (workers, fleet.TASKS_PER_WORKER, len(tasks)))
+        check(tasks[0] == [big], "%d workers: the large log goes first" % workers)
+        check(2 * workers <= len(tasks) <= workers * fleet.MIN_TASKS_PER_WORKER + 1,
+              "%d workers: %d tasks, enough to balance, no smaller than the floor" % (workers, len(tasks)))
         check(max(len(t) for t in tasks) > 1, "%d workers: small logs share a task" % workers)
+    # guided shares, by hand: 16 logs of 1000 bytes; a task closes when it
+    # holds max(left / (2 workers), 16000 / (16 workers)) bytes
+    even = [write(os.path.join(tmp, "e%02d.log" % i), 1000) for i in range(16)]
+    got = [len(t) for t in fleet.batches(even, 1)]
+    check(got == [8, 4, 2, 1, 1], "1 worker: 8 4 2 1 1 logs (left/2, floor 1000 B) (%r)" % got)
+    got = [len(t) for t in fleet.batches(even, 2)]
+    check(got == [4, 3, 3, 2, 1, 1, 1, 1], "2 workers: 4 3 3 2 1 1 1 1 logs (left/4, floor 500 B) (%r)" % got)
     missing = os.path.join(tmp, "missing.log")
     tasks = fleet.batches([missing], 2)
     check(tasks == [[missing]], "a log that is not there is still a task (its replay reports it)")
