@@ -33,6 +33,49 @@ static uint32_t bit_pos(const can_signal_t *sig, uint32_t i)
 	return moto_index(run_first(sig) + sig->length - 1U - i);
 }
 
+/*
+ * get and put walk the signal a byte at a time, LSB first: its LSB's byte
+ * from the LSB's bit, then each next byte from bit 0 (Intel: the byte
+ * after, Motorola: the byte before), so a 32-bit signal is at most five
+ * chunks instead of 32 single bits.
+ */
+#define CHUNKS_MAX 5U
+
+typedef struct {
+	uint32_t byte;  /* the byte the next chunk is in */
+	uint32_t shift; /* its first bit in that byte */
+	uint32_t done;  /* the signal's bits already walked */
+} chunk_t;
+
+static void chunk_start(const can_signal_t *sig, chunk_t *c)
+{
+	const uint32_t lsb = bit_pos(sig, 0U);
+
+	c->byte = lsb / 8U;
+	c->shift = lsb % 8U;
+	c->done = 0U;
+}
+
+/* The bits of the chunk at c: to the top of its byte or the signal's end. */
+static uint32_t chunk_bits(const can_signal_t *sig, const chunk_t *c)
+{
+	const uint32_t room = 8U - c->shift;
+	const uint32_t left = sig->length - c->done;
+
+	return (left < room) ? left : room;
+}
+
+static void chunk_next(const can_signal_t *sig, chunk_t *c, uint32_t n)
+{
+	c->done += n;
+	c->shift = 0U;
+	if (c->done < sig->length) {
+		/* a valid signal's next byte is in the frame (can_signal_min_dlc) */
+		c->byte = (sig->byte_order == (uint8_t)CAN_SIGNAL_INTEL) ? (c->byte + 1U) :
+			(c->byte - 1U);
+	}
+}
+
 uint8_t can_signal_min_dlc(const can_signal_t *sig)
 {
 	uint32_t last;
@@ -85,14 +128,18 @@ bool can_signal_overlap(const can_signal_t *a, const can_signal_t *b)
 uint32_t can_signal_get(const can_signal_t *sig, const uint8_t *data)
 {
 	uint32_t raw = 0U;
+	chunk_t c;
 	uint32_t i;
 
 	/* descriptors are validated with the calibration, before use */
 	HAL_REQUIRE(can_signal_valid(sig) && (data != NULL));
-	for (i = 0U; i < sig->length; i++) {
-		const uint32_t pos = bit_pos(sig, i);
+	chunk_start(sig, &c);
+	for (i = 0U; (i < CHUNKS_MAX) && (c.done < sig->length); i++) {
+		const uint32_t n = chunk_bits(sig, &c);
+		const uint32_t mask = (1U << n) - 1U;
 
-		raw |= (((uint32_t)data[pos / 8U] >> (pos % 8U)) & 1U) << i;
+		raw |= (((uint32_t)data[c.byte] >> c.shift) & mask) << c.done;
+		chunk_next(sig, &c, n);
 	}
 	return raw;
 }
@@ -119,17 +166,17 @@ uint32_t can_signal_raw_of(const can_signal_t *sig, int64_t value)
 
 void can_signal_put(const can_signal_t *sig, uint8_t *data, uint32_t raw)
 {
+	chunk_t c;
 	uint32_t i;
 
 	HAL_REQUIRE(can_signal_valid(sig) && (data != NULL));
-	for (i = 0U; i < sig->length; i++) {
-		const uint32_t pos = bit_pos(sig, i);
-		const uint8_t bit = (uint8_t)(1U << (pos % 8U));
+	chunk_start(sig, &c);
+	for (i = 0U; (i < CHUNKS_MAX) && (c.done < sig->length); i++) {
+		const uint32_t n = chunk_bits(sig, &c);
+		const uint32_t mask = ((1U << n) - 1U) << c.shift;
+		const uint32_t bits = ((raw >> c.done) << c.shift) & mask;
 
-		if (((raw >> i) & 1U) != 0U) {
-			data[pos / 8U] |= bit;
-		} else {
-			data[pos / 8U] &= (uint8_t)~bit;
-		}
+		data[c.byte] = (uint8_t)(((uint32_t)data[c.byte] & ~mask) | bits);
+		chunk_next(sig, &c, n);
 	}
 }
