@@ -3,7 +3,7 @@
 """make bench-full: fleet analysis speed (tools/fleet.py) on real-length
 drives: 200 logs (5 broken), each good one a random drive of 10 minutes
 (tools/gen_fleet_logs.py --minutes 10: 120,000 frames, about 4.5 MB), on a
-LocalCluster of 1 and of 2 worker processes (tests/tools/bench_fleet.py's
+LocalCluster of 1 and of 2 workers (tests/tools/bench_fleet.py's
 figures, BENCH_FLEET_RUNS runs each, default 1 here). The logs take about
 0.9 GB in build/fleet-bench-long/."""
 import os

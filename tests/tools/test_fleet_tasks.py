@@ -5,6 +5,8 @@
     left (by hand: 16 equal logs in 8 4 2 1 1 for one worker); a log
     larger than a task's share is a task alone, and first; small logs share
     tasks; one worker or many, none empty;
+  - local_layout(): N replays at a time as ceil(N / 4) processes, the
+    threads spread evenly (one process of N threads up to 4);
   - Progress: nothing written when the stream is not a terminal; on a
     terminal (a pty) "fleet: D/T logs, S s left" after each task, and the
     line cleared at the end;
@@ -71,6 +73,13 @@ def test_batches(tmp):
     missing = os.path.join(tmp, "missing.log")
     tasks = fleet.batches([missing], 2)
     check(tasks == [[missing]], "a log that is not there is still a task (its replay reports it)")
+
+
+def test_local_layout():
+    # by hand: ceil(N / 4) processes, the N replays spread evenly over them
+    want = {1: (1, 1), 2: (1, 2), 4: (1, 4), 5: (2, 3), 8: (2, 4), 9: (3, 3), 16: (4, 4)}
+    got = {n: fleet.local_layout(n) for n in want}
+    check(got == want, "LocalCluster layout (processes, threads) per replays at a time: %r" % got)
 
 
 def test_progress(tmp):
@@ -189,6 +198,7 @@ def test_batch_fallback(tmp):
 
 with tempfile.TemporaryDirectory() as tmpdir:
     test_batches(tmpdir)
+    test_local_layout()
     test_progress(tmpdir)
     test_outcome()
     test_batch_fallback(tmpdir)
