@@ -157,8 +157,9 @@ def main():
         print("%-8s %8d frames: replay %.3f s, log2asc %.3f s: replay %.2fx log2asc's speed "
               "(%d pairs; %.2f M frames/s)" % (name, n, med(r_a), med(r_l), med(q_l), RUNS,
                                                 n / med(r_a) / 1e6 if med(r_a) > 0 else 0.0))
-        print("%-8s %8d frames: replay %.3f s, python-can+canmatrix %.3f s: replay %.1fx "
-              "python's speed (%d pairs)" % ("", ns, med(r_s), med(r_p), med(q_p), PY_RUNS))
+        if PY_RUNS > 0:  # BENCH_VS_PY_RUNS=0: log2asc only
+            print("%-8s %8d frames: replay %.3f s, python-can+canmatrix %.3f s: replay %.1fx "
+                  "python's speed (%d pairs)" % ("", ns, med(r_s), med(r_p), med(q_p), PY_RUNS))
         for cmd in (rep, l2a, py):
             print("           $ %s" % " ".join(os.path.relpath(x, ROOT) if x.startswith(ROOT) else x
                                               for x in cmd))
