@@ -1354,24 +1354,29 @@ static void summary_to(FILE *o, const replay_t *r, const replay_args_t *a)
  * per piece (about a hundred per log) would wake a program that reads it
  * through a pipe as often (tools/fleet.py reads it for every log; with
  * two workers that traffic cost a third of the fleet's speed). Formatted
- * straight onto stderr when the memory stream cannot be had. */
+ * into a fixed buffer, so the heap a replay uses stays the same whatever
+ * the log; straight onto stderr when that stream cannot be had or the
+ * text would not fit. */
+#define SUMMARY_TEXT_MAX 32768U
+static char summary_text[SUMMARY_TEXT_MAX];
+
 static void summary(const replay_t *r, const replay_args_t *a)
 {
-	char *text = NULL;
-	size_t len = 0U;
-	FILE *mem = open_memstream(&text, &len);
+	FILE *mem = fmemopen(summary_text, sizeof(summary_text), "w");
+	long len;
 
 	if (mem == NULL) {
 		summary_to(stderr, r, a);
 		return;
 	}
 	summary_to(mem, r, a);
-	if (fclose(mem) == 0) {
-		(void)fwrite(text, 1U, len, stderr);
+	len = (fflush(mem) == 0) ? ftell(mem) : -1L;
+	if ((len >= 0L) && ((unsigned long)len < sizeof(summary_text))) {
+		(void)fwrite(summary_text, 1U, (size_t)len, stderr);
 	} else {
 		summary_to(stderr, r, a);
 	}
-	free(text);
+	(void)fclose(mem);
 }
 
 /* ---- summary as JSON (--summary-json; the same counts as summary()) ---------------- */
