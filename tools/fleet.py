@@ -39,7 +39,6 @@ Each corner's frames are found by the identifiers of the calibration
 (replay_summary.h), also when they are not the defaults + 0x10 k.
 Exit status: 0 report written (also with failed logs), 1 no report, 2 usage.
 """
-import argparse
 import csv
 import glob
 import html
@@ -85,13 +84,18 @@ def outcome(log, doc):
     return res
 
 
+def each_command(logs, sim, calib=None):
+    """The command line of one `replay --each` over the logs: every log
+    from a reset ECU, a JSON document per log on stdout, no frames."""
+    cmd = (replay_command(sim) + ["--each"] + logs +
+           ["--no-output", "--quiet", "--summary-json", "-"])
+    return cmd + ["--calib", calib] if calib else cmd
+
+
 def replay_each(logs, sim, calib, timeout_s):
     """One `replay --each` process for the logs: ({log: document} of the
     logs it finished, why it stopped before the others)."""
-    cmd = (replay_command(sim) + ["--each"] + logs +
-           ["--no-output", "--quiet", "--summary-json", "-"])
-    if calib:
-        cmd += ["--calib", calib]
+    cmd = each_command(logs, sim, calib)
     try:
         p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                            timeout=timeout_s * len(logs))
@@ -336,17 +340,6 @@ def write_csvs(out, results):
             if r["status"] != "ok":
                 w.writerow([r["log"], r["status"], r["reason"]])
     return totals, n_ep
-
-
-def cells_of(results):
-    """{corner: {(i, j, state): seconds}} over every readable log whose
-    summary is a whole document, and the grid."""
-    grid = None
-    cells = {}
-    for r in results:
-        if r["status"] != "failed":
-            grid = add_cells(cells, r["summary"])
-    return cells, grid
 
 
 def write_cells(out, cells, grid):

@@ -73,10 +73,9 @@ def bare_s(logs, parts):
     Dask, on fleet.py's tasks for that many workers dealt out in turn: what
     the machine gives two replays side by side, the ceiling of any scheduler."""
     tasks = fleet.batches(logs, parts)
-    cmd = fleet.replay_command(os.path.join(ROOT, "build", "host", "squeal-sim"))
+    sim = os.path.join(ROOT, "build", "host", "squeal-sim")
     t0 = time.monotonic()
-    procs = [subprocess.Popen(cmd + ["--each"] + [x for t in tasks[k::parts] for x in t] +
-                              ["--no-output", "--quiet", "--summary-json", "-"],
+    procs = [subprocess.Popen(fleet.each_command([x for t in tasks[k::parts] for x in t], sim),
                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
              for k in range(parts)]
     for p in procs:
