@@ -27,10 +27,13 @@ is the median over RUNS pairs (default 3, BENCH_VS_RUNS) run in turn
 (A B A B ...), so that a drift of the machine's speed hits both; python
 runs on the first PY_FRAMES (default 10^5, BENCH_VS_PY_FRAMES) lines of
 each log, once per pair (BENCH_VS_PY_RUNS, default 1), and its ratio is per
-frame.
+frame. On the same first lines, replay's and log2asc's instructions per
+frame under callgrind (BENCH_VS_ICOUNT=0 leaves them out): the ratio that
+does not move with the machine's load.
 Builds nothing: make bench builds build/host/squeal-sim first.
 """
 import os
+import re
 import statistics
 import subprocess
 import sys
@@ -47,6 +50,7 @@ DIR = os.path.join(ROOT, "build", "replay-bench")
 RUNS = int(os.environ.get("BENCH_VS_RUNS", "3"))
 PY_RUNS = int(os.environ.get("BENCH_VS_PY_RUNS", "1"))
 PY_FRAMES = int(os.environ.get("BENCH_VS_PY_FRAMES", "100000"))
+ICOUNT = os.environ.get("BENCH_VS_ICOUNT", "1") != "0"
 FRAMES = 1000000
 VCAL = os.path.join(ROOT, "tests", "firmware", "monitor", "fixtures", "moto15_p02.cal")
 FDCAL = os.path.join(HERE, "fd_p05.cal")
@@ -74,6 +78,19 @@ def paired(cmd_a, cmd_b, runs):
         t_b.append(b)
         ratio.append(b / a if a > 0 else float("inf"))
     return t_a, t_b, ratio
+
+
+def icount(argv):
+    """Instructions of one run of argv under valgrind's callgrind (the
+    stable figure: the same binary on the same input counts the same
+    whatever else the machine does); None without valgrind."""
+    try:
+        p = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + os.devnull] +
+                           argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=True)
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    m = re.search(rb"Collected : (\d+)", p.stderr)
+    return int(m.group(1)) if m else None
 
 
 def fresh(path, *sources):
@@ -157,6 +174,12 @@ def main():
         print("%-8s %8d frames: replay %.3f s, log2asc %.3f s: replay %.2fx log2asc's speed "
               "(%d pairs; %.2f M frames/s)" % (name, n, med(r_a), med(r_l), med(q_l), RUNS,
                                                 n / med(r_a) / 1e6 if med(r_a) > 0 else 0.0))
+        if ICOUNT:
+            i_r = icount(rep_small)
+            i_l = icount(l2a[:2] + [small] + l2a[3:])
+            if i_r and i_l:
+                print("%-8s %8d frames: replay %.0f, log2asc %.0f instructions per frame "
+                      "(callgrind): %.2fx" % ("", ns, i_r / ns, i_l / ns, i_l / i_r))
         if PY_RUNS > 0:  # BENCH_VS_PY_RUNS=0: log2asc only
             print("%-8s %8d frames: replay %.3f s, python-can+canmatrix %.3f s: replay %.1fx "
                   "python's speed (%d pairs)" % ("", ns, med(r_s), med(r_p), med(q_p), PY_RUNS))
