@@ -96,22 +96,24 @@ def each_command(logs, sim, calib=None):
 
 def replay_each(logs, sim, calib, timeout_s):
     """One `replay --each` process for the logs: ({log: document} of the
-    logs it finished, why it stopped before the others). Its stderr (a text
-    summary per log, which the documents hold too) goes to a file that is
-    read only when the process stopped early: through a pipe, this thread
-    would wake for every log's summary while the two CPUs are the replays'."""
+    logs it finished, why it stopped before the others). Its stdout (a
+    document per log) and stderr (a text summary per log, which the
+    documents hold too) go to files, read when it has ended (stderr only
+    when it stopped early): through pipes, this thread would wake for every
+    log, take the interpreter from the other workers' threads each time, and
+    a replay whose pipe was full would wait for it."""
     cmd = each_command(logs, sim, calib)
-    with tempfile.TemporaryFile() as err:
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
         try:
-            p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=err,
-                               timeout=timeout_s * len(logs))
-            out, why = p.stdout, "exit status %d" % p.returncode
-        except subprocess.TimeoutExpired as e:
-            out, why = e.stdout or b"", "replay took longer than %g s" % timeout_s
+            p = subprocess.run(cmd, stdout=out, stderr=err, timeout=timeout_s * len(logs))
+            why = "exit status %d" % p.returncode
+        except subprocess.TimeoutExpired:
+            why = "replay took longer than %g s" % timeout_s
         except OSError as e:
             return {}, "cannot run %s: %s" % (sim, e.strerror)
+        out.seek(0)
         docs = {}
-        for log, line in zip(logs, out.decode("utf-8", "replace").splitlines()):
+        for log, line in zip(logs, out.read().decode("utf-8", "replace").splitlines()):
             try:
                 docs[log] = json.loads(line)  # one line per log, in their order
             except ValueError:
