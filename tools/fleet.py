@@ -47,7 +47,6 @@ import os
 import resource
 import subprocess
 import sys
-import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -96,34 +95,24 @@ def each_command(logs, sim, calib=None):
 
 def replay_each(logs, sim, calib, timeout_s):
     """One `replay --each` process for the logs: ({log: document} of the
-    logs it finished, why it stopped before the others). Its stdout (a
-    document per log) and stderr (a text summary per log, which the
-    documents hold too) go to files, read when it has ended (stderr only
-    when it stopped early): through pipes, this thread would wake for every
-    log, take the interpreter from the other workers' threads each time, and
-    a replay whose pipe was full would wait for it."""
+    logs it finished, why it stopped before the others)."""
     cmd = each_command(logs, sim, calib)
-    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           timeout=timeout_s * len(logs))
+        out, err, why = p.stdout, p.stderr, "exit status %d" % p.returncode
+    except subprocess.TimeoutExpired as e:
+        out, err, why = e.stdout or b"", e.stderr or b"", "replay took longer than %g s" % timeout_s
+    except OSError as e:
+        return {}, "cannot run %s: %s" % (sim, e.strerror)
+    docs = {}
+    for log, line in zip(logs, out.decode("utf-8", "replace").splitlines()):
         try:
-            p = subprocess.run(cmd, stdout=out, stderr=err, timeout=timeout_s * len(logs))
-            why = "exit status %d" % p.returncode
-        except subprocess.TimeoutExpired:
-            why = "replay took longer than %g s" % timeout_s
-        except OSError as e:
-            return {}, "cannot run %s: %s" % (sim, e.strerror)
-        out.seek(0)
-        docs = {}
-        for log, line in zip(logs, out.read().decode("utf-8", "replace").splitlines()):
-            try:
-                docs[log] = json.loads(line)  # one line per log, in their order
-            except ValueError:
-                break  # cut short by a crash or the time-out
-        if len(docs) < len(logs):
-            err.seek(0)
-            last = [ln for ln in err.read().decode("utf-8", "replace").splitlines()
-                    if ln.startswith("squeal-sim")]
-            why = last[-1] if last else why
-    return docs, why
+            docs[log] = json.loads(line)  # one line per log, in their order
+        except ValueError:
+            break  # cut short by a crash or the time-out
+    last = [ln for ln in err.decode("utf-8", "replace").splitlines() if ln.startswith("squeal-sim")]
+    return docs, (last[-1] if last else why)
 
 
 def add_cells(acc, summary):
