@@ -95,14 +95,19 @@ def each_command(logs, sim, calib=None):
 
 def replay_each(logs, sim, calib, timeout_s):
     """One `replay --each` process for the logs: ({log: document} of the
-    logs it finished, why it stopped before the others)."""
+    logs it finished, why it stopped before the others). The reason is read
+    from its stderr only for a single log: there every log writes its text
+    summary, which its document holds too, and a pipe to this thread would
+    wake it for each (replay_batch replays a log that a process of several
+    did not finish on its own, and takes the reason from that run)."""
     cmd = each_command(logs, sim, calib)
+    keep_err = subprocess.PIPE if len(logs) == 1 else subprocess.DEVNULL
     try:
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=keep_err,
                            timeout=timeout_s * len(logs))
         out, err, why = p.stdout, p.stderr, "exit status %d" % p.returncode
     except subprocess.TimeoutExpired as e:
-        out, err, why = e.stdout or b"", e.stderr or b"", "replay took longer than %g s" % timeout_s
+        out, err, why = e.stdout or b"", e.stderr, "replay took longer than %g s" % timeout_s
     except OSError as e:
         return {}, "cannot run %s: %s" % (sim, e.strerror)
     docs = {}
@@ -111,7 +116,8 @@ def replay_each(logs, sim, calib, timeout_s):
             docs[log] = json.loads(line)  # one line per log, in their order
         except ValueError:
             break  # cut short by a crash or the time-out
-    last = [ln for ln in err.decode("utf-8", "replace").splitlines() if ln.startswith("squeal-sim")]
+    last = [ln for ln in (err or b"").decode("utf-8", "replace").splitlines()
+            if ln.startswith("squeal-sim")]
     return docs, (last[-1] if last else why)
 
 
@@ -146,7 +152,7 @@ def replay_batch(logs, sim, calib, timeout_s):
     """One task: its logs in one replay process (a process start per log
     would cost more than the replay of a short log). Logs that process did
     not finish (it crashed or took too long) are replayed one by one, so
-    that only the log at fault is failed. Returns {"results": a result per
+    that only the log at fault is failed, with the reason of its own run. Returns {"results": a result per
     log, in order, "cells": the logs' cells added up (add_cells), "grid"}:
     the cells are most of a document, and adding them up here sends the
     client a task's worth instead of a log's worth each."""
@@ -154,7 +160,8 @@ def replay_batch(logs, sim, calib, timeout_s):
     out, cells, grid = [], {}, None
     for log in logs:
         if log not in docs and len(logs) > 1:
-            docs.update(replay_each([log], sim, calib, timeout_s)[0])
+            alone, why = replay_each([log], sim, calib, timeout_s)
+            docs.update(alone)
         if log not in docs:
             out.append({"log": log, "status": "failed", "reason": why, "summary": None})
             continue
