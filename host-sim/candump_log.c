@@ -1,33 +1,47 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * candump_log: see candump_log.h for the grammar. The parser is a plain
- * cursor over a copy of the line followed by CURSOR_PAD NUL bytes (a line
- * with a NUL byte is refused before): every read goes through peek() or
- * peek_at(offset < CURSOR_PAD), which answer 0 at and past the end without
- * a test per character, so no path can read out of bounds whatever the
- * bytes are.
+ * candump_log: see candump_log.h for the grammar. The parser is a cursor
+ * over the caller's bytes, which it neither copies nor reads beyond
+ * line[len - 1]: single bytes are read through byte_at() (peek(),
+ * peek_at()), which answers 0 at and past the line's end (as if NUL bytes
+ * followed it), and the wider reads (eight bytes at once) are taken only
+ * where the line has those eight bytes left.
+ *
+ * A NUL byte inside the line makes it malformed (CANDUMP_ERR_NUL at the
+ * first one) whatever else is wrong with it, yet lines are not scanned for
+ * one before parsing: a NUL reads as 0, like the line's end, and no rule
+ * that leads to a frame or a blank line accepts a 0 byte before the end
+ * (each byte of those lines is matched against blanks, digits, hex digits,
+ * the interface name's characters or a punctuation mark, and the end is
+ * tested by position). So a line with a NUL cannot come out as a frame or
+ * blank, and only the other outcomes (comment, DROPCOUNT, malformed) look
+ * for one before they are returned, as if it had been looked for first.
  */
 #include "candump_log.h"
 
 #include <stdarg.h>
 #include <string.h>
 
-#define CURSOR_PAD 16U /* NUL bytes after the line: the largest peek_at() is 8 */
-
 typedef struct {
-	const char *s; /* len bytes, then CURSOR_PAD NUL bytes */
+	const char *s; /* the caller's bytes: only s[0 .. len - 1] are read */
 	size_t len;
-	size_t i;      /* never beyond len: every step forward follows a peek() != 0 */
+	size_t i;      /* never beyond len */
 } cursor_t;
 
-static int peek(const cursor_t *c)
+/* s[i] of a line of len bytes, 0 at and past its end */
+static int byte_at(const char *s, size_t len, size_t i)
 {
-	return (unsigned char)c->s[c->i];
+	return (i < len) ? (unsigned char)s[i] : 0;
 }
 
 static int peek_at(const cursor_t *c, size_t off)
 {
-	return (unsigned char)c->s[c->i + off];
+	return byte_at(c->s, c->len, c->i + off);
+}
+
+static int peek(const cursor_t *c)
+{
+	return peek_at(c, 0U);
 }
 
 static bool at_end(const cursor_t *c)
@@ -105,12 +119,10 @@ const char *candump_strerror(candump_err_t err)
 	return "unknown error";
 }
 
-/* Eight decimal digits at p, as their value; false (and *v untouched) when
- * one of the eight is no digit. p[0] is in the line, so p[7] is in the line
- * or its pad. Byte order: little-endian hosts (the digits' first is the
- * word's lowest byte). */
+/* Eight decimal digits at p (eight bytes of the line), as their value;
+ * false (and *v untouched) when one of the eight is no digit. Byte order:
+ * little-endian hosts (the digits' first is the word's lowest byte). */
 _Static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "eight_digits reads a little-endian word");
-_Static_assert(CURSOR_PAD >= 8U, "eight bytes from a character of the line are readable");
 static bool eight_digits(const char *p, uint64_t *v)
 {
 	uint64_t w;
@@ -134,6 +146,7 @@ static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 {
 	const uint64_t max_s = UINT64_MAX / 1000000000ULL;
 	const char *const s = c->s;
+	const size_t len = c->len;
 	size_t i = c->i + 1U; /* after '(' */
 	uint64_t sec = 0U;
 	uint64_t frac = 0U;
@@ -143,12 +156,12 @@ static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 	uint64_t eight;
 
 	/* the first eight digits at once (a Unix time has ten) */
-	if (eight_digits(&s[i], &eight)) {
+	if ((len - i >= 8U) && eight_digits(&s[i], &eight)) {
 		sec = eight;
 		nd = 8U;
 		i += 8U;
 	}
-	while (is_digit((unsigned char)s[i])) {
+	while (is_digit(byte_at(s, len, i))) {
 		/* 19 digits cannot overflow: the test only from the 20th */
 		if ((nd >= 19U) && ((nd >= 20U) || (sec > (UINT64_MAX - 9U) / 10U))) {
 			c->i = i;
@@ -158,17 +171,17 @@ static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 		nd++;
 		i++;
 	}
-	if ((nd == 0U) || (s[i] != '.')) {
+	if ((nd == 0U) || (byte_at(s, len, i) != '.')) {
 		c->i = i;
 		return CANDUMP_ERR_TIMESTAMP;
 	}
 	i++;
-	while (is_digit((unsigned char)s[i]) && (nf < 9U)) {
+	while (is_digit(byte_at(s, len, i)) && (nf < 9U)) {
 		frac = frac * 10U + (uint64_t)(s[i] - '0');
 		nf++;
 		i++;
 	}
-	if (is_digit((unsigned char)s[i]) || ((nf != 6U) && (nf != 9U)) || (s[i] != ')')) {
+	if (is_digit(byte_at(s, len, i)) || ((nf != 6U) && (nf != 9U)) || (byte_at(s, len, i) != ')')) {
 		e = CANDUMP_ERR_TIMESTAMP;
 	} else {
 		i++;
@@ -198,6 +211,7 @@ static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
 				size_t *n_out)
 {
 	const char *const s = c->s;
+	const size_t len = c->len;
 	size_t i = c->i;
 	size_t n = 0U;
 	candump_err_t e = CANDUMP_OK;
@@ -206,16 +220,16 @@ static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
 		int hi;
 		int lo;
 
-		if (s[i] == '.') {
+		if (byte_at(s, len, i) == '.') {
 			i++;
 		}
-		hi = hex_val(s[i]); /* the common case first: a digit */
+		hi = hex_val(byte_at(s, len, i)); /* the common case first: a digit */
 		if (hi < 0) {
 			c->i = i;
 			e = data_end(c) ? CANDUMP_OK : CANDUMP_ERR_DATA_HEX;
 			break;
 		}
-		lo = hex_val(s[i + 1U]); /* s[i] is no NUL: i + 1 is in the line or its pad */
+		lo = hex_val(byte_at(s, len, i + 1U));
 		if (lo < 0) {
 			c->i = i + 1U;
 			e = (data_end(c) || (peek(c) == '.')) ? CANDUMP_ERR_DATA_ODD : CANDUMP_ERR_DATA_HEX;
@@ -427,7 +441,6 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 				  candump_frame_t *out, candump_err_t *err,
 				  size_t *col)
 {
-	char copy[CANDUMP_LINE_MAX + CURSOR_PAD];
 	cursor_t c = { line, len, 0U };
 	candump_err_t e = CANDUMP_OK;
 	candump_line_t kind = CANDUMP_LINE_MALFORMED;
@@ -452,22 +465,15 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 	if ((c.len > 0U) && (c.s[c.len - 1U] == '\r')) {
 		c.len--;
 	}
-	memset(out, 0, sizeof(*out));
+	/* in two parts: one memset of the whole struct becomes a "rep stos",
+	 * slow to start, these become a few vector stores */
+	memset(out, 0, offsetof(candump_frame_t, data));
+	memset(out->data, 0, sizeof(out->data));
 	if (c.len > CANDUMP_LINE_MAX) {
 		e = CANDUMP_ERR_TOO_LONG;
 		c.i = CANDUMP_LINE_MAX;
-		goto done;
+		goto done; /* before a NUL, as the whole line is not looked at */
 	}
-	if ((c.len > 0U) && (memchr(c.s, '\0', c.len) != NULL)) {
-		e = CANDUMP_ERR_NUL;
-		c.i = (size_t)((const char *)memchr(c.s, '\0', c.len) - c.s);
-		goto done;
-	}
-	if (c.len > 0U) {
-		memcpy(copy, c.s, c.len);
-	}
-	memset(copy + c.len, 0, CURSOR_PAD);
-	c.s = copy;
 	skip_blanks(&c);
 	if (at_end(&c)) {
 		kind = CANDUMP_LINE_BLANK;
@@ -495,8 +501,8 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 		goto done;
 	}
 	skip_blanks(&c);
-	/* the name ends at a blank or the line's end (its pad's first NUL) */
-	for (k = 0U; (c.s[c.i + k] != '\0') && !is_blank((unsigned char)c.s[c.i + k]); k++) {
+	/* the name ends at a blank or the line's end (or a NUL: see the top) */
+	for (k = 0U; (peek_at(&c, k) != 0) && !is_blank(peek_at(&c, k)); k++) {
 		if (k >= CANDUMP_IFACE_MAX) {
 			c.i += k;
 			e = CANDUMP_ERR_IFACE;
@@ -534,6 +540,17 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 	}
 	kind = CANDUMP_LINE_FRAME;
 done:
+	if ((kind != CANDUMP_LINE_FRAME) && (kind != CANDUMP_LINE_BLANK) &&
+	    (e != CANDUMP_ERR_TOO_LONG) && (c.len > 0U)) {
+		/* a NUL anywhere comes first (see the top of the file) */
+		const char *const nul = memchr(c.s, '\0', c.len);
+
+		if (nul != NULL) {
+			kind = CANDUMP_LINE_MALFORMED;
+			e = CANDUMP_ERR_NUL;
+			c.i = (size_t)(nul - c.s);
+		}
+	}
 	if (e != CANDUMP_OK) {
 		kind = CANDUMP_LINE_MALFORMED;
 		if (err != NULL) {

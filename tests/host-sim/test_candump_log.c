@@ -364,6 +364,55 @@ static void test_embedded_nul_is_an_error_not_an_end(void **state)
 	assert_int_equal(col, 22);
 }
 
+/* A NUL is looked for only when a line is no frame or blank line (see
+ * candump_log.c), yet it comes first wherever it is: one in any column of
+ * any kind of line, even after what is already an error, is reported
+ * there. */
+static void test_nul_at_any_column_comes_first(void **state)
+{
+	static const char *const lines[] = {
+		"(1700000000.123456) can0 110#5A03E803",
+		"(0000000012.340000) vcan0 18FEF100#0102030405060708_C",
+		"(1700000000.123456789) can0 123#R8 T",
+		"(1700000000.123456) can0 123##5112233",
+		"(1700000000.123456) can0 20000004#0004000000000000",
+		"(1.000000) can0 45123#81:00:12345678#11223344.556677",
+		"(1.000000)  long_name_of_15\t7FF#11.22\tR\t",
+		"   ",
+		"# a comment",
+		"DROPCOUNT: dropped 3 CAN frame(s) on 'can0' socket (total drops 3)",
+		"(1.000000) can0 123#1G22",
+		"(1.000000) can0 800#",
+		"no frame at all",
+		"(1.000000) can0 123#11\r\n",
+	};
+	candump_frame_t f;
+	candump_err_t err;
+	size_t col;
+	size_t i;
+	size_t at;
+
+	(void)state;
+	for (i = 0; i < sizeof(lines) / sizeof(lines[0]); i++) {
+		const size_t len = strlen(lines[i]);
+
+		for (at = 0; at < len; at++) {
+			char *copy = malloc(len);
+
+			assert_non_null(copy);
+			memcpy(copy, lines[i], len);
+			copy[at] = '\0';
+			err = CANDUMP_OK;
+			col = (size_t)-1;
+			assert_int_equal(candump_parse_line(copy, len, &f, &err, &col),
+					 CANDUMP_LINE_MALFORMED);
+			assert_int_equal(err, CANDUMP_ERR_NUL);
+			assert_int_equal(col, at);
+			free(copy);
+		}
+	}
+}
+
 static void test_too_long_line(void **state)
 {
 	char *line = malloc(CANDUMP_LINE_MAX + 10U);
@@ -738,6 +787,7 @@ int main(void)
 		cmocka_unit_test(test_other_lines),
 		cmocka_unit_test(test_malformed_lines_each_with_its_reason),
 		cmocka_unit_test(test_embedded_nul_is_an_error_not_an_end),
+		cmocka_unit_test(test_nul_at_any_column_comes_first),
 		cmocka_unit_test(test_too_long_line),
 		cmocka_unit_test(test_every_prefix_of_valid_lines_is_safe),
 		cmocka_unit_test(test_random_bytes_and_mutations_never_crash),
