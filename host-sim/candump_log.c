@@ -7,6 +7,14 @@
  * followed it), and the wider reads (eight bytes at once) are taken only
  * where the line has those eight bytes left.
  *
+ * Each field has its general rule, byte by byte. The usual form of a
+ * field (what candump writes: the timestamp with ten and six digits, a
+ * short interface name, a three-digit identifier, data without '.') is
+ * recognised first with a few word operations and gives what the general
+ * rule would give; anything else takes the general rule from where the
+ * cursor stands. The hot functions are inlined and the cursor's address
+ * is not passed to any other, so the compiler keeps it in registers.
+ *
  * A NUL byte inside the line makes it malformed (CANDUMP_ERR_NUL at the
  * first one) whatever else is wrong with it, yet lines are not scanned for
  * one before parsing: a NUL reads as 0, like the line's end, and no rule
@@ -29,32 +37,33 @@ typedef struct {
 } cursor_t;
 
 /* s[i] of a line of len bytes, 0 at and past its end */
-static int byte_at(const char *s, size_t len, size_t i)
+static inline int byte_at(const char *s, size_t len, size_t i)
 {
 	return (i < len) ? (unsigned char)s[i] : 0;
 }
 
-static int peek_at(const cursor_t *c, size_t off)
+static inline int peek_at(const cursor_t *c, size_t off)
 {
 	return byte_at(c->s, c->len, c->i + off);
 }
 
-static int peek(const cursor_t *c)
+static inline int peek(const cursor_t *c)
 {
 	return peek_at(c, 0U);
 }
 
-static bool at_end(const cursor_t *c)
+static inline bool at_end(const cursor_t *c)
 {
 	return c->i >= c->len;
 }
 
-static bool is_blank(int ch)
+/* ' ' or '\t': one compare and a bit test */
+static inline bool is_blank(int ch)
 {
-	return (ch == ' ') || (ch == '\t');
+	return ((unsigned)ch <= (unsigned)' ') && ((((1ULL << ' ') | (1ULL << '\t')) >> (unsigned)ch) & 1U) != 0U;
 }
 
-static bool is_digit(int ch)
+static inline bool is_digit(int ch)
 {
 	return (ch >= '0') && (ch <= '9');
 }
@@ -74,12 +83,12 @@ static const signed char hex_table[256] = {
 };
 _Static_assert(sizeof(hex_table) == 256U, "one entry per byte");
 
-static int hex_val(int ch)
+static inline int hex_val(int ch)
 {
 	return hex_table[(unsigned char)ch];
 }
 
-static void skip_blanks(cursor_t *c)
+static inline void skip_blanks(cursor_t *c)
 {
 	while (!at_end(c) && is_blank(peek(c))) {
 		c->i++;
@@ -119,30 +128,125 @@ const char *candump_strerror(candump_err_t err)
 	return "unknown error";
 }
 
-/* Eight decimal digits at p (eight bytes of the line), as their value;
- * false (and *v untouched) when one of the eight is no digit. Byte order:
- * little-endian hosts (the digits' first is the word's lowest byte). */
-_Static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "eight_digits reads a little-endian word");
-static bool eight_digits(const char *p, uint64_t *v)
+/* ---- eight characters at once ------------------------------------------------
+ * A word read from the line holds its characters first-in-lowest-byte (a
+ * little-endian host). The tests below mark failing bytes in their bit 7;
+ * a byte below the first failing one never carries or borrows into it, so
+ * the lowest mark is exact (marks above it may be wrong, and are not used). */
+_Static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "words of characters are little-endian");
+
+#define BYTES(b) (0x0101010101010101ULL * (uint64_t)(b)) /* b in every byte */
+
+static inline uint64_t load8(const char *p)
 {
 	uint64_t w;
 
 	memcpy(&w, p, sizeof(w));
-	/* every byte 0x30..0x39: high nibble 3, and adding 6 keeps it 3 */
-	if (((w & 0xF0F0F0F0F0F0F0F0ULL) |
-	     (((w + 0x0606060606060606ULL) & 0xF0F0F0F0F0F0F0F0ULL) >> 4)) != 0x3333333333333333ULL) {
+	return w;
+}
+
+/* The index (0..7) of the lowest marked byte of m, 8 if there is none. */
+static inline unsigned first_marked(uint64_t m)
+{
+	return (m == 0U) ? 8U : ((unsigned)__builtin_ctzll(m) >> 3);
+}
+
+/* t: a word less '0' in every byte. Marks the bytes that were no decimal
+ * digit: above 9, or borrowed (a byte below '0': bit 7 set). */
+static inline uint64_t non_digits(uint64_t t)
+{
+	return ((t + BYTES(0x76)) | t) & BYTES(0x80);
+}
+
+/* The value of eight digits, t their word less '0' in every byte: pairs,
+ * fours, then all eight combined by multiplications. */
+static inline uint64_t digits8(uint64_t t)
+{
+	t = ((t * 2561U) >> 8) & 0x00FF00FF00FF00FFULL;           /* 10 a + b  */
+	t = ((t * 6553601U) >> 16) & 0x0000FFFF0000FFFFULL;       /* 100 p + q */
+	return ((t * 42949672960001ULL) >> 32) & 0xFFFFFFFFULL;   /* 10^4 f + g */
+}
+
+/* Eight decimal digits at p (eight bytes of the line): true and their
+ * value in *v, else false (*v untouched). */
+static inline bool eight_digits(const char *p, uint64_t *v)
+{
+	const uint64_t t = load8(p) - BYTES('0');
+
+	if (non_digits(t) != 0U) {
 		return false;
 	}
-	w = ((w & 0x0F0F0F0F0F0F0F0FULL) * 2561U) >> 8;          /* pairs:  10 a + b   */
-	w = ((w & 0x00FF00FF00FF00FFULL) * 6553601U) >> 16;      /* fours:  100 p + q  */
-	*v = ((w & 0x0000FFFF0000FFFFULL) * 42949672960001ULL) >> 32; /* 10^4 f + g */
+	*v = digits8(t);
 	return true;
 }
 
-/* (SECONDS.FRACTION). The hot loops below work on local copies of the
- * cursor: a store through a char pointer may alias it, which would make the
- * compiler reload it after every character. */
-static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
+/* The usual timestamp after '(': ten digits of Unix seconds, '.', six of
+ * microseconds, ')', in three words (the first two overlap); subtracting
+ * ".000000)" leaves the fraction's digit values and 0 for '.' and ')',
+ * which then count as digits of value 0 in the limits test and in
+ * digits8(): ten times the microseconds. True and *t_ns set for exactly
+ * that form (what the general rule in parse_time() makes of it: no range
+ * error is possible), false for anything else. */
+#define USUAL_TIME_LEN 18U
+#define USUAL_FRACTION  0x293030303030302EULL /* ".000000)" */
+#define USUAL_FRAC_LIMS 0x7F7676767676767FULL /* '.', ')' exact; digits <= 9 */
+static inline bool usual_time(const char *p, size_t left, uint64_t *t_ns)
+{
+	uint64_t t0;
+	uint64_t t1;
+	uint64_t f;
+
+	if (left < USUAL_TIME_LEN) {
+		return false;
+	}
+	t0 = load8(p) - BYTES('0');          /* seconds' digits 1..8  */
+	t1 = load8(p + 2) - BYTES('0');      /* seconds' digits 3..10 */
+	f = load8(p + 10) - USUAL_FRACTION;  /* ".DDDDDD)"            */
+	if (((non_digits(t0) | non_digits(t1)) != 0U) ||
+	    ((((f + USUAL_FRAC_LIMS) | f) & BYTES(0x80)) != 0U)) {
+		return false;
+	}
+	*t_ns = (digits8(t0) * 100U + ((t1 >> 48) & 0xFFU) * 10U + (t1 >> 56)) * 1000000000ULL +
+		digits8(f) * 100U;
+	return true;
+}
+
+/* Marks the bytes of w below b (b <= 0x80; a borrow runs upward only). */
+static inline uint64_t bytes_below(uint64_t w, unsigned b)
+{
+	return (w - BYTES(b)) & ~w & BYTES(0x80);
+}
+
+/* Marks the bytes of w that are no hex digit: no decimal digit (see
+ * non_digits()), and with bit 5 set (lowercase) not 0x61..0x66, which
+ * adding 0x1F makes 0x80..0x85 (bit 7 set, and the rest below 6). */
+static inline uint64_t non_hex(uint64_t w)
+{
+	const uint64_t d = w - BYTES('0');
+	const uint64_t l = (w | BYTES(0x20)) + BYTES(0x1F);
+
+	return ((d + BYTES(0x76)) | d) & (~l | ((l & BYTES(0x7F)) + BYTES(0x7A))) & BYTES(0x80);
+}
+
+/* Eight hex digits as their four bytes, the first in the lowest: each
+ * digit's value (letters have bit 6 set: + 9), then each pair into the low
+ * byte of its 16 bits, then those four bytes together. */
+static inline uint32_t hex_bytes(uint64_t w)
+{
+	uint64_t v = (w & BYTES(0x0F)) + (((w >> 6) & BYTES(1)) * 9U);
+
+	v = ((v << 4) | (v >> 8)) & 0x00FF00FF00FF00FFULL;
+	v = (v | (v >> 8)) & 0x0000FFFF0000FFFFULL;
+	return (uint32_t)(v | (v >> 16));
+}
+
+/* ---- the line -------------------------------------------------------------------- */
+
+/* (SECONDS.FRACTION): the usual form at once, else digit by digit. The
+ * loops work on local copies of the cursor: a store through a char pointer
+ * may alias it, which would make the compiler reload it after every
+ * character. */
+static inline candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 {
 	const uint64_t max_s = UINT64_MAX / 1000000000ULL;
 	const char *const s = c->s;
@@ -155,6 +259,10 @@ static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 	candump_err_t e = CANDUMP_OK;
 	uint64_t eight;
 
+	if (usual_time(&s[i], len - i, t_ns)) {
+		c->i = i + USUAL_TIME_LEN;
+		return CANDUMP_OK;
+	}
 	/* the first eight digits at once (a Unix time has ten) */
 	if ((len - i >= 8U) && eight_digits(&s[i], &eight)) {
 		sec = eight;
@@ -198,22 +306,59 @@ static candump_err_t parse_time(cursor_t *c, uint64_t *t_ns)
 	return e;
 }
 
-/* Where the data ends: the line's end, a blank, "_X", a CR or LF. */
-static bool data_end(const cursor_t *c)
+/* The interface name at the cursor into out->iface (zeroed before), or
+ * CANDUMP_ERR_IFACE; it ends at a blank or the line's end (or a NUL: see
+ * the top of the file). The usual short name is found in one word: it
+ * ends at its first byte below '!' when that is a blank or a NUL; any
+ * other name takes the loop. */
+static inline candump_err_t parse_iface(cursor_t *c, candump_frame_t *out)
 {
-	const int ch = peek(c);
+	const char *const p = c->s + c->i;
+	size_t k;
 
-	return at_end(c) || is_blank(ch) || (ch == '_') || (ch == '\r') || (ch == '\n');
+	if (c->len - c->i >= 8U) {
+		const uint64_t w = load8(p);
+
+		k = first_marked(bytes_below(w, '!'));
+		if ((k > 0U) && (k < 8U) && (is_blank((unsigned char)p[k]) || (p[k] == '\0'))) {
+			const uint64_t name = w & ((1ULL << (8U * k)) - 1U); /* the rest stays 0 */
+
+			memcpy(out->iface, &name, sizeof(name));
+			c->i += k;
+			return CANDUMP_OK;
+		}
+	}
+	for (k = 0U; (k <= CANDUMP_IFACE_MAX) && (peek_at(c, k) != 0) && !is_blank(peek_at(c, k)); k++) {
+	}
+	if (k > CANDUMP_IFACE_MAX) {
+		c->i += CANDUMP_IFACE_MAX; /* where the name became too long */
+		return CANDUMP_ERR_IFACE;
+	}
+	if (k == 0U) {
+		return CANDUMP_ERR_IFACE;
+	}
+	memcpy(out->iface, p, k);
+	c->i += k;
+	return CANDUMP_OK;
 }
 
-/* Hex bytes with optional '.' before each, up to max (stored if data). */
-static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
-				size_t *n_out)
+/* Where the data ends: the line's end, a blank, "_X", a CR or LF. */
+static inline bool data_end(const char *s, size_t len, size_t i)
 {
-	const char *const s = c->s;
-	const size_t len = c->len;
-	size_t i = c->i;
-	size_t n = 0U;
+	const int ch = byte_at(s, len, i);
+
+	return (i >= len) || is_blank(ch) || (ch == '_') || (ch == '\r') || (ch == '\n');
+}
+
+/* Hex bytes with optional '.' before each, up to max (stored if data),
+ * from s[*pos] (of len bytes) one at a time, after the *n_io bytes taken
+ * before: the general rule. *pos ends where parsing stopped, *n_io is the
+ * number of bytes (of use when no error). */
+static candump_err_t data_bytes(const char *s, size_t len, size_t *pos, uint8_t *data,
+				size_t max, size_t *n_io)
+{
+	size_t i = *pos;
+	size_t n = *n_io;
 	candump_err_t e = CANDUMP_OK;
 
 	for (;;) {
@@ -223,20 +368,19 @@ static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
 		if (byte_at(s, len, i) == '.') {
 			i++;
 		}
-		hi = hex_val(byte_at(s, len, i)); /* the common case first: a digit */
+		hi = hex_val(byte_at(s, len, i));
 		if (hi < 0) {
-			c->i = i;
-			e = data_end(c) ? CANDUMP_OK : CANDUMP_ERR_DATA_HEX;
+			e = data_end(s, len, i) ? CANDUMP_OK : CANDUMP_ERR_DATA_HEX;
 			break;
 		}
 		lo = hex_val(byte_at(s, len, i + 1U));
 		if (lo < 0) {
-			c->i = i + 1U;
-			e = (data_end(c) || (peek(c) == '.')) ? CANDUMP_ERR_DATA_ODD : CANDUMP_ERR_DATA_HEX;
+			i++;
+			e = (data_end(s, len, i) || (byte_at(s, len, i) == '.')) ? CANDUMP_ERR_DATA_ODD :
+				CANDUMP_ERR_DATA_HEX;
 			break;
 		}
 		if (n >= max) {
-			c->i = i;
 			e = CANDUMP_ERR_DATA_LEN;
 			break;
 		}
@@ -246,14 +390,63 @@ static candump_err_t parse_data(cursor_t *c, uint8_t *data, size_t max,
 		n++;
 		i += 2U;
 	}
-	if (e == CANDUMP_OK) {
-		*n_out = n;
+	*pos = i;
+	*n_io = n;
+	return e;
+}
+
+/* data_bytes() for a frame's data (into data, *n_out bytes), with the
+ * usual data taken here first: hex digits without '.' up to the line's
+ * end, four bytes and then one byte at a time (as data_bytes() would take
+ * them); anything else goes on there. (Not the cursor but its parts: a
+ * pointer to it passed to a function that is not inlined, as data_bytes()
+ * is not, would keep it in memory throughout.) */
+static inline candump_err_t parse_data(const char *s, size_t len, size_t *pos, uint8_t *data,
+				       size_t max, size_t *n_out)
+{
+	size_t i = *pos;
+	size_t n = 0U;
+
+	while ((len - i >= 8U) && (n + 4U <= max)) {
+		const uint64_t w = load8(&s[i]);
+		uint32_t b;
+
+		if (non_hex(w) != 0U) {
+			break;
+		}
+		b = hex_bytes(w);
+		memcpy(&data[n], &b, sizeof(b));
+		n += 4U;
+		i += 8U;
 	}
+	while ((len - i >= 2U) && (n < max)) {
+		const int hi = hex_val(s[i]);
+		const int lo = hex_val(s[i + 1U]);
+
+		if ((hi | lo) < 0) {
+			break;
+		}
+		data[n] = (uint8_t)((hi << 4) | lo);
+		n++;
+		i += 2U;
+	}
+	*pos = i;
+	*n_out = n;
+	return (i == len) ? CANDUMP_OK : data_bytes(s, len, pos, data, max, n_out);
+}
+
+/* parse_data() at the cursor */
+static inline candump_err_t cursor_data(cursor_t *c, uint8_t *data, size_t max, size_t *n_out)
+{
+	size_t pos = c->i;
+	const candump_err_t e = parse_data(c->s, c->len, &pos, data, max, n_out);
+
+	c->i = pos;
 	return e;
 }
 
 /* optional _X after 8 bytes (classic data or RTR of length 8) */
-static candump_err_t parse_dlc_code(cursor_t *c, candump_frame_t *out)
+static inline candump_err_t parse_dlc_code(cursor_t *c, candump_frame_t *out)
 {
 	int x;
 
@@ -269,7 +462,7 @@ static candump_err_t parse_dlc_code(cursor_t *c, candump_frame_t *out)
 	return CANDUMP_OK;
 }
 
-static bool fd_len_valid(size_t n)
+static inline bool fd_len_valid(size_t n)
 {
 	return (n <= 8U) || (n == 12U) || (n == 16U) || (n == 20U) || (n == 24U) ||
 	       (n == 32U) || (n == 48U) || (n == 64U);
@@ -304,7 +497,12 @@ static candump_err_t parse_xl(cursor_t *c, candump_frame_t *out)
 		}
 		c->i++;
 	}
-	e = parse_data(c, NULL, CANDUMP_XL_DATA_MAX, &n);
+	{
+		size_t pos = c->i;
+
+		e = data_bytes(c->s, c->len, &pos, NULL, CANDUMP_XL_DATA_MAX, &n); /* rare: no fast path */
+		c->i = pos;
+	}
 	if (e != CANDUMP_OK) {
 		return e;
 	}
@@ -317,22 +515,37 @@ static candump_err_t parse_xl(cursor_t *c, candump_frame_t *out)
 	return CANDUMP_OK;
 }
 
-static candump_err_t parse_frame(cursor_t *c, candump_frame_t *out)
+static inline candump_err_t parse_frame(cursor_t *c, candump_frame_t *out)
 {
 	uint32_t id = 0U;
-	size_t nd = 0U;
+	size_t nd;
 	size_t n = 0U;
-	size_t k;
+	size_t max = 8U;
 	candump_err_t e;
 
-	while ((nd < 9U) && (hex_val(peek_at(c, nd)) >= 0)) {
-		nd++;
+	/* the usual standard identifier "HHH#" at once; else the
+	 * identifier's digits one by one (a ninth is already too many) and,
+	 * in the same pass, their value (used for 3 or 8 digits only) */
+	if ((c->len - c->i >= 4U) && (c->s[c->i + 3U] == '#') &&
+	    ((hex_val(c->s[c->i]) | hex_val(c->s[c->i + 1U]) | hex_val(c->s[c->i + 2U])) >= 0)) {
+		nd = 3U;
+		id = ((uint32_t)hex_val(c->s[c->i]) << 8) | ((uint32_t)hex_val(c->s[c->i + 1U]) << 4) |
+		     (uint32_t)hex_val(c->s[c->i + 2U]);
+	} else {
+		for (nd = 0U; nd < 9U; nd++) {
+			const int v = hex_val(peek_at(c, nd));
+
+			if (v < 0) {
+				break;
+			}
+			id = (id << 4) | (uint32_t)v;
+		}
 	}
 	if ((nd == 5U) && (peek_at(c, 5U) == '#') && (peek_at(c, 8U) == ':')) {
 		return parse_xl(c, out);
 	}
+	c->i += nd;
 	if ((nd != 3U) && (nd != 8U)) {
-		c->i += nd;
 		if ((nd > 8U) || (peek(c) == '#')) {
 			return CANDUMP_ERR_ID_DIGITS;
 		}
@@ -340,10 +553,6 @@ static candump_err_t parse_frame(cursor_t *c, candump_frame_t *out)
 			CANDUMP_ERR_ID_HEX;
 	}
 	out->ext = (nd == 8U);
-	for (k = 0U; k < nd; k++) {
-		id = (id << 4) | (uint32_t)hex_val(peek(c));
-		c->i++;
-	}
 	if (peek(c) != '#') {
 		return (at_end(c) || is_blank(peek(c))) ? CANDUMP_ERR_NO_HASH :
 			CANDUMP_ERR_ID_HEX;
@@ -364,33 +573,6 @@ static candump_err_t parse_frame(cursor_t *c, candump_frame_t *out)
 	}
 	out->id = id;
 
-	if (peek(c) == '#') { /* CAN FD */
-		int flags;
-
-		c->i++;
-		if (out->kind == CANDUMP_KIND_ERROR) {
-			return CANDUMP_ERR_ERROR_FRAME;
-		}
-		flags = hex_val(peek(c));
-		if (flags < 0) {
-			return CANDUMP_ERR_FD_FLAGS;
-		}
-		c->i++;
-		out->kind = CANDUMP_KIND_FD;
-		out->fd_flags = (uint8_t)flags;
-		e = parse_data(c, out->data, CANDUMP_DATA_MAX, &n);
-		if (e != CANDUMP_OK) {
-			return e;
-		}
-		if (!fd_len_valid(n)) {
-			return CANDUMP_ERR_FD_LEN;
-		}
-		out->len = (uint8_t)n;
-		if (peek(c) == '_') {
-			return CANDUMP_ERR_DLC_CODE;
-		}
-		return CANDUMP_OK;
-	}
 	if ((peek(c) == 'R') || (peek(c) == 'r')) { /* remote frame */
 		if (out->kind == CANDUMP_KIND_ERROR) {
 			return CANDUMP_ERR_ERROR_FRAME;
@@ -408,9 +590,33 @@ static candump_err_t parse_frame(cursor_t *c, candump_frame_t *out)
 		}
 		return parse_dlc_code(c, out);
 	}
-	e = parse_data(c, out->data, 8U, &n);
+	if (peek(c) == '#') { /* CAN FD */
+		int flags;
+
+		c->i++;
+		if (out->kind == CANDUMP_KIND_ERROR) {
+			return CANDUMP_ERR_ERROR_FRAME;
+		}
+		flags = hex_val(peek(c));
+		if (flags < 0) {
+			return CANDUMP_ERR_FD_FLAGS;
+		}
+		c->i++;
+		out->kind = CANDUMP_KIND_FD;
+		out->fd_flags = (uint8_t)flags;
+		max = CANDUMP_DATA_MAX;
+	}
+	/* classic or FD data: one call (a copy less to inline) */
+	e = cursor_data(c, out->data, max, &n);
 	if (e != CANDUMP_OK) {
 		return e;
+	}
+	if (out->kind == CANDUMP_KIND_FD) {
+		if (!fd_len_valid(n)) {
+			return CANDUMP_ERR_FD_LEN;
+		}
+		out->len = (uint8_t)n;
+		return (peek(c) == '_') ? CANDUMP_ERR_DLC_CODE : CANDUMP_OK;
 	}
 	out->len = (uint8_t)n;
 	return parse_dlc_code(c, out);
@@ -444,7 +650,6 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 	cursor_t c = { line, len, 0U };
 	candump_err_t e = CANDUMP_OK;
 	candump_line_t kind = CANDUMP_LINE_MALFORMED;
-	size_t k;
 
 	if (err != NULL) {
 		*err = CANDUMP_OK;
@@ -470,27 +675,29 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 	memset(out, 0, offsetof(candump_frame_t, data));
 	memset(out->data, 0, sizeof(out->data));
 	if (c.len > CANDUMP_LINE_MAX) {
-		e = CANDUMP_ERR_TOO_LONG;
 		c.i = CANDUMP_LINE_MAX;
+		e = CANDUMP_ERR_TOO_LONG;
 		goto done; /* before a NUL, as the whole line is not looked at */
 	}
-	skip_blanks(&c);
-	if (at_end(&c)) {
-		kind = CANDUMP_LINE_BLANK;
-		goto done;
-	}
-	if ((peek(&c) == '#') || (peek(&c) == ';')) {
-		kind = CANDUMP_LINE_COMMENT;
-		goto done;
-	}
-	if ((c.len - c.i >= 10U) && (memcmp(c.s + c.i, "DROPCOUNT:", 10U) == 0)) {
-		out->dropped = parse_dropped(&c);
-		kind = CANDUMP_LINE_DROPCOUNT;
-		goto done;
-	}
-	if (peek(&c) != '(') {
-		e = CANDUMP_ERR_NOT_A_FRAME;
-		goto done;
+	if (peek(&c) != '(') { /* not at once a frame's */
+		skip_blanks(&c);
+		if (at_end(&c)) {
+			kind = CANDUMP_LINE_BLANK;
+			goto done;
+		}
+		if ((peek(&c) == '#') || (peek(&c) == ';')) {
+			kind = CANDUMP_LINE_COMMENT;
+			goto done;
+		}
+		if ((c.len - c.i >= 10U) && (memcmp(c.s + c.i, "DROPCOUNT:", 10U) == 0)) {
+			out->dropped = parse_dropped(&c);
+			kind = CANDUMP_LINE_DROPCOUNT;
+			goto done;
+		}
+		if (peek(&c) != '(') {
+			e = CANDUMP_ERR_NOT_A_FRAME;
+			goto done;
+		}
 	}
 	e = parse_time(&c, &out->t_ns);
 	if (e != CANDUMP_OK) {
@@ -500,21 +707,12 @@ candump_line_t candump_parse_line(const char *line, size_t len,
 		e = CANDUMP_ERR_IFACE;
 		goto done;
 	}
+	c.i++;
 	skip_blanks(&c);
-	/* the name ends at a blank or the line's end (or a NUL: see the top) */
-	for (k = 0U; (peek_at(&c, k) != 0) && !is_blank(peek_at(&c, k)); k++) {
-		if (k >= CANDUMP_IFACE_MAX) {
-			c.i += k;
-			e = CANDUMP_ERR_IFACE;
-			goto done;
-		}
-	}
-	if (k == 0U) {
-		e = CANDUMP_ERR_IFACE;
+	e = parse_iface(&c, out);
+	if (e != CANDUMP_OK) {
 		goto done;
 	}
-	memcpy(out->iface, c.s + c.i, k);
-	c.i += k;
 	skip_blanks(&c);
 	if (at_end(&c)) {
 		e = CANDUMP_ERR_NO_FRAME;

@@ -413,6 +413,117 @@ static void test_nul_at_any_column_comes_first(void **state)
 	}
 }
 
+/* The usual forms of the fields (ten.six digits of time, a short name, a
+ * three-digit identifier, data without '.') and lines a byte away from
+ * them: the same kind, error, column and values as the general rules give
+ * (expected values from the parser before its usual forms existed). */
+static void test_usual_forms_and_near_misses(void **state)
+{
+	static const struct {
+		const char *line;
+		candump_err_t err; /* CANDUMP_OK: a frame with these values */
+		size_t col;
+		uint64_t t_ns;
+		const char *iface;
+		uint32_t id;
+		uint8_t len;
+	} cases[] = {
+		{ "(1700000000.123456) can0 123#11", CANDUMP_OK, 0U, 1700000000123456000ULL, "can0", 0x123U, 1 },
+		{ "(1700000000.12345) can0 123#11", CANDUMP_ERR_TIMESTAMP, 17U, 0U, "", 0U, 0U },
+		{ "(1700000000.1234567) can0 123#11", CANDUMP_ERR_TIMESTAMP, 19U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456789) can0 123#11", CANDUMP_OK, 0U, 1700000000123456789ULL, "can0", 0x123U, 1 },
+		{ "(1700000000.123456 can0 123#11", CANDUMP_ERR_TIMESTAMP, 18U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456]can0 123#11", CANDUMP_ERR_TIMESTAMP, 18U, 0U, "", 0U, 0U },
+		{ "(170000000.123456) can0 123#11", CANDUMP_OK, 0U, 170000000123456000ULL, "can0", 0x123U, 1 },
+		{ "(17000000000.123456) can0 123#11", CANDUMP_OK, 0U, 17000000000123456000ULL, "can0", 0x123U, 1 },
+		{ "(1700000000,123456) can0 123#11", CANDUMP_ERR_TIMESTAMP, 11U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456)can0 123#11", CANDUMP_ERR_IFACE, 19U, 0U, "", 0U, 0U },
+		{ "(1700000000.12345a) can0 123#11", CANDUMP_ERR_TIMESTAMP, 17U, 0U, "", 0U, 0U },
+		{ "(170000000/.123456) can0 123#11", CANDUMP_ERR_TIMESTAMP, 10U, 0U, "", 0U, 0U },
+		{ "(17000000:0.123456) can0 123#11", CANDUMP_ERR_TIMESTAMP, 9U, 0U, "", 0U, 0U },
+		{ "(9999999999.999999) can0 123#11", CANDUMP_OK, 0U, 9999999999999999000ULL, "can0", 0x123U, 1 },
+		{ "(0000000000.000000) can0 123#11", CANDUMP_OK, 0U, 0ULL, "can0", 0x123U, 1 },
+		{ "(1700000000.123456)", CANDUMP_ERR_IFACE, 19U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456) ", CANDUMP_ERR_IFACE, 20U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456)\tcan0 123#11", CANDUMP_OK, 0U, 1700000000123456000ULL, "can0", 0x123U, 1 },
+		{ "(1.000000) vcan0123 123#11", CANDUMP_OK, 0U, 1000000000ULL, "vcan0123", 0x123U, 1 },
+		{ "(1.000000) abcdefghijklmno 123#11", CANDUMP_OK, 0U, 1000000000ULL, "abcdefghijklmno", 0x123U, 1 },
+		{ "(1.000000) abcdefghijklmnop 123#11", CANDUMP_ERR_IFACE, 26U, 0U, "", 0U, 0U },
+		{ "(1.000000) can\x01" "x 123#11", CANDUMP_OK, 0U, 1000000000ULL, "can\x01" "x", 0x123U, 1 },
+		{ "(1.000000) can!x 123#11", CANDUMP_OK, 0U, 1000000000ULL, "can!x", 0x123U, 1 },
+		{ "(1.000000) c 123#11", CANDUMP_OK, 0U, 1000000000ULL, "c", 0x123U, 1 },
+		{ "(1.000000) can0\t123#11", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 1 },
+		{ "(1.000000) can0", CANDUMP_ERR_NO_FRAME, 15U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 ", CANDUMP_ERR_NO_FRAME, 16U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 7FF#11", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x7FFU, 1 },
+		{ "(1.000000) can0 800#11", CANDUMP_ERR_ID_RANGE, 16U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 7ab#", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x7ABU, 0 },
+		{ "(1.000000) can0 12G#11", CANDUMP_ERR_ID_HEX, 18U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 12#11", CANDUMP_ERR_ID_DIGITS, 18U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 1234#11", CANDUMP_ERR_ID_DIGITS, 20U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 /12#11", CANDUMP_ERR_ID_HEX, 16U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 12:#11", CANDUMP_ERR_ID_HEX, 18U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123", CANDUMP_ERR_NO_HASH, 19U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#0011223344556677", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 8 },
+		{ "(1.000000) can0 123#001122334455667788", CANDUMP_ERR_DATA_LEN, 36U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#00112233445566G7", CANDUMP_ERR_DATA_HEX, 34U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#0011223344556", CANDUMP_ERR_DATA_ODD, 33U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#00112233 T", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 4 },
+		{ "(1.000000) can0 123#00112233\tR", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 4 },
+		{ "(1.000000) can0 123#0011.2233", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 4 },
+		{ "(1.000000) can0 123#001122.33", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 4 },
+		{ "(1.000000) can0 123#aAbBcCdDeEfF0011", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 8 },
+		{ "(1.000000) can0 123#0011223344556677_9", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 8 },
+		{ "(1.000000) can0 123#00112233_9", CANDUMP_ERR_DLC_CODE, 28U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667`", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667@", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667g", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667G", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667/", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667:", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#0011223344556677\r", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 8 },
+		{ "(1.000000) can0 123#00112233445566\n", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 7 },
+		{ "(1.000000) can0 123##100112233445566778899AABB", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 12 },
+		{ "(1.000000) can0 123##1001122334455667788", CANDUMP_ERR_FD_LEN, 40U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123##1000102030405060708090A0B0C0D0E0F101112131415161718191A1B1C1D1E1F202122232425262728292A2B2C2D2E2F303132333435363738393A3B3C3D3E3F", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 64 },
+		{ "(1.000000) can0 123##1000102030405060708090A0B0C0D0E0F101112131415161718191A1B1C1D1E1F202122232425262728292A2B2C2D2E2F303132333435363738393A3B3C3D3E3F40", CANDUMP_ERR_DATA_LEN, 150U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 12345678#0011223344556677", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x12345678U, 8 },
+		{ "(1.000000) can0 20000004#0004000000000000", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x4U, 8 },
+	};
+	candump_frame_t f;
+	candump_err_t err;
+	size_t col;
+	size_t i;
+
+	(void)state;
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		const size_t len = strlen(cases[i].line);
+		char *copy = malloc(len);
+		candump_line_t k;
+
+		assert_non_null(copy);
+		memcpy(copy, cases[i].line, len);
+		err = CANDUMP_ERR_COUNT;
+		col = (size_t)-1;
+		k = candump_parse_line(copy, len, &f, &err, &col);
+		free(copy);
+		if (err != cases[i].err) {
+			fail_msg("'%s': got '%s', want '%s'", cases[i].line, candump_strerror(err),
+				 candump_strerror(cases[i].err));
+		}
+		if (cases[i].err != CANDUMP_OK) {
+			assert_int_equal(k, CANDUMP_LINE_MALFORMED);
+			assert_int_equal(col, cases[i].col);
+			continue;
+		}
+		assert_int_equal(k, CANDUMP_LINE_FRAME);
+		assert_true(f.t_ns == cases[i].t_ns);
+		assert_string_equal(f.iface, cases[i].iface);
+		assert_int_equal(f.id, cases[i].id);
+		assert_int_equal(f.len, cases[i].len);
+	}
+}
+
 static void test_too_long_line(void **state)
 {
 	char *line = malloc(CANDUMP_LINE_MAX + 10U);
@@ -788,6 +899,7 @@ int main(void)
 		cmocka_unit_test(test_malformed_lines_each_with_its_reason),
 		cmocka_unit_test(test_embedded_nul_is_an_error_not_an_end),
 		cmocka_unit_test(test_nul_at_any_column_comes_first),
+		cmocka_unit_test(test_usual_forms_and_near_misses),
 		cmocka_unit_test(test_too_long_line),
 		cmocka_unit_test(test_every_prefix_of_valid_lines_is_safe),
 		cmocka_unit_test(test_random_bytes_and_mutations_never_crash),
