@@ -765,30 +765,65 @@ done:
 
 static const char hex_upper[] = "0123456789ABCDEF";
 
-/* "00" .. "99": two digits per division */
+/* "00" .. "99" */
 static const char dec_pairs[] =
 	"00010203040506070809101112131415161718192021222324252627282930313233343536373839"
 	"40414243444546474849505152535455565758596061626364656667686970717273747576777879"
 	"8081828384858687888990919293949596979899";
 
-/* n decimal digits of v, zero-padded (v < 10^n assumed by the caller,
- * larger values keep their low digits) */
-static char *put_dec(char *p, uint64_t v, unsigned n)
+/* v < 10^8 as eight decimal digits (leading zeros), the first in the
+ * lowest byte: split into 4 + 4 digits in the two halves of a word, each
+ * half into 2 + 2 (/ 100 as * 10486 >> 20, exact below 10^4), each of
+ * those into 1 + 1 (/ 10 as * 103 >> 10, exact below 100). A split of
+ * lanes x into quotients q and remainders r at 2^k above them is
+ * (x << k) + q * (1 - d * 2^k): no lane overflows into the next. */
+static inline uint64_t dec8(uint32_t v)
 {
-	unsigned k = n;
+	uint64_t x = ((uint64_t)v << 32) + (uint64_t)(v / 10000U) * (1U - (10000ULL << 32));
+	uint64_t q = ((x * 10486U) >> 20) & 0x0000007F0000007FULL;
 
-	while (k >= 2U) {
-		const unsigned d = (unsigned)(v % 100U) * 2U;
+	x = (x << 16) + q * (1U - (100ULL << 16));
+	q = ((x * 103U) >> 10) & 0x000F000F000F000FULL;
+	x = (x << 8) + q * (1U - (10ULL << 8));
+	return x | BYTES('0');
+}
 
-		p[k - 1U] = dec_pairs[d + 1U];
-		p[k - 2U] = dec_pairs[d];
-		v /= 100U;
-		k -= 2U;
+/* "(SECONDS.MICROSECONDS) " as %010llu.%06llu: at least ten digits of
+ * seconds, the microseconds truncated. Ten digits (before the year 2286)
+ * and six are the sixteen of the time in microseconds: its two halves of
+ * eight digits. */
+static char *put_time(char *p, uint64_t t_ns)
+{
+	const uint64_t t_us = t_ns / 1000U;
+	uint64_t w;
+
+	*p++ = '(';
+	if (t_us < 10000000000000000ULL) {
+		const uint64_t hi = t_us / 100000000U;
+
+		w = dec8((uint32_t)hi);
+		memcpy(p, &w, sizeof(w));
+		w = dec8((uint32_t)(t_us - hi * 100000000U));
+		memcpy(p + 8, &w, 2U);
+		p[10] = '.';
+		w >>= 16;
+		memcpy(p + 11, &w, 6U);
+	} else {
+		/* eleven digits of seconds (t_ns < 2^64): one, then ten */
+		const uint64_t sec = t_us / 1000000U;
+		const uint64_t lo = sec % 10000000000ULL;
+
+		*p++ = (char)('0' + sec / 10000000000ULL);
+		memcpy(p, &dec_pairs[2U * (lo / 100000000U)], 2U);
+		w = dec8((uint32_t)(lo % 100000000U));
+		memcpy(p + 2, &w, sizeof(w));
+		p[10] = '.';
+		w = dec8((uint32_t)(t_us % 1000000U)) >> 16;
+		memcpy(p + 11, &w, 6U);
 	}
-	if (k == 1U) {
-		p[0] = (char)('0' + (v % 10U));
-	}
-	return p + n;
+	p[17] = ')';
+	p[18] = ' ';
+	return p + 19;
 }
 
 /* "00" .. "FF": a byte's two hex digits in one copy */
@@ -814,15 +849,48 @@ static char *put_bytes(char *p, const uint8_t *data, size_t n)
 	return p;
 }
 
-static char *put_hex(char *p, uint32_t v, unsigned digits)
+/* An identifier of 3 (v <= 0xFFF) or 8 hex digits. */
+static inline char *put_id(char *p, uint32_t v, bool eight)
 {
-	unsigned k;
-
-	for (k = digits; k > 0U; k--) {
-		p[k - 1U] = hex_upper[v & 0xFU];
-		v >>= 4;
+	if (eight) {
+		memcpy(p, &hex_pairs[2U * (v >> 24)], 2U);
+		memcpy(p + 2, &hex_pairs[2U * ((v >> 16) & 0xFFU)], 2U);
+		memcpy(p + 4, &hex_pairs[2U * ((v >> 8) & 0xFFU)], 2U);
+		p += 6;
+	} else {
+		*p++ = hex_upper[(v >> 8) & 0xFU];
 	}
-	return p + digits;
+	memcpy(p, &hex_pairs[2U * (v & 0xFFU)], 2U);
+	return p + 2;
+}
+
+/* n (1..15) bytes of a name from its 16-byte field: two copies of 8 or
+ * of 4 that overlap (fixed sizes: no call; no byte written beyond n) */
+static inline char *put_name(char *p, const char *name, size_t n)
+{
+	size_t k;
+
+	if (n >= 8U) {
+		memcpy(p, name, 8U);
+		memcpy(p + n - 8U, name + n - 8U, 8U);
+	} else if (n >= 4U) {
+		memcpy(p, name, 4U);
+		memcpy(p + n - 4U, name + n - 4U, 4U);
+	} else {
+		for (k = 0U; k < n; k++) {
+			p[k] = name[k];
+		}
+	}
+	return p + n;
+}
+
+/* The length of the NUL-terminated name in the 16 bytes of an iface
+ * field, 16 if it has no NUL (two words: no call to strnlen()). */
+static size_t iface_len(const char *iface)
+{
+	const uint64_t z = bytes_below(load8(iface), 1U);
+
+	return (z != 0U) ? first_marked(z) : (8U + first_marked(bytes_below(load8(iface + 8), 1U)));
 }
 
 int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
@@ -831,13 +899,10 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 	char tmp[CANDUMP_FORMAT_MAX + 2U];
 	char *p;
 	char *first;
-	uint64_t sec;
-	uint64_t usec;
-	unsigned sec_digits = 10U;
 	size_t ifl;
 	size_t n;
-	uint64_t s;
 
+	_Static_assert(sizeof(f->iface) == 16U, "the name's field is two words");
 	if ((buf == NULL) || (size == 0U)) {
 		return -1;
 	}
@@ -848,23 +913,12 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 	/* straight into buf when the longest line fits, else through tmp */
 	first = (size >= sizeof(tmp)) ? buf : tmp;
 	p = first;
-	ifl = strnlen(f->iface, sizeof(f->iface));
+	ifl = iface_len(f->iface);
 	if ((ifl == 0U) || (ifl > CANDUMP_IFACE_MAX)) {
 		goto bad;
 	}
-	sec = f->t_ns / 1000000000ULL;
-	usec = (f->t_ns % 1000000000ULL) / 1000U;
-	for (s = sec / 10000000000ULL; s > 0U; s /= 10U) {
-		sec_digits++; /* %010llu: at least 10 digits */
-	}
-	*p++ = '(';
-	p = put_dec(p, sec, sec_digits);
-	*p++ = '.';
-	p = put_dec(p, usec, 6U);
-	*p++ = ')';
-	*p++ = ' ';
-	memcpy(p, f->iface, ifl);
-	p += ifl;
+	p = put_time(p, f->t_ns);
+	p = put_name(p, f->iface, ifl);
 	*p++ = ' ';
 	switch (f->kind) {
 	case CANDUMP_KIND_CLASSIC:
@@ -873,17 +927,10 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 				      ((f->len != 8U) || (f->len8_dlc < 9U) || (f->len8_dlc > 15U)))) {
 			goto bad;
 		}
-		if (f->ext) {
-			if (f->id > CANDUMP_EFF_MAX) {
-				goto bad;
-			}
-			p = put_hex(p, f->id, 8U);
-		} else {
-			if (f->id > CANDUMP_SFF_MAX) {
-				goto bad;
-			}
-			p = put_hex(p, f->id, 3U);
+		if (f->id > (f->ext ? CANDUMP_EFF_MAX : CANDUMP_SFF_MAX)) {
+			goto bad;
 		}
+		p = put_id(p, f->id, f->ext);
 		*p++ = '#';
 		if (f->kind == CANDUMP_KIND_RTR) {
 			*p++ = 'R';
@@ -903,7 +950,7 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 		    (f->id > (f->ext ? CANDUMP_EFF_MAX : CANDUMP_SFF_MAX))) {
 			goto bad;
 		}
-		p = put_hex(p, f->id, f->ext ? 8U : 3U);
+		p = put_id(p, f->id, f->ext);
 		*p++ = '#';
 		*p++ = '#';
 		*p++ = hex_upper[f->fd_flags];
@@ -915,7 +962,7 @@ int candump_format_frame(const candump_frame_t *f, bool newline, char *buf,
 		     ((f->len != 8U) || (f->len8_dlc < 9U) || (f->len8_dlc > 15U)))) {
 			goto bad;
 		}
-		p = put_hex(p, f->id | CANDUMP_ERR_FLAG, 8U);
+		p = put_id(p, f->id | CANDUMP_ERR_FLAG, true);
 		*p++ = '#';
 		p = put_bytes(p, f->data, f->len);
 		/* an error frame is a classic frame: its DLC code too (as the

@@ -657,6 +657,51 @@ static void test_writer_exact_strings(void **state)
 	assert_string_equal(out, "(12345678901.000000) vcan0 7FF#");
 }
 
+/* The time as printf's "%010llu.%06llu" (seconds, microseconds truncated)
+ * on both sides of ten digits of seconds and at the ends of the range, the
+ * interface name of every length, and the bytes of the buffer after the
+ * line's NUL left alone. */
+static void test_writer_time_digits_and_name_lengths(void **state)
+{
+	static const uint64_t times[] = {
+		0ULL, 999ULL, 1000ULL, 999999999ULL, 1000000000ULL, 1700000000123456789ULL,
+		9999999999999999999ULL, 10000000000000000000ULL, 10000000000000000999ULL,
+		12345678901234567890ULL, 18446744073709551615ULL,
+	};
+	static const char name[] = "abcdefghijklmno";
+	candump_frame_t f;
+	char out[CANDUMP_FORMAT_MAX + 16U];
+	char want[CANDUMP_FORMAT_MAX + 16U];
+	size_t t;
+	size_t n;
+	size_t k;
+
+	(void)state;
+	for (t = 0; t < sizeof(times) / sizeof(times[0]); t++) {
+		for (n = 1; n <= CANDUMP_IFACE_MAX; n++) {
+			int w;
+
+			memset(&f, 0, sizeof(f));
+			f.t_ns = times[t];
+			memcpy(f.iface, name, n);
+			f.kind = CANDUMP_KIND_CLASSIC;
+			f.id = 0x1A5;
+			f.len = 2;
+			f.data[0] = 0xC3;
+			f.data[1] = 0x0F;
+			w = snprintf(want, sizeof(want), "(%010llu.%06llu) %.*s 1A5#C30F",
+				     (unsigned long long)(times[t] / 1000000000ULL),
+				     (unsigned long long)(times[t] % 1000000000ULL / 1000ULL), (int)n, name);
+			memset(out, '~', sizeof(out));
+			assert_int_equal(candump_format_frame(&f, false, out, sizeof(out)), w);
+			assert_string_equal(out, want);
+			for (k = (size_t)w + 1U; k < sizeof(out); k++) {
+				assert_int_equal(out[k], '~');
+			}
+		}
+	}
+}
+
 static void test_writer_refuses_bad_frames_and_small_buffers(void **state)
 {
 	candump_frame_t f;
@@ -904,6 +949,7 @@ int main(void)
 		cmocka_unit_test(test_every_prefix_of_valid_lines_is_safe),
 		cmocka_unit_test(test_random_bytes_and_mutations_never_crash),
 		cmocka_unit_test(test_writer_exact_strings),
+		cmocka_unit_test(test_writer_time_digits_and_name_lengths),
 		cmocka_unit_test(test_writer_refuses_bad_frames_and_small_buffers),
 		cmocka_unit_test(test_writer_parser_round_trip_random_frames),
 		cmocka_unit_test(test_reader_lines_numbers_long_lines_and_nul),
