@@ -837,12 +837,29 @@ static const char hex_pairs[] =
 	"C0C1C2C3C4C5C6C7C8C9CACBCCCDCECFD0D1D2D3D4D5D6D7D8D9DADBDCDDDEDF"
 	"E0E1E2E3E4E5E6E7E8E9EAEBECEDEEEFF0F1F2F3F4F5F6F7F8F9FAFBFCFDFEFF";
 
-/* The bytes as uppercase hex pairs. */
+/* A byte's two hex digits from hex_pairs, the first in the low byte. */
+static inline uint64_t hex_pair(uint8_t b)
+{
+	uint16_t w;
+
+	memcpy(&w, &hex_pairs[2U * b], sizeof(w));
+	return w;
+}
+
+/* The bytes as uppercase hex pairs: four pairs in one store, then one by
+ * one. */
 static char *put_bytes(char *p, const uint8_t *data, size_t n)
 {
-	size_t k;
+	size_t k = 0U;
 
-	for (k = 0U; k < n; k++) {
+	for (; k + 4U <= n; k += 4U) {
+		const uint64_t w = hex_pair(data[k]) | (hex_pair(data[k + 1U]) << 16) |
+				   (hex_pair(data[k + 2U]) << 32) | (hex_pair(data[k + 3U]) << 48);
+
+		memcpy(p, &w, sizeof(w));
+		p += 8;
+	}
+	for (; k < n; k++) {
 		memcpy(p, &hex_pairs[2U * data[k]], 2U);
 		p += 2;
 	}
