@@ -316,7 +316,7 @@ static inline candump_err_t parse_iface(cursor_t *c, candump_frame_t *out)
 	const char *const p = c->s + c->i;
 	size_t k;
 
-	if (c->len - c->i >= 8U) {
+	if (c->i + 8U <= c->len) {
 		const uint64_t w = load8(p);
 
 		k = first_marked(bytes_below(w, '!'));
@@ -407,7 +407,7 @@ static inline candump_err_t parse_data(const char *s, size_t len, size_t *pos, u
 	size_t i = *pos;
 	size_t n = 0U;
 
-	while ((len - i >= 8U) && (n + 4U <= max)) {
+	while ((i + 8U <= len) && (n + 4U <= max)) {
 		const uint64_t w = load8(&s[i]);
 		uint32_t b;
 
@@ -526,7 +526,7 @@ static inline candump_err_t parse_frame(cursor_t *c, candump_frame_t *out)
 	/* the usual standard identifier "HHH#" at once; else the
 	 * identifier's digits one by one (a ninth is already too many) and,
 	 * in the same pass, their value (used for 3 or 8 digits only) */
-	if ((c->len - c->i >= 4U) && (c->s[c->i + 3U] == '#') &&
+	if ((c->i + 4U <= c->len) && (c->s[c->i + 3U] == '#') &&
 	    ((hex_val(c->s[c->i]) | hex_val(c->s[c->i + 1U]) | hex_val(c->s[c->i + 2U])) >= 0)) {
 		nd = 3U;
 		id = ((uint32_t)hex_val(c->s[c->i]) << 8) | ((uint32_t)hex_val(c->s[c->i + 1U]) << 4) |
