@@ -364,6 +364,166 @@ static void test_embedded_nul_is_an_error_not_an_end(void **state)
 	assert_int_equal(col, 22);
 }
 
+/* A NUL is looked for only when a line is no frame or blank line (see
+ * candump_log.c), yet it comes first wherever it is: one in any column of
+ * any kind of line, even after what is already an error, is reported
+ * there. */
+static void test_nul_at_any_column_comes_first(void **state)
+{
+	static const char *const lines[] = {
+		"(1700000000.123456) can0 110#5A03E803",
+		"(0000000012.340000) vcan0 18FEF100#0102030405060708_C",
+		"(1700000000.123456789) can0 123#R8 T",
+		"(1700000000.123456) can0 123##5112233",
+		"(1700000000.123456) can0 20000004#0004000000000000",
+		"(1.000000) can0 45123#81:00:12345678#11223344.556677",
+		"(1.000000)  long_name_of_15\t7FF#11.22\tR\t",
+		"   ",
+		"# a comment",
+		"DROPCOUNT: dropped 3 CAN frame(s) on 'can0' socket (total drops 3)",
+		"(1.000000) can0 123#1G22",
+		"(1.000000) can0 800#",
+		"no frame at all",
+		"(1.000000) can0 123#11\r\n",
+	};
+	candump_frame_t f;
+	candump_err_t err;
+	size_t col;
+	size_t i;
+	size_t at;
+
+	(void)state;
+	for (i = 0; i < sizeof(lines) / sizeof(lines[0]); i++) {
+		const size_t len = strlen(lines[i]);
+
+		for (at = 0; at < len; at++) {
+			char *copy = malloc(len);
+
+			assert_non_null(copy);
+			memcpy(copy, lines[i], len);
+			copy[at] = '\0';
+			err = CANDUMP_OK;
+			col = (size_t)-1;
+			assert_int_equal(candump_parse_line(copy, len, &f, &err, &col),
+					 CANDUMP_LINE_MALFORMED);
+			assert_int_equal(err, CANDUMP_ERR_NUL);
+			assert_int_equal(col, at);
+			free(copy);
+		}
+	}
+}
+
+/* The usual forms of the fields (ten.six digits of time, a short name, a
+ * three-digit identifier, data without '.') and lines a byte away from
+ * them: the same kind, error, column and values as the general rules give
+ * (expected values from the parser before its usual forms existed). */
+static void test_usual_forms_and_near_misses(void **state)
+{
+	static const struct {
+		const char *line;
+		candump_err_t err; /* CANDUMP_OK: a frame with these values */
+		size_t col;
+		uint64_t t_ns;
+		const char *iface;
+		uint32_t id;
+		uint8_t len;
+	} cases[] = {
+		{ "(1700000000.123456) can0 123#11", CANDUMP_OK, 0U, 1700000000123456000ULL, "can0", 0x123U, 1 },
+		{ "(1700000000.12345) can0 123#11", CANDUMP_ERR_TIMESTAMP, 17U, 0U, "", 0U, 0U },
+		{ "(1700000000.1234567) can0 123#11", CANDUMP_ERR_TIMESTAMP, 19U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456789) can0 123#11", CANDUMP_OK, 0U, 1700000000123456789ULL, "can0", 0x123U, 1 },
+		{ "(1700000000.123456 can0 123#11", CANDUMP_ERR_TIMESTAMP, 18U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456]can0 123#11", CANDUMP_ERR_TIMESTAMP, 18U, 0U, "", 0U, 0U },
+		{ "(170000000.123456) can0 123#11", CANDUMP_OK, 0U, 170000000123456000ULL, "can0", 0x123U, 1 },
+		{ "(17000000000.123456) can0 123#11", CANDUMP_OK, 0U, 17000000000123456000ULL, "can0", 0x123U, 1 },
+		{ "(1700000000,123456) can0 123#11", CANDUMP_ERR_TIMESTAMP, 11U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456)can0 123#11", CANDUMP_ERR_IFACE, 19U, 0U, "", 0U, 0U },
+		{ "(1700000000.12345a) can0 123#11", CANDUMP_ERR_TIMESTAMP, 17U, 0U, "", 0U, 0U },
+		{ "(170000000/.123456) can0 123#11", CANDUMP_ERR_TIMESTAMP, 10U, 0U, "", 0U, 0U },
+		{ "(17000000:0.123456) can0 123#11", CANDUMP_ERR_TIMESTAMP, 9U, 0U, "", 0U, 0U },
+		{ "(9999999999.999999) can0 123#11", CANDUMP_OK, 0U, 9999999999999999000ULL, "can0", 0x123U, 1 },
+		{ "(0000000000.000000) can0 123#11", CANDUMP_OK, 0U, 0ULL, "can0", 0x123U, 1 },
+		{ "(1700000000.123456)", CANDUMP_ERR_IFACE, 19U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456) ", CANDUMP_ERR_IFACE, 20U, 0U, "", 0U, 0U },
+		{ "(1700000000.123456)\tcan0 123#11", CANDUMP_OK, 0U, 1700000000123456000ULL, "can0", 0x123U, 1 },
+		{ "(1.000000) vcan0123 123#11", CANDUMP_OK, 0U, 1000000000ULL, "vcan0123", 0x123U, 1 },
+		{ "(1.000000) abcdefghijklmno 123#11", CANDUMP_OK, 0U, 1000000000ULL, "abcdefghijklmno", 0x123U, 1 },
+		{ "(1.000000) abcdefghijklmnop 123#11", CANDUMP_ERR_IFACE, 26U, 0U, "", 0U, 0U },
+		{ "(1.000000) can\x01" "x 123#11", CANDUMP_OK, 0U, 1000000000ULL, "can\x01" "x", 0x123U, 1 },
+		{ "(1.000000) can!x 123#11", CANDUMP_OK, 0U, 1000000000ULL, "can!x", 0x123U, 1 },
+		{ "(1.000000) c 123#11", CANDUMP_OK, 0U, 1000000000ULL, "c", 0x123U, 1 },
+		{ "(1.000000) can0\t123#11", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 1 },
+		{ "(1.000000) can0", CANDUMP_ERR_NO_FRAME, 15U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 ", CANDUMP_ERR_NO_FRAME, 16U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 7FF#11", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x7FFU, 1 },
+		{ "(1.000000) can0 800#11", CANDUMP_ERR_ID_RANGE, 16U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 7ab#", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x7ABU, 0 },
+		{ "(1.000000) can0 12G#11", CANDUMP_ERR_ID_HEX, 18U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 12#11", CANDUMP_ERR_ID_DIGITS, 18U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 1234#11", CANDUMP_ERR_ID_DIGITS, 20U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 /12#11", CANDUMP_ERR_ID_HEX, 16U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 12:#11", CANDUMP_ERR_ID_HEX, 18U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123", CANDUMP_ERR_NO_HASH, 19U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#0011223344556677", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 8 },
+		{ "(1.000000) can0 123#001122334455667788", CANDUMP_ERR_DATA_LEN, 36U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#00112233445566G7", CANDUMP_ERR_DATA_HEX, 34U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#0011223344556", CANDUMP_ERR_DATA_ODD, 33U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#00112233 T", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 4 },
+		{ "(1.000000) can0 123#00112233\tR", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 4 },
+		{ "(1.000000) can0 123#0011.2233", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 4 },
+		{ "(1.000000) can0 123#001122.33", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 4 },
+		{ "(1.000000) can0 123#aAbBcCdDeEfF0011", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 8 },
+		{ "(1.000000) can0 123#0011223344556677_9", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 8 },
+		{ "(1.000000) can0 123#00112233_9", CANDUMP_ERR_DLC_CODE, 28U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667`", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667@", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667g", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667G", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667/", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#001122334455667:", CANDUMP_ERR_DATA_HEX, 35U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123#0011223344556677\r", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 8 },
+		{ "(1.000000) can0 123#00112233445566\n", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 7 },
+		{ "(1.000000) can0 123##100112233445566778899AABB", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 12 },
+		{ "(1.000000) can0 123##1001122334455667788", CANDUMP_ERR_FD_LEN, 40U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 123##1000102030405060708090A0B0C0D0E0F101112131415161718191A1B1C1D1E1F202122232425262728292A2B2C2D2E2F303132333435363738393A3B3C3D3E3F", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x123U, 64 },
+		{ "(1.000000) can0 123##1000102030405060708090A0B0C0D0E0F101112131415161718191A1B1C1D1E1F202122232425262728292A2B2C2D2E2F303132333435363738393A3B3C3D3E3F40", CANDUMP_ERR_DATA_LEN, 150U, 0U, "", 0U, 0U },
+		{ "(1.000000) can0 12345678#0011223344556677", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x12345678U, 8 },
+		{ "(1.000000) can0 20000004#0004000000000000", CANDUMP_OK, 0U, 1000000000ULL, "can0", 0x4U, 8 },
+	};
+	candump_frame_t f;
+	candump_err_t err;
+	size_t col;
+	size_t i;
+
+	(void)state;
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		const size_t len = strlen(cases[i].line);
+		char *copy = malloc(len);
+		candump_line_t k;
+
+		assert_non_null(copy);
+		memcpy(copy, cases[i].line, len);
+		err = CANDUMP_ERR_COUNT;
+		col = (size_t)-1;
+		k = candump_parse_line(copy, len, &f, &err, &col);
+		free(copy);
+		if (err != cases[i].err) {
+			fail_msg("'%s': got '%s', want '%s'", cases[i].line, candump_strerror(err),
+				 candump_strerror(cases[i].err));
+		}
+		if (cases[i].err != CANDUMP_OK) {
+			assert_int_equal(k, CANDUMP_LINE_MALFORMED);
+			assert_int_equal(col, cases[i].col);
+			continue;
+		}
+		assert_int_equal(k, CANDUMP_LINE_FRAME);
+		assert_true(f.t_ns == cases[i].t_ns);
+		assert_string_equal(f.iface, cases[i].iface);
+		assert_int_equal(f.id, cases[i].id);
+		assert_int_equal(f.len, cases[i].len);
+	}
+}
+
 static void test_too_long_line(void **state)
 {
 	char *line = malloc(CANDUMP_LINE_MAX + 10U);
@@ -495,6 +655,51 @@ static void test_writer_exact_strings(void **state)
 	f.len = 0;
 	(void)candump_format_frame(&f, false, out, sizeof(out));
 	assert_string_equal(out, "(12345678901.000000) vcan0 7FF#");
+}
+
+/* The time as printf's "%010llu.%06llu" (seconds, microseconds truncated)
+ * on both sides of ten digits of seconds and at the ends of the range, the
+ * interface name of every length, and the bytes of the buffer after the
+ * line's NUL left alone. */
+static void test_writer_time_digits_and_name_lengths(void **state)
+{
+	static const uint64_t times[] = {
+		0ULL, 999ULL, 1000ULL, 999999999ULL, 1000000000ULL, 1700000000123456789ULL,
+		9999999999999999999ULL, 10000000000000000000ULL, 10000000000000000999ULL,
+		12345678901234567890ULL, 18446744073709551615ULL,
+	};
+	static const char name[] = "abcdefghijklmno";
+	candump_frame_t f;
+	char out[CANDUMP_FORMAT_MAX + 16U];
+	char want[CANDUMP_FORMAT_MAX + 16U];
+	size_t t;
+	size_t n;
+	size_t k;
+
+	(void)state;
+	for (t = 0; t < sizeof(times) / sizeof(times[0]); t++) {
+		for (n = 1; n <= CANDUMP_IFACE_MAX; n++) {
+			int w;
+
+			memset(&f, 0, sizeof(f));
+			f.t_ns = times[t];
+			memcpy(f.iface, name, n);
+			f.kind = CANDUMP_KIND_CLASSIC;
+			f.id = 0x1A5;
+			f.len = 2;
+			f.data[0] = 0xC3;
+			f.data[1] = 0x0F;
+			w = snprintf(want, sizeof(want), "(%010llu.%06llu) %.*s 1A5#C30F",
+				     (unsigned long long)(times[t] / 1000000000ULL),
+				     (unsigned long long)(times[t] % 1000000000ULL / 1000ULL), (int)n, name);
+			memset(out, '~', sizeof(out));
+			assert_int_equal(candump_format_frame(&f, false, out, sizeof(out)), w);
+			assert_string_equal(out, want);
+			for (k = (size_t)w + 1U; k < sizeof(out); k++) {
+				assert_int_equal(out[k], '~');
+			}
+		}
+	}
 }
 
 static void test_writer_refuses_bad_frames_and_small_buffers(void **state)
@@ -738,10 +943,13 @@ int main(void)
 		cmocka_unit_test(test_other_lines),
 		cmocka_unit_test(test_malformed_lines_each_with_its_reason),
 		cmocka_unit_test(test_embedded_nul_is_an_error_not_an_end),
+		cmocka_unit_test(test_nul_at_any_column_comes_first),
+		cmocka_unit_test(test_usual_forms_and_near_misses),
 		cmocka_unit_test(test_too_long_line),
 		cmocka_unit_test(test_every_prefix_of_valid_lines_is_safe),
 		cmocka_unit_test(test_random_bytes_and_mutations_never_crash),
 		cmocka_unit_test(test_writer_exact_strings),
+		cmocka_unit_test(test_writer_time_digits_and_name_lengths),
 		cmocka_unit_test(test_writer_refuses_bad_frames_and_small_buffers),
 		cmocka_unit_test(test_writer_parser_round_trip_random_frames),
 		cmocka_unit_test(test_reader_lines_numbers_long_lines_and_nul),
