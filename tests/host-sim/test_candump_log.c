@@ -415,8 +415,12 @@ static void test_nul_at_any_column_comes_first(void **state)
 
 /* The usual forms of the fields (ten.six digits of time, a short name, a
  * three-digit identifier, data without '.') and lines a byte away from
- * them: the same kind, error, column and values as the general rules give
- * (expected values from the parser before its usual forms existed). */
+ * them: the same kind, error, column and values as the general rules give.
+ * Each expected value follows from the grammar in candump_log.h, the
+ * column counted by hand from the line's first byte (0): where parsing
+ * stops, e.g. at the ')' where a sixth fraction digit is wanted, at the
+ * ninth data byte of a classic frame, or back at the first identifier
+ * digit of a 3-digit identifier above 0x7FF. */
 static void test_usual_forms_and_near_misses(void **state)
 {
 	static const struct {
