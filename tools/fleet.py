@@ -195,13 +195,19 @@ def log_bytes(path):
         return 0
 
 
+def log_work(path):
+    """A log's work in bytes: its size, and at least one line's worth (an
+    empty or unreadable log still costs a replay's start)."""
+    return max(log_bytes(path), 64)
+
+
 def batches(logs, nworkers):
     """The logs in tasks by work (bytes, each log at least one line's worth),
     the largest logs first, each task its guided share of the work left
     (GUIDE, MIN_TASKS_PER_WORKER): with equal tasks the last one would let
     one worker run alone for up to a task's time (8 % of a fleet of 10-minute
     drives on two workers)."""
-    size = {log: max(log_bytes(log), 64) for log in logs}
+    size = {log: log_work(log) for log in logs}
     workers = float(max(1, nworkers))
     left = float(sum(size.values()))
     floor = left / (workers * MIN_TASKS_PER_WORKER)
@@ -226,14 +232,15 @@ class Progress:
         self.on = stream.isatty()
         self.stream = stream
         self.total = len(logs)
-        self.work = float(sum(max(log_bytes(x), 64) for x in logs))
+        self.work_of = {x: log_work(x) for x in logs}  # each log stat-ed once
+        self.work = float(sum(self.work_of.values()))
         self.done = 0
         self.done_work = 0.0
         self.t0 = time.monotonic()
 
     def update(self, logs):
         self.done += len(logs)
-        self.done_work += sum(max(log_bytes(x), 64) for x in logs)
+        self.done_work += sum(self.work_of.get(x, 0) for x in logs)
         if not self.on:
             return
         dt = time.monotonic() - self.t0

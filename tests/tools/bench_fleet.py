@@ -83,7 +83,7 @@ def deal(tasks, parts):
     for t in tasks:
         k = work.index(min(work))
         out[k].extend(t)
-        work[k] += sum(max(fleet.log_bytes(x), 64) for x in t)
+        work[k] += sum(fleet.log_work(x) for x in t)
     return out
 
 
