@@ -152,8 +152,9 @@ def replay_batch(logs, sim, calib, timeout_s):
     """One task: its logs in one replay process (a process start per log
     would cost more than the replay of a short log). Logs that process did
     not finish (it crashed or took too long) are replayed one by one, so
-    that only the log at fault is failed, with the reason of its own run. Returns {"results": a result per
-    log, in order, "cells": the logs' cells added up (add_cells), "grid"}:
+    that only the log at fault is failed, with the reason of its own run.
+    Returns {"results": a result per log, in order, "cells": the logs'
+    cells added up (add_cells), "grid"}:
     the cells are most of a document, and adding them up here sends the
     client a task's worth instead of a log's worth each."""
     docs, why = replay_each(logs, sim, calib, timeout_s)

@@ -85,8 +85,9 @@ def icount(argv):
     stable figure: the same binary on the same input counts the same
     whatever else the machine does); None without valgrind."""
     try:
-        p = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + os.devnull] +
-                           argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=True)
+        p = subprocess.run(["valgrind", "--tool=callgrind",
+                            "--callgrind-out-file=" + os.devnull] + argv,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=True)
     except (OSError, subprocess.CalledProcessError):
         return None
     m = re.search(rb"Collected : (\d+)", p.stderr)

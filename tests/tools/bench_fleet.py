@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: MIT
 """make bench: fleet analysis speed (tools/fleet.py), in logs per second of
 the job (from the first task submitted to the last result; the cluster's
-start-up is reported beside it), medians of RUNS (default 7: a job of this fleet lasts under a second,
-and on a shared 2-CPU machine one pair can be off by a third):
+start-up is reported beside it), medians of RUNS (default 7: a job of
+this fleet lasts under a second, and on a shared 2-CPU machine one pair
+can be off by a third):
   - LocalCluster with 1 and with 2 workers (worker threads, see fleet.py),
     run in turn (1 2 1 2 ...; the ratio is the median of the pairs'), and
     beside each pair the same logs in 1 and in 2 bare `squeal-replay
