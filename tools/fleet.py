@@ -31,7 +31,9 @@ build/fleet-report):
   heatmap.png/.svg the time in each (v0, N) cell, coloured by the state the
                    monitor reported, over the brake's stability borders
   index.html       all of the above on one page
-  fleet.json       counts and the speed (logs/s)
+  fleet.json       counts, the speed (logs/s) and the times: job_s (first
+                   task submitted to last result), wall_s (with the
+                   cluster's start-up), own_cpu_s (this process's CPU in the job)
 The borders are the closed forms of docs/model.md computed with scipy
 (tools/plots/plotlib.py), each corner's panel for that corner's brake in
 --calib (its [corner POS] keys over the flat ones; default: the paper's).
