@@ -846,6 +846,13 @@ static inline uint64_t hex_pair(uint8_t b)
 	return w;
 }
 
+/* A byte as its two uppercase hex digits at p. */
+static inline char *put_pair(char *p, uint8_t b)
+{
+	memcpy(p, &hex_pairs[2U * b], 2U);
+	return p + 2;
+}
+
 /* The bytes as uppercase hex pairs: four pairs in one store, then one by
  * one. */
 static char *put_bytes(char *p, const uint8_t *data, size_t n)
@@ -860,8 +867,7 @@ static char *put_bytes(char *p, const uint8_t *data, size_t n)
 		p += 8;
 	}
 	for (; k < n; k++) {
-		memcpy(p, &hex_pairs[2U * data[k]], 2U);
-		p += 2;
+		p = put_pair(p, data[k]);
 	}
 	return p;
 }
@@ -870,15 +876,13 @@ static char *put_bytes(char *p, const uint8_t *data, size_t n)
 static inline char *put_id(char *p, uint32_t v, bool eight)
 {
 	if (eight) {
-		memcpy(p, &hex_pairs[2U * (v >> 24)], 2U);
-		memcpy(p + 2, &hex_pairs[2U * ((v >> 16) & 0xFFU)], 2U);
-		memcpy(p + 4, &hex_pairs[2U * ((v >> 8) & 0xFFU)], 2U);
-		p += 6;
+		p = put_pair(p, (uint8_t)(v >> 24));
+		p = put_pair(p, (uint8_t)(v >> 16));
+		p = put_pair(p, (uint8_t)(v >> 8));
 	} else {
 		*p++ = hex_upper[(v >> 8) & 0xFU];
 	}
-	memcpy(p, &hex_pairs[2U * (v & 0xFFU)], 2U);
-	return p + 2;
+	return put_pair(p, (uint8_t)v);
 }
 
 /* n (1..15) bytes of a name from its 16-byte field: two copies of 8 or
