@@ -152,6 +152,11 @@ def ifaces(log):
     return seen
 
 
+def log2asc_cmd(log, names):
+    """can-utils log2asc on log, the interfaces names, its ASC to /dev/null."""
+    return ["log2asc", "-I", log, "-O", os.devnull] + names
+
+
 def lines(path):
     with open(path, "rb") as f:
         return sum(1 for _ in f)
@@ -163,7 +168,8 @@ def main():
     for name, log, cal, dbc in traffic():
         n = lines(log)
         rep = [REPLAY, log] + (["--calib", cal] if cal else [])
-        l2a = ["log2asc", "-I", log, "-O", os.devnull] + ifaces(log)
+        names = ifaces(log)
+        l2a = log2asc_cmd(log, names)
         small = head(log, PY_FRAMES, os.path.join(DIR, "%s-head.log" % name))
         ns = lines(small)
         rep_small = [REPLAY, small] + (["--calib", cal] if cal else [])
@@ -177,7 +183,7 @@ def main():
                                                 n / med(r_a) / 1e6 if med(r_a) > 0 else 0.0))
         if ICOUNT:
             i_r = icount(rep_small)
-            i_l = icount(l2a[:2] + [small] + l2a[3:])
+            i_l = icount(log2asc_cmd(small, names))
             if i_r and i_l:
                 print("%-8s %8d frames: replay %.0f, log2asc %.0f instructions per frame "
                       "(callgrind): %.2fx" % ("", ns, i_r / ns, i_l / ns, i_l / i_r))
