@@ -34,7 +34,7 @@ R = Results()
 def replayed(logdir):
     logs = sorted(glob.glob(os.path.join(logdir, "**", "*.log"), recursive=True))
     batch = fleet.replay_batch(logs, SIM, None, 120)
-    return batch["results"], batch["cells"], batch["grid"]
+    return batch.results, batch.cells, batch.grid
 
 
 def main():

@@ -20,10 +20,12 @@
     sleeps there), every other log still gets its result from a replay of
     its own, and only that log fails, with the reason; the finished logs'
     cells come back added up, and each log's summary with only its state
-    times and episodes.
+    times and episodes; dask.sizeof weighs the result as the bytes of the
+    documents read (the stand-in's own lines), and it pickles.
 Prints "RESULT: N passed, M failed"."""
 import io
 import os
+import pickle
 import pty
 import subprocess
 import sys
@@ -32,6 +34,7 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import fleet  # noqa: E402
+from dask.sizeof import sizeof  # noqa: E402
 
 COUNTS = {True: 0, False: 0}
 
@@ -181,7 +184,7 @@ def test_batch_fallback(tmp):
     for bad in ("crash.log", "slow.log"):
         logs = [os.path.join(tmp, n) for n in ("a.log", "b.log", bad, "c.log", "d.log")]
         batch = fleet.replay_batch(logs, sim, None, 1.0)
-        res = batch["results"]
+        res = batch.results
         check([r["log"] for r in res] == logs, "%s: a result per log, in order" % bad)
         ok = [r["status"] for r in res]
         check(ok == ["ok", "ok", "failed", "ok", "ok"], "%s: only that log fails (%r)" % (bad, ok))
@@ -189,11 +192,23 @@ def test_batch_fallback(tmp):
         want = "exit status -11" if bad == "crash.log" else "replay took longer than 1 s"
         check(why == want, "%s: the reason %r (%r)" % (bad, want, why))
         # the four logs that finished: their cells added up, 4 x 0.25 s
-        check(batch["cells"] == {"FL": {(1, 2, "stable"): 1.0}} and batch["grid"] == {"v0_bins": 4},
-              "%s: the finished logs' cells added up (%r)" % (bad, batch["cells"]))
+        check(batch.cells == {"FL": {(1, 2, "stable"): 1.0}} and batch.grid == {"v0_bins": 4},
+              "%s: the finished logs' cells added up (%r)" % (bad, batch.cells))
         check(res[0]["summary"] == {"corners": [{"corner": "FL", "state_time_s": {"stable": 1.0}}],
                                     "episodes": []},
               "%s: a log's summary keeps its state times and episodes, not its cells" % bad)
+        # Dask weighs a result by its __sizeof__ (not by walking it): the
+        # text of the four documents read, as the stand-in prints them, and
+        # the garbage collector's header that sys.getsizeof adds to any object
+        good = [x for x in logs if x != os.path.join(tmp, bad)]
+        text = subprocess.run([sim, "replay", "--each"] + good, stdout=subprocess.PIPE,
+                              check=True).stdout.decode().splitlines()
+        want = sum(len(x) for x in text) + sys.getsizeof([]) - [].__sizeof__()
+        check(sizeof(batch) == want, "%s: dask.sizeof of the result is its documents' bytes "
+              "and the header, %d (%d)" % (bad, want, sizeof(batch)))
+        back = pickle.loads(pickle.dumps(batch))
+        check((back.results, back.cells, back.grid) == (batch.results, batch.cells, batch.grid),
+              "%s: the result survives pickling (to a client of a remote cluster)" % bad)
 
 
 with tempfile.TemporaryDirectory() as tmpdir:
