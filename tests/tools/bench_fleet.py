@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: MIT
 """make bench: fleet analysis speed (tools/fleet.py), in logs per second of
 the job (from the first task submitted to the last result; the cluster's
-start-up is reported beside it), medians of RUNS (default 7: a job of
+start-up is reported beside it), medians of RUNS (default 11: a job of
 this fleet lasts under a second, and on a shared 2-CPU machine one pair
-can be off by a third):
+can be off by half; with 7, the median of one run moved from 1.60x to
+1.86x between runs of the same code):
   - LocalCluster with 1 and with 2 workers (worker threads, see fleet.py),
     run in turn (1 2 1 2 ...; the ratio is the median of the pairs'), and
     beside each pair the same logs in 1 and in 2 bare `squeal-replay
@@ -34,7 +35,7 @@ sys.path.insert(0, os.path.join(ROOT, "tools"))
 import fleet  # noqa: E402
 
 PY = "/usr/bin/python3"
-RUNS = int(os.environ.get("BENCH_FLEET_RUNS", "7"))
+RUNS = int(os.environ.get("BENCH_FLEET_RUNS", "11"))
 GEN = os.path.join(ROOT, "tools", "gen_fleet_logs.py")
 
 
