@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""tools/fleet.py's tasks and progress, without Dask:
+"""tools/fleet.py's tasks and progress, without a Dask cluster:
   - batches(): every log in exactly one task; guided shares of the bytes
     left (by hand: 16 equal logs in 8 4 2 1 1 for one worker); a log
     larger than a task's share is a task alone, and first; small logs share
