@@ -47,6 +47,7 @@ import html
 import json
 import os
 import resource
+import stat
 import subprocess
 import sys
 import time
@@ -215,10 +216,12 @@ MIN_TASKS_PER_WORKER = 16
 
 
 def log_bytes(path):
+    """The size of a regular file (one stat), 0 for anything else."""
     try:
-        return os.path.getsize(path) if os.path.isfile(path) else 0
+        st = os.stat(path)
     except OSError:
         return 0
+    return st.st_size if stat.S_ISREG(st.st_mode) else 0
 
 
 def log_work(path):
@@ -227,13 +230,19 @@ def log_work(path):
     return max(log_bytes(path), 64)
 
 
-def batches(logs, nworkers):
+def works(logs):
+    """{log: log_work(log)}: each log stat-ed once for the tasks and the
+    progress line (run_tasks)."""
+    return {log: log_work(log) for log in logs}
+
+
+def batches(logs, nworkers, work_of=None):
     """The logs in tasks by work (bytes, each log at least one line's worth),
     the largest logs first, each task its guided share of the work left
     (GUIDE, MIN_TASKS_PER_WORKER): with equal tasks the last one would let
     one worker run alone for up to a task's time (8 % of a fleet of 10-minute
-    drives on two workers)."""
-    size = {log: log_work(log) for log in logs}
+    drives on two workers). work_of: works(logs), when already known."""
+    size = work_of if work_of is not None else works(logs)
     workers = float(max(1, nworkers))
     left = float(sum(size.values()))
     floor = left / (workers * MIN_TASKS_PER_WORKER)
@@ -252,13 +261,14 @@ def batches(logs, nworkers):
 
 class Progress:
     """'fleet: 37/200 logs, 2.1 s left' on a terminal (stderr), nothing
-    otherwise; the time left from the bytes still to replay."""
+    otherwise; the time left from the bytes still to replay (work_of:
+    works(logs), when already known)."""
 
-    def __init__(self, logs, stream=sys.stderr):
+    def __init__(self, logs, stream=sys.stderr, work_of=None):
         self.on = stream.isatty()
         self.stream = stream
         self.total = len(logs)
-        self.work_of = {x: log_work(x) for x in logs}  # each log stat-ed once
+        self.work_of = work_of if work_of is not None else works(logs)
         self.work = float(sum(self.work_of.values()))
         self.done = 0
         self.done_work = 0.0
@@ -356,11 +366,12 @@ def run_tasks(logs, args):
         # (wall_s), not the job's (job_s).
         client.gather(client.map(ready, range(max(nworkers, 1)), pure=False))
         t_submit, cpu_submit = time.monotonic(), cpu_s()
-        tasks = batches(logs, nworkers)
+        work_of = works(logs)
+        tasks = batches(logs, nworkers, work_of)
         futures = client.map(replay_batch, tasks, sim=args.sim, calib=args.calib,
                              timeout_s=args.timeout, pure=False)
         task_of = {fut.key: batch for fut, batch in zip(futures, tasks)}
-        progress = Progress(logs)
+        progress = Progress(logs, work_of=work_of)
         results, cells, grid = [], {}, None
         for fut in as_completed(futures):
             batch = task_of[fut.key]
