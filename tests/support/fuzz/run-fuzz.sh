@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Runs libFuzzer targets (tests/support/fuzz/, built by mk/fuzz.mk) one after the
-# other and prints one line per target with executions, execs/s and
+# Runs libFuzzer targets (tests/support/fuzz/, built by mk/fuzz.mk), $FUZZ_JOBS
+# at a time (one per CPU), and prints one line per target with executions, execs/s and
 # libFuzzer's final coverage (cov: edges, ft: features), then
 #   RESULT: N passed, M failed
 #
@@ -46,16 +46,17 @@ fi
 logs=build/fuzz-logs
 artifacts=build/fuzz-artifacts
 mkdir -p "$logs" "$artifacts"
-passed=0
-failed=0
-for bin in "${targets[@]}"; do
+# One target: its log in $logs, its report (one PASS/FAIL line, and on a
+# failure the log's telling lines) in $logs/<name>.<mode>.result.
+run_one() {
+	local bin=$1 name seeds log res work rc execs rate last cov ft corp bad
 	name=$(basename "$bin")
 	seeds=tests/support/fuzz/corpus/$name
 	log=$logs/$name.$mode.log
+	res=$logs/$name.$mode.result
 	if [ ! -x "$bin" ]; then
-		echo "FAIL $name: $bin not built"
-		failed=$((failed + 1))
-		continue
+		echo "FAIL  $name: $bin not built" >"$res"
+		return
 	fi
 	if [ "$mode" = fuzz ]; then
 		work=build/fuzz-corpus/$name
@@ -63,11 +64,11 @@ for bin in "${targets[@]}"; do
 	else
 		work=$(mktemp -d "${TMPDIR:-/tmp}/fuzz-$name.XXXXXX")
 	fi
-	dirs=("$work")
+	local dirs=("$work")
 	[ -d "$seeds" ] && dirs+=("$seeds")
 	# -timeout: one input may take 5 s at most (a hang is a failure);
 	# -rss_limit_mb: an unbounded allocation is a failure too.
-	seedopt=()
+	local seedopt=()
 	[ "$mode" = fuzz ] || seedopt=(-seed="${FUZZ_TEST_SEED:-1}")
 	"$bin" "${seedopt[@]}" -max_total_time="$secs" -timeout=5 -rss_limit_mb=2048 \
 		-print_final_stats=1 -detect_leaks=1 \
@@ -85,16 +86,39 @@ for bin in "${targets[@]}"; do
 	if grep -qE 'ERROR: (AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer|libFuzzer)|runtime error:|property failed|==[0-9]+==ERROR' "$log"; then
 		bad=1
 	fi
-	printf '%-5s %-18s %4ss  execs %-10s execs/s %-8s cov %-6s ft %-7s corpus %s\n' \
-		"$([ $bad = 0 ] && echo PASS || echo FAIL)" "$name" "$secs" \
-		"${execs:-?}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${corp:-?}"
-	if [ $bad = 0 ]; then
+	{
+		printf '%-5s %-18s %4ss  execs %-10s execs/s %-8s cov %-6s ft %-7s corpus %s\n' \
+			"$([ $bad = 0 ] && echo PASS || echo FAIL)" "$name" "$secs" \
+			"${execs:-?}" "${rate:-?}" "${cov:-?}" "${ft:-?}" "${corp:-?}"
+		if [ $bad != 0 ]; then
+			grep -E 'ERROR|runtime error|property failed|SUMMARY|Test unit written|^    #[0-9]' "$log" | head -40 | sed 's/^/    | /'
+			echo "    (full log: $log)"
+		fi
+	} >"$res"
+}
+
+# Targets run $FUZZ_JOBS at a time (default: one per CPU); each is
+# single-threaded and bound by its own time, so on N CPUs N at once take the
+# time of one. Reports print in the targets' order.
+jobs_max=${FUZZ_JOBS:-$(nproc 2>/dev/null || echo 1)}
+for bin in "${targets[@]}"; do
+	rm -f "$logs/$(basename "$bin").$mode.result"
+	while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do
+		wait -n
+	done
+	run_one "$bin" &
+done
+wait
+passed=0
+failed=0
+for bin in "${targets[@]}"; do
+	res=$logs/$(basename "$bin").$mode.result
+	if [ -s "$res" ] && head -1 "$res" | grep -q '^PASS'; then
 		passed=$((passed + 1))
 	else
 		failed=$((failed + 1))
-		grep -E 'ERROR|runtime error|property failed|SUMMARY|Test unit written|^    #[0-9]' "$log" | head -40 | sed 's/^/    | /'
-		echo "    (full log: $log)"
 	fi
+	cat "$res" 2>/dev/null || echo "FAIL  $(basename "$bin"): no report"
 done
 echo "RESULT: $passed passed, $failed failed"
 [ "$failed" = 0 ]
