@@ -10,8 +10,9 @@ can be off by half; with 7, the median of one run moved from 1.60x to
     run in turn (1 2 1 2 ...; the ratio is the median of the pairs'), and
     beside each pair, without Dask: the same logs in 1 and in 2 bare
     `squeal-replay --each` processes, how far two replays side by side
-    scale on this machine at all; and fleet.py's own tasks run from a plain
-    queue by 1 and by 2 threads, which balances as the fleet does, so that
+    scale on this machine at all; and the replays of fleet.py's own tasks
+    (their documents read from a pipe, not parsed) run from a plain queue
+    by 1 and by 2 threads, which balances as the fleet does, so that
     the machine's slow spells (the same replay takes from 0.3 to 0.7 s of
     CPU from one run to the next) weigh on it as on the fleet: the ceiling
     of any scheduler of these tasks;
